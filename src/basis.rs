@@ -1,0 +1,101 @@
+//! Orthonormal bases and the change of coordinates (Lecture 4, "Coordinate System Change").
+//!
+//! A vector s has coordinates a in the standard basis (e1, e2, e3) and coordinates b
+//! in another orthonormal basis (u, v, w). Both describe the same arrow:
+//! s = [e1 e2 e3] a = [u v w] b, and since [e1 e2 e3] is the identity, a = B b with
+//! B = [u v w]. An orthonormal B has B^T B = I, so the way back is b = B^T a.
+
+use glam::{Mat3, Vec3};
+
+use crate::error::{Error, Result, finite3};
+
+/// Largest |B^T B - I| entry accepted as orthonormal by [`Basis::new`].
+pub const ORTHONORMAL_TOLERANCE: f32 = 1e-4;
+
+/// An orthonormal basis, its vectors the columns of B = [u v w].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Basis {
+    u: Vec3,
+    v: Vec3,
+    w: Vec3,
+}
+
+impl Basis {
+    /// The standard basis (e1, e2, e3): B is the identity and a = b.
+    pub const STANDARD: Basis = Basis {
+        u: Vec3::X,
+        v: Vec3::Y,
+        w: Vec3::Z,
+    };
+
+    /// The basis with columns `u`, `v`, `w`, if they are orthonormal within
+    /// [`ORTHONORMAL_TOLERANCE`]. Handedness is not required; ask [`Basis::is_right_handed`].
+    pub fn new(u: Vec3, v: Vec3, w: Vec3) -> Result<Basis> {
+        let basis = Basis {
+            u: finite3("u", u)?,
+            v: finite3("v", v)?,
+            w: finite3("w", w)?,
+        };
+        let error = basis.orthonormality_error();
+        if error <= ORTHONORMAL_TOLERANCE {
+            Ok(basis)
+        } else {
+            Err(Error::NotOrthonormal {
+                param: "basis",
+                error,
+            })
+        }
+    }
+
+    /// Three vectors the caller has built to be orthonormal (e.g. by cross products).
+    pub(crate) fn from_orthonormal(u: Vec3, v: Vec3, w: Vec3) -> Basis {
+        Basis { u, v, w }
+    }
+
+    /// The first basis vector.
+    pub fn u(&self) -> Vec3 {
+        self.u
+    }
+
+    /// The second basis vector.
+    pub fn v(&self) -> Vec3 {
+        self.v
+    }
+
+    /// The third basis vector.
+    pub fn w(&self) -> Vec3 {
+        self.w
+    }
+
+    /// The matrix B = [u v w], basis vectors as columns.
+    pub fn matrix(&self) -> Mat3 {
+        Mat3::from_cols(self.u, self.v, self.w)
+    }
+
+    // ANCHOR: change
+    /// a = B b: from coordinates in this basis to standard (world) coordinates.
+    pub fn to_world(&self, b: Vec3) -> Vec3 {
+        b.x * self.u + b.y * self.v + b.z * self.w
+    }
+
+    /// b = B^T a: from standard coordinates to coordinates in this basis.
+    /// Each coordinate is a dot product with one basis vector.
+    pub fn to_local(&self, a: Vec3) -> Vec3 {
+        Vec3::new(a.dot(self.u), a.dot(self.v), a.dot(self.w))
+    }
+    // ANCHOR_END: change
+
+    /// The largest entry of |B^T B - I|: 0 for an exactly orthonormal basis.
+    pub fn orthonormality_error(&self) -> f32 {
+        let m = self.matrix();
+        let gram = m.transpose() * m - Mat3::IDENTITY;
+        gram.to_cols_array()
+            .into_iter()
+            .fold(0.0, |acc, x| acc.max(x.abs()))
+    }
+
+    /// True when u x v points along w (det B = +1), as in a right-handed world.
+    pub fn is_right_handed(&self) -> bool {
+        self.u.cross(self.v).dot(self.w) > 0.0
+    }
+}

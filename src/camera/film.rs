@@ -1,0 +1,110 @@
+//! The projection plane and the image resolution (Lecture 4, "Setting Up the
+//! Orthographic Camera"): which rectangle of the camera's z = 0 plane the image
+//! covers, and in how many pixels.
+
+use glam::Vec2;
+
+use crate::error::{Error, Result, finite};
+
+/// The largest width or height accepted, in pixels.
+pub const MAX_RESOLUTION: u32 = 16_384;
+
+/// A rectangle [x_min, x_max] x [y_min, y_max] of the camera plane, cut into
+/// `width` x `height` pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Film {
+    width: u32,
+    height: u32,
+    x_min: f32,
+    x_max: f32,
+    y_min: f32,
+    y_max: f32,
+}
+
+fn resolution(param: &'static str, value: u32) -> Result<u32> {
+    if (1..=MAX_RESOLUTION).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::Resolution { param, value })
+    }
+}
+
+fn range(param: &'static str, (min, max): (f32, f32)) -> Result<(f32, f32)> {
+    let (min, max) = (finite(param, min)?, finite(param, max)?);
+    if min < max && (max - min).is_finite() {
+        Ok((min, max))
+    } else {
+        Err(Error::EmptyRange { param, min, max })
+    }
+}
+
+impl Film {
+    /// `width` x `height` pixels over the plane extents `x` = (x_min, x_max) and
+    /// `y` = (y_min, y_max).
+    pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Film> {
+        let (x_min, x_max) = range("x extent", x)?;
+        let (y_min, y_max) = range("y extent", y)?;
+        Ok(Film {
+            width: resolution("width", width)?,
+            height: resolution("height", height)?,
+            x_min,
+            x_max,
+            y_min,
+            y_max,
+        })
+    }
+
+    /// The image width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// The image height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// (x_min, x_max).
+    pub fn x_extent(&self) -> (f32, f32) {
+        (self.x_min, self.x_max)
+    }
+
+    /// (y_min, y_max).
+    pub fn y_extent(&self) -> (f32, f32) {
+        (self.y_min, self.y_max)
+    }
+
+    // ANCHOR: row_flip
+    /// The slides count pixel rows from the bottom of the image; image files (and
+    /// this crate) count them from the top. This is the one place that converts.
+    pub fn row_from_bottom(&self, row_from_top: u32) -> u32 {
+        self.height - 1 - row_from_top.min(self.height - 1)
+    }
+    // ANCHOR_END: row_flip
+
+    // ANCHOR: pixel_to_plane
+    /// The centre of pixel (`px`, `py`) on the plane, `py` counted from the top row
+    /// (Lecture 4, "Computing the ray origin"):
+    ///
+    /// x = (x_pixel + 0.5) / resolution_x * width + x_min
+    /// y = (y_pixel + 0.5) / resolution_y * height + y_min, y_pixel counted from the bottom.
+    pub fn pixel_to_plane(&self, px: u32, py: u32) -> Vec2 {
+        let x_pixel = px as f32;
+        let y_pixel = self.row_from_bottom(py) as f32;
+        let width = self.x_max - self.x_min;
+        let height = self.y_max - self.y_min;
+        Vec2::new(
+            (x_pixel + 0.5) / self.width as f32 * width + self.x_min,
+            (y_pixel + 0.5) / self.height as f32 * height + self.y_min,
+        )
+    }
+    // ANCHOR_END: pixel_to_plane
+
+    /// The inverse of [`Film::pixel_to_plane`] for any plane point: continuous pixel
+    /// coordinates (column, row from the top), so a pixel centre maps to (px + 0.5, py + 0.5).
+    pub fn plane_to_pixel(&self, p: Vec2) -> Vec2 {
+        let sx = (p.x - self.x_min) / (self.x_max - self.x_min) * self.width as f32;
+        let sy = (p.y - self.y_min) / (self.y_max - self.y_min) * self.height as f32;
+        Vec2::new(sx, self.height as f32 - sy)
+    }
+}

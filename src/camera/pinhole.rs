@@ -1,0 +1,89 @@
+//! The perspective (pinhole) camera (Lecture 4): every ray starts at the centre of
+//! projection e and passes through a point s on a screen at distance `s` in front.
+
+use glam::{Vec2, Vec3};
+
+use super::{Film, Frame};
+use crate::error::{Result, positive};
+use crate::ray::Ray;
+
+/// A pinhole camera: eye at the camera origin, screen on the plane z = -s, its
+/// rectangle [x_min, x_max] x [y_min, y_max] given by the film.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PinholeCamera {
+    film: Film,
+    screen_distance: f32,
+    frame: Frame,
+}
+
+impl PinholeCamera {
+    /// A pinhole camera at the origin looking down -Z, its screen `screen_distance`
+    /// in front of the eye.
+    pub fn at_origin(film: Film, screen_distance: f32) -> Result<PinholeCamera> {
+        PinholeCamera::new(film, screen_distance, Frame::AT_ORIGIN)
+    }
+
+    /// A pinhole camera placed and turned by `frame`.
+    pub fn new(film: Film, screen_distance: f32, frame: Frame) -> Result<PinholeCamera> {
+        Ok(PinholeCamera {
+            film,
+            screen_distance: positive("screen distance", screen_distance)?,
+            frame,
+        })
+    }
+
+    /// The screen rectangle and resolution.
+    pub fn film(&self) -> &Film {
+        &self.film
+    }
+
+    /// The camera's position and basis.
+    pub fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// The distance `s` from the eye to the screen.
+    pub fn screen_distance(&self) -> f32 {
+        self.screen_distance
+    }
+
+    // ANCHOR: screen_point
+    /// The screen point of pixel (`px`, `py`) in camera space (Lecture 4, "Pinhole
+    /// Camera Setup"): with a = (x_max - x_min) x, b = (y_max - y_min) y and corner
+    /// c = x_min x + y_min y - s z, the point is c + u a + v b, where
+    /// u = (x + 0.5)/resolution_x and v = (y + 0.5)/resolution_y.
+    ///
+    /// The pixel centre on the film already is x_min + u (x_max - x_min) (and the same
+    /// for y, rows counted from the bottom), so the screen point is that centre at z = -s.
+    pub fn screen_point(&self, px: u32, py: u32) -> Vec3 {
+        self.film
+            .pixel_to_plane(px, py)
+            .extend(-self.screen_distance)
+    }
+    // ANCHOR_END: screen_point
+
+    // ANCHOR: ray
+    /// The ray of pixel (`px`, `py`) in world space: it starts at the eye e and goes
+    /// through the screen point s, direction (s - e)/|s - e|; then B and p carry both
+    /// to the world, as for the orthographic camera.
+    pub fn ray(&self, px: u32, py: u32) -> Ray {
+        let eye = Vec3::ZERO;
+        let direction = (self.screen_point(px, py) - eye).normalize();
+        Ray::from_checked(
+            self.frame.point_to_world(eye),
+            self.frame.vector_to_world(direction),
+        )
+    }
+    // ANCHOR_END: ray
+
+    /// Where the world point `x` lands in the image, in continuous pixel coordinates,
+    /// or `None` when it is not in front of the eye.
+    pub fn project(&self, x: Vec3) -> Option<Vec2> {
+        let local = self.frame.point_to_camera(x);
+        if local.z >= 0.0 {
+            return None;
+        }
+        let on_screen = local.truncate() * (self.screen_distance / -local.z);
+        Some(self.film.plane_to_pixel(on_screen))
+    }
+}

@@ -1,0 +1,134 @@
+//! One error type for the whole crate: every constructor that can be handed bad
+//! input returns it, and every variant names the parameter at fault.
+
+use std::fmt;
+
+use glam::Vec3;
+
+/// What went wrong, and with which parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Error {
+    /// A number was NaN or infinite.
+    NotFinite { param: &'static str },
+    /// A direction (or other vector that must have a length) was zero.
+    ZeroLength { param: &'static str },
+    /// A value that must be strictly positive was not.
+    NotPositive { param: &'static str, value: f32 },
+    /// The up vector is parallel to the view direction, so no camera frame exists
+    /// (STABILITY S10).
+    UpParallelToDirection,
+    /// An image resolution was 0 or larger than [`crate::camera::MAX_RESOLUTION`].
+    Resolution { param: &'static str, value: u32 },
+    /// A range such as `x_min..x_max` was empty or inverted.
+    EmptyRange {
+        param: &'static str,
+        min: f32,
+        max: f32,
+    },
+    /// Three vectors that should form an orthonormal basis do not.
+    NotOrthonormal { param: &'static str, error: f32 },
+    /// A matrix has no inverse.
+    Singular { param: &'static str },
+    /// A pixel holds NaN or infinity and must not be written to an image.
+    NonFinitePixel { x: u32, y: u32 },
+    /// Reading or writing a file failed.
+    Io { path: String, message: String },
+}
+
+/// The crate's result type.
+pub type Result<T> = std::result::Result<T, Error>;
+
+impl Error {
+    /// The name of the parameter at fault, as the caller spelled it.
+    pub fn param(&self) -> &str {
+        match self {
+            Error::NotFinite { param }
+            | Error::ZeroLength { param }
+            | Error::NotPositive { param, .. }
+            | Error::Resolution { param, .. }
+            | Error::EmptyRange { param, .. }
+            | Error::NotOrthonormal { param, .. }
+            | Error::Singular { param } => param,
+            Error::UpParallelToDirection => "up",
+            Error::NonFinitePixel { .. } => "pixel",
+            Error::Io { path, .. } => path,
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NotFinite { param } => write!(f, "{param} must be a finite number"),
+            Error::ZeroLength { param } => write!(f, "{param} must not have zero length"),
+            Error::NotPositive { param, value } => {
+                write!(f, "{param} must be greater than 0 (got {value})")
+            }
+            Error::UpParallelToDirection => write!(
+                f,
+                "up must not be parallel to direction: no camera frame can be built"
+            ),
+            Error::Resolution { param, value } => write!(
+                f,
+                "{param} must be between 1 and {} pixels (got {value})",
+                crate::camera::MAX_RESOLUTION
+            ),
+            Error::EmptyRange { param, min, max } => {
+                write!(f, "{param} must have min < max (got {min} .. {max})")
+            }
+            Error::NotOrthonormal { param, error } => {
+                write!(f, "{param} is not orthonormal (error {error:e})")
+            }
+            Error::Singular { param } => write!(f, "{param} is singular: it has no inverse"),
+            Error::NonFinitePixel { x, y } => {
+                write!(
+                    f,
+                    "pixel ({x}, {y}) is NaN or infinite; refusing to write it"
+                )
+            }
+            Error::Io { path, message } => write!(f, "{path}: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// `value` itself if it is finite, else [`Error::NotFinite`] naming `param`.
+pub fn finite(param: &'static str, value: f32) -> Result<f32> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NotFinite { param })
+    }
+}
+
+/// `v` itself if all three components are finite.
+pub fn finite3(param: &'static str, v: Vec3) -> Result<Vec3> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::NotFinite { param })
+    }
+}
+
+/// `v / |v|` if `v` is finite and not zero.
+///
+/// A vector so short that normalising it overflows counts as zero length.
+pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
+    let v = finite3(param, v)?;
+    let n = v.normalize_or_zero();
+    if n == Vec3::ZERO {
+        Err(Error::ZeroLength { param })
+    } else {
+        Ok(n)
+    }
+}
+
+/// `value` if it is finite and strictly positive.
+pub fn positive(param: &'static str, value: f32) -> Result<f32> {
+    if finite(param, value)? > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::NotPositive { param, value })
+    }
+}

@@ -1,0 +1,90 @@
+//! A framebuffer: one linear RGB colour per pixel, row 0 at the top, saved as PNG.
+
+use std::path::Path;
+
+use glam::Vec3;
+
+use crate::camera::MAX_RESOLUTION;
+use crate::error::{Error, Result};
+use crate::output::write_png_rgba;
+
+/// `width` x `height` linear RGB colours, stored row by row from the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Framebuffer {
+    width: u32,
+    height: u32,
+    pixels: Vec<Vec3>,
+}
+
+impl Framebuffer {
+    /// A framebuffer whose pixel (x, y) is `shade(x, y)`.
+    pub fn from_fn(
+        width: u32,
+        height: u32,
+        mut shade: impl FnMut(u32, u32) -> Vec3,
+    ) -> Result<Self> {
+        for (param, value) in [("width", width), ("height", height)] {
+            if !(1..=MAX_RESOLUTION).contains(&value) {
+                return Err(Error::Resolution { param, value });
+            }
+        }
+        let pixels = (0..height)
+            .flat_map(|y| (0..width).map(move |x| (x, y)))
+            .map(|(x, y)| shade(x, y))
+            .collect();
+        Ok(Framebuffer {
+            width,
+            height,
+            pixels,
+        })
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The colour of pixel (x, y), row 0 at the top.
+    pub fn get(&self, x: u32, y: u32) -> Option<Vec3> {
+        (x < self.width && y < self.height).then(|| self.pixels[(y * self.width + x) as usize])
+    }
+
+    /// 8-bit sRGB bytes (RGBA, alpha 255): each linear channel clamped to [0, 1] and
+    /// encoded with the sRGB transfer curve. Fails on the first NaN or infinite pixel.
+    pub fn to_srgb8(&self) -> Result<Vec<u8>> {
+        let mut bytes = Vec::with_capacity(self.pixels.len() * 4);
+        for (i, c) in self.pixels.iter().enumerate() {
+            if !c.is_finite() {
+                let i = i as u32;
+                return Err(Error::NonFinitePixel {
+                    x: i % self.width,
+                    y: i / self.width,
+                });
+            }
+            bytes.extend(c.to_array().map(to_srgb8));
+            bytes.push(255);
+        }
+        Ok(bytes)
+    }
+
+    /// Writes the image as an 8-bit sRGB PNG, atomically; refuses NaN pixels.
+    pub fn save_png(&self, path: &Path) -> Result<()> {
+        write_png_rgba(path, self.width, self.height, &self.to_srgb8()?)
+    }
+}
+
+/// A linear value in [0, 1] as an 8-bit sRGB code (IEC 61966-2-1 transfer curve).
+pub fn to_srgb8(linear: f32) -> u8 {
+    let c = linear.clamp(0.0, 1.0);
+    let encoded = if c <= 0.003_130_8 {
+        12.92 * c
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    };
+    (encoded * 255.0 + 0.5) as u8
+}

@@ -1,0 +1,22 @@
+//! # render-lessons
+//!
+//! The shared core of a course on image synthesis, from a 4x4 matrix to a path
+//! tracer. Each module is one idea of the lectures, named after it; each lesson's
+//! example (`examples/NN_*.rs`) builds on these modules, and the book includes their
+//! code by anchor.
+//!
+//! Dependencies flow one way: `transform`, `ray`, `basis` -> `camera` -> output
+//! (`framebuffer`, `diagram`).
+
+pub mod basis;
+pub mod camera;
+pub mod diagram;
+pub mod error;
+pub mod framebuffer;
+pub mod lesson;
+pub mod output;
+pub mod ray;
+pub mod report;
+pub mod transform;
+
+pub use error::{Error, Result};

@@ -1,0 +1,175 @@
+//! Geometric transformations in homogeneous coordinates (Lecture 3).
+//!
+//! A 3-D point (x, y, z) becomes the 4-vector (x, y, z, 1) and a direction becomes
+//! (x, y, z, 0). With the fourth coordinate, translation is a matrix too (a 4-D
+//! shear), so scale, rotation and translation all compose by multiplication.
+//!
+//! Every matrix below is written out row by row, exactly as the slides print it;
+//! `tests/01_transforms.rs` checks each one against glam's own constructors.
+
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::error::{Error, Result, finite, finite3};
+
+/// An affine transformation: one 4x4 matrix acting on homogeneous coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transform {
+    matrix: Mat4,
+}
+
+/// The homogeneous point (x, y, z, 1): translations move it.
+pub fn point(x: f32, y: f32, z: f32) -> Vec4 {
+    Vec4::new(x, y, z, 1.0)
+}
+
+/// The homogeneous vector (x, y, z, 0): translations leave it alone.
+pub fn vector(x: f32, y: f32, z: f32) -> Vec4 {
+    Vec4::new(x, y, z, 0.0)
+}
+
+/// A matrix given row by row, the way it is printed on a slide.
+///
+/// glam stores matrices column by column, so the rows are transposed once here.
+pub fn from_rows(rows: [[f32; 4]; 4]) -> Mat4 {
+    Mat4::from_cols_array_2d(&rows).transpose()
+}
+
+impl Transform {
+    /// The transformation that changes nothing.
+    pub const IDENTITY: Transform = Transform {
+        matrix: Mat4::IDENTITY,
+    };
+
+    /// Wraps a matrix the caller built; it must be finite.
+    pub fn from_matrix(matrix: Mat4) -> Result<Transform> {
+        if matrix.is_finite() {
+            Ok(Transform { matrix })
+        } else {
+            Err(Error::NotFinite { param: "matrix" })
+        }
+    }
+
+    // ANCHOR: scale
+    /// Scale along X, Y and Z: x' = x s_x, y' = y s_y, z' = z s_z (Lecture 3, "3D Scale").
+    pub fn scale(sx: f32, sy: f32, sz: f32) -> Result<Transform> {
+        let (sx, sy, sz) = (finite("sx", sx)?, finite("sy", sy)?, finite("sz", sz)?);
+        Transform::from_matrix(from_rows([
+            [sx, 0.0, 0.0, 0.0],
+            [0.0, sy, 0.0, 0.0],
+            [0.0, 0.0, sz, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
+    }
+    // ANCHOR_END: scale
+
+    // ANCHOR: rotation_x
+    /// Rotation by `theta` radians about the X axis (Lecture 3, "3D Rotation about X"):
+    /// y' = y cos - z sin, z' = y sin + z cos.
+    pub fn rotation_x(theta: f32) -> Result<Transform> {
+        let (s, c) = finite("theta", theta)?.sin_cos();
+        Transform::from_matrix(from_rows([
+            [1.0, 0.0, 0.0, 0.0],
+            [0.0, c, -s, 0.0],
+            [0.0, s, c, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
+    }
+    // ANCHOR_END: rotation_x
+
+    // ANCHOR: rotation_y
+    /// Rotation by `theta` radians about the Y axis (Lecture 3, "3D Rotation about Y"):
+    /// x' = x cos + z sin, z' = -x sin + z cos.
+    ///
+    /// The minus sign sits bottom-left, not top-right as for X and Z: the rotation
+    /// turns Z towards X (the cyclic order x -> y -> z -> x), and in the matrix's
+    /// rows X comes before Z.
+    pub fn rotation_y(theta: f32) -> Result<Transform> {
+        let (s, c) = finite("theta", theta)?.sin_cos();
+        Transform::from_matrix(from_rows([
+            [c, 0.0, s, 0.0],
+            [0.0, 1.0, 0.0, 0.0],
+            [-s, 0.0, c, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
+    }
+    // ANCHOR_END: rotation_y
+
+    // ANCHOR: rotation_z
+    /// Rotation by `theta` radians about the Z axis (Lecture 3, "3D Rotation about Z"):
+    /// x' = x cos - y sin, y' = x sin + y cos.
+    pub fn rotation_z(theta: f32) -> Result<Transform> {
+        let (s, c) = finite("theta", theta)?.sin_cos();
+        Transform::from_matrix(from_rows([
+            [c, -s, 0.0, 0.0],
+            [s, c, 0.0, 0.0],
+            [0.0, 0.0, 1.0, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
+    }
+    // ANCHOR_END: rotation_z
+
+    // ANCHOR: translation
+    /// Translation by (d_x, d_y, d_z) (Lecture 3, "3D Translation"): in homogeneous
+    /// coordinates a translation is a shear of the fourth dimension.
+    pub fn translation(dx: f32, dy: f32, dz: f32) -> Result<Transform> {
+        let (dx, dy, dz) = (finite("dx", dx)?, finite("dy", dy)?, finite("dz", dz)?);
+        Transform::from_matrix(from_rows([
+            [1.0, 0.0, 0.0, dx],
+            [0.0, 1.0, 0.0, dy],
+            [0.0, 0.0, 1.0, dz],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
+    }
+    // ANCHOR_END: translation
+
+    // ANCHOR: then
+    /// First `self`, then `next`: the matrix `next * self`.
+    ///
+    /// Matrices act on the column vector to their right, so the transformation applied
+    /// first stands rightmost in the product.
+    pub fn then(self, next: Transform) -> Transform {
+        Transform {
+            matrix: next.matrix * self.matrix,
+        }
+    }
+    // ANCHOR_END: then
+
+    /// The transformation that undoes this one, or [`Error::Singular`] (e.g. a scale by 0).
+    pub fn inverse(self) -> Result<Transform> {
+        let det = self.matrix.determinant();
+        if det == 0.0 || !det.is_finite() {
+            return Err(Error::Singular { param: "transform" });
+        }
+        Transform::from_matrix(self.matrix.inverse())
+            .map_err(|_| Error::Singular { param: "transform" })
+    }
+
+    /// The 4x4 matrix.
+    pub fn matrix(&self) -> Mat4 {
+        self.matrix
+    }
+
+    // ANCHOR: apply
+    /// The matrix times a homogeneous 4-vector: points (w = 1) and vectors (w = 0) alike.
+    pub fn apply(&self, h: Vec4) -> Vec4 {
+        self.matrix * h
+    }
+
+    /// Transforms the point `p` (w = 1); translation moves it.
+    pub fn point(&self, p: Vec3) -> Vec3 {
+        self.apply(p.extend(1.0)).truncate()
+    }
+
+    /// Transforms the direction `v` (w = 0); translation does not touch it.
+    pub fn vector(&self, v: Vec3) -> Vec3 {
+        self.apply(v.extend(0.0)).truncate()
+    }
+    // ANCHOR_END: apply
+
+    /// Transforms a surface normal: by the inverse transpose, so that it stays
+    /// perpendicular to the transformed surface under non-uniform scale.
+    pub fn normal(&self, n: Vec3) -> Result<Vec3> {
+        let inv = self.inverse()?;
+        finite3("normal", inv.matrix.transpose().transform_vector3(n))
+    }
+}

@@ -88,7 +88,7 @@ fn paint(color: Rgb) -> Paint<'static> {
 
 impl Diagram {
     /// A white `width` x `height` pixel canvas showing at least [x.0, x.1] x [y.0, y.1],
-    /// centred, with a margin of 40 px.
+    /// centred, with a margin of 50 px.
     pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Diagram> {
         let pixmap = Pixmap::new(width, height).ok_or(Error::Resolution {
             param: "diagram size",
@@ -107,7 +107,7 @@ impl Diagram {
             }
         };
         let (w, h) = (span("x range", x)?, span("y range", y)?);
-        let margin = 40.0;
+        let margin = 50.0;
         let scale = ((width as f32 - 2.0 * margin) / w).min((height as f32 - 2.0 * margin) / h);
         let centre = Vec2::new(x.0 + x.1, y.0 + y.1) * 0.5;
         let origin_px =
@@ -237,7 +237,7 @@ impl Diagram {
         self.arrow(Vec2::new(x.0, 0.0), Vec2::new(x.1, 0.0), palette::INK, 1.5);
         self.arrow(Vec2::new(0.0, y.0), Vec2::new(0.0, y.1), palette::INK, 1.5);
         self.text(Vec2::new(x.1, 0.0), names.0, palette::INK, Place::Right);
-        self.text(Vec2::new(0.0, y.1), names.1, palette::INK, Place::Above);
+        self.text(Vec2::new(0.0, y.1), names.1, palette::INK, Place::Right);
         let tick = 4.0 / self.scale;
         let ticks = |lo: f32, hi: f32| {
             let first = (lo / step).ceil() as i32;

@@ -36,3 +36,30 @@ pub fn run(body: impl FnOnce() -> Result<()>) -> ExitCode {
 pub fn wrote(path: &Path) {
     println!("wrote {}", path.display());
 }
+
+/// Parses `x,y,z` (as typed after a flag such as `--direction 0,0,-1`) into a vector.
+pub fn parse_vec3(s: &str) -> std::result::Result<glam::Vec3, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let [x, y, z] = parts.as_slice() else {
+        return Err(format!("expected three numbers x,y,z, got '{s}'"));
+    };
+    let mut v = [0.0f32; 3];
+    for (slot, text) in v.iter_mut().zip([x, y, z]) {
+        *slot = text
+            .parse::<f32>()
+            .map_err(|_| format!("'{text}' is not a number"))?;
+        if !slot.is_finite() {
+            return Err(format!("'{text}' is not a finite number"));
+        }
+    }
+    Ok(glam::Vec3::from_array(v))
+}
+
+/// Parses a finite number (rejects `nan` and `inf`, which Rust's parser accepts).
+pub fn parse_finite(s: &str) -> std::result::Result<f32, String> {
+    match s.trim().parse::<f32>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(format!("'{s}' is not a finite number")),
+        Err(_) => Err(format!("'{s}' is not a number")),
+    }
+}

@@ -1,0 +1,166 @@
+//! Lesson 01: the slides' transformation matrices.
+
+#[path = "../examples/01_transforms.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use std::f32::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4};
+
+use clap::Parser;
+use glam::{Mat4, Vec3};
+use render_lessons::Error;
+use render_lessons::transform::{Transform, point, vector};
+
+fn close(a: Vec3, b: Vec3) -> bool {
+    (a - b).abs().max_element() < 1e-6
+}
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["01_transforms"]);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+}
+
+#[test]
+fn slide_matrices_match_glam() {
+    for degrees in [-170.0f32, -45.0, 0.0, 30.0, 90.0, 123.0] {
+        let theta = degrees.to_radians();
+        let pairs = [
+            (Transform::rotation_x(theta), Mat4::from_rotation_x(theta)),
+            (Transform::rotation_y(theta), Mat4::from_rotation_y(theta)),
+            (Transform::rotation_z(theta), Mat4::from_rotation_z(theta)),
+        ];
+        for (ours, glam) in pairs {
+            assert!(
+                ours.unwrap().matrix().abs_diff_eq(glam, 1e-6),
+                "{degrees} degrees"
+            );
+        }
+    }
+    let s = Transform::scale(2.0, -3.0, 0.5).unwrap().matrix();
+    assert_eq!(s, Mat4::from_scale(Vec3::new(2.0, -3.0, 0.5)));
+    let t = Transform::translation(1.0, -2.0, 3.0).unwrap().matrix();
+    assert_eq!(t, Mat4::from_translation(Vec3::new(1.0, -2.0, 3.0)));
+}
+
+#[test]
+fn translation_sits_in_the_last_column_as_on_the_slide() {
+    let t = Transform::translation(4.0, 5.0, 6.0).unwrap().matrix();
+    assert_eq!(t.row(0).w, 4.0);
+    assert_eq!(t.row(1).w, 5.0);
+    assert_eq!(t.row(2).w, 6.0);
+    assert_eq!(t.row(3), glam::Vec4::new(0.0, 0.0, 0.0, 1.0));
+}
+
+#[test]
+fn rotation_x_of_y_by_a_quarter_turn_over_two() {
+    let r = Transform::rotation_x(FRAC_PI_4).unwrap();
+    let expected = Vec3::new(0.0, FRAC_1_SQRT_2, FRAC_1_SQRT_2);
+    assert!(close(r.point(Vec3::Y), expected));
+}
+
+#[test]
+fn quarter_turns_follow_the_cyclic_order_x_y_z() {
+    // About X, y goes to z; about Y, z goes to x; about Z, x goes to y.
+    let quarter = FRAC_PI_2;
+    assert!(close(
+        Transform::rotation_x(quarter).unwrap().vector(Vec3::Y),
+        Vec3::Z
+    ));
+    assert!(close(
+        Transform::rotation_y(quarter).unwrap().vector(Vec3::Z),
+        Vec3::X
+    ));
+    assert!(close(
+        Transform::rotation_z(quarter).unwrap().vector(Vec3::X),
+        Vec3::Y
+    ));
+    // The Y matrix has -sin in the bottom-left corner: x goes to -z.
+    assert!(close(
+        Transform::rotation_y(quarter).unwrap().vector(Vec3::X),
+        -Vec3::Z
+    ));
+}
+
+#[test]
+fn translation_moves_points_but_not_vectors() {
+    let t = Transform::translation(1.0, 2.0, 3.0).unwrap();
+    assert_eq!(t.apply(point(1.0, 1.0, 1.0)), point(2.0, 3.0, 4.0));
+    assert_eq!(t.apply(vector(1.0, 1.0, 1.0)), vector(1.0, 1.0, 1.0));
+}
+
+#[test]
+fn order_matters_translate_then_scale_vs_scale_then_translate() {
+    let t = Transform::translation(1.0, 0.0, 0.0).unwrap();
+    let s = Transform::scale(2.0, 2.0, 2.0).unwrap();
+    // Move the origin to x = 1, then double: x = 2. Double the origin, then move: x = 1.
+    assert_eq!(t.then(s).point(Vec3::ZERO), Vec3::new(2.0, 0.0, 0.0));
+    assert_eq!(s.then(t).point(Vec3::ZERO), Vec3::new(1.0, 0.0, 0.0));
+    // `then` puts the first transformation on the right of the product.
+    assert_eq!(t.then(s).matrix(), s.matrix() * t.matrix());
+}
+
+#[test]
+fn lesson_orders_give_different_points() {
+    let args = lesson::Args::parse_from(["01_transforms"]);
+    let [(_, a), (_, b)] = lesson::two_orders(&args).unwrap();
+    let p = Vec3::new(1.0, 2.0, 3.0);
+    // Rotating 30 degrees first leaves the translation (3, 0, 0) untouched; translating
+    // first lets the rotation turn it too.
+    let (s, c) = 30f32.to_radians().sin_cos();
+    assert!(close(
+        a.point(p),
+        Vec3::new(c - 2.0 * s + 3.0, s + 2.0 * c, 3.0)
+    ));
+    assert!(close(
+        b.point(p),
+        Vec3::new(4.0 * c - 2.0 * s, 4.0 * s + 2.0 * c, 3.0)
+    ));
+}
+
+#[test]
+fn inverse_undoes_and_singular_is_an_error() {
+    let m = Transform::rotation_y(0.7)
+        .unwrap()
+        .then(Transform::translation(3.0, -1.0, 2.0).unwrap())
+        .then(Transform::scale(2.0, 3.0, 4.0).unwrap());
+    let p = Vec3::new(0.3, -4.0, 9.0);
+    assert!((m.inverse().unwrap().point(m.point(p)) - p).length() < 1e-5);
+    let flat = Transform::scale(1.0, 0.0, 1.0).unwrap();
+    assert_eq!(flat.inverse(), Err(Error::Singular { param: "transform" }));
+}
+
+#[test]
+fn normals_use_the_inverse_transpose() {
+    // Squash a 45-degree slope x + y = 0 to half height: the surface normal must stay
+    // perpendicular to the squashed surface, which a plain matrix product breaks.
+    let squash = Transform::scale(1.0, 0.5, 1.0).unwrap();
+    let n = squash.normal(Vec3::new(1.0, 1.0, 0.0)).unwrap();
+    let tangent = squash.vector(Vec3::new(1.0, -1.0, 0.0));
+    assert!(n.dot(tangent).abs() < 1e-6);
+    assert!(squash.vector(Vec3::new(1.0, 1.0, 0.0)).dot(tangent).abs() > 0.1);
+}
+
+#[test]
+fn non_finite_parameters_are_named() {
+    assert_eq!(
+        Transform::rotation_x(f32::NAN),
+        Err(Error::NotFinite { param: "theta" })
+    );
+    assert_eq!(
+        Transform::scale(1.0, f32::INFINITY, 1.0),
+        Err(Error::NotFinite { param: "sy" })
+    );
+    assert_eq!(
+        Transform::translation(1.0, 2.0, f32::NAN),
+        Err(Error::NotFinite { param: "dz" })
+    );
+}
+
+#[test]
+fn figure_draws() {
+    let args = lesson::Args::parse_from(["01_transforms"]);
+    let rgba = lesson::order_figure(&args).unwrap().rgba();
+    let coloured = rgba.chunks(4).filter(|p| p[0] != p[2]).count();
+    assert!(coloured > 1000, "the two moved houses are drawn in colour");
+}

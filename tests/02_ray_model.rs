@@ -1,0 +1,75 @@
+//! Lesson 02: the ray r(t) = o + t d.
+
+#[path = "../examples/02_ray_model.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use clap::Parser;
+use glam::Vec3;
+use proptest::prelude::*;
+use render_lessons::Error;
+use render_lessons::ray::Ray;
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["02_ray_model"]);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+}
+
+#[test]
+fn direction_is_normalised_so_t_is_distance() {
+    let ray = Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(4.0, 3.0, 0.0)).unwrap();
+    assert_eq!(ray.direction(), Vec3::new(0.8, 0.6, 0.0));
+    assert_eq!(ray.at(5.0), Vec3::new(5.0, 4.0, 0.0));
+    // t = -5 lies behind the origin, 5 units back.
+    assert_eq!(ray.at(-5.0), Vec3::new(-3.0, -2.0, 0.0));
+}
+
+#[test]
+fn bad_rays_name_their_parameter() {
+    assert_eq!(
+        Ray::new(Vec3::ZERO, Vec3::ZERO),
+        Err(Error::ZeroLength { param: "direction" })
+    );
+    assert_eq!(
+        Ray::new(Vec3::new(f32::NAN, 0.0, 0.0), Vec3::X),
+        Err(Error::NotFinite { param: "origin" })
+    );
+    assert_eq!(
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, f32::INFINITY, 0.0)),
+        Err(Error::NotFinite { param: "direction" })
+    );
+    // So short that normalising underflows: refused, not a NaN direction.
+    assert_eq!(
+        Ray::new(Vec3::ZERO, Vec3::splat(1e-30)),
+        Err(Error::ZeroLength { param: "direction" })
+    );
+}
+
+fn finite_vec(range: f32) -> impl Strategy<Value = Vec3> {
+    (-range..range, -range..range, -range..range).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+proptest! {
+    #[test]
+    fn distance_along_the_ray_is_abs_t(o in finite_vec(100.0), d in finite_vec(10.0), t in -50.0f32..50.0) {
+        prop_assume!(d.length() > 1e-3);
+        let ray = Ray::new(o, d).unwrap();
+        let distance = (ray.at(t) - o).length();
+        prop_assert!((distance - t.abs()).abs() <= 1e-4 * (1.0 + t.abs() + o.length()));
+        prop_assert!((ray.t_closest_to(ray.at(t)) - t).abs() <= 1e-4 * (1.0 + t.abs() + o.length()));
+    }
+}
+
+#[test]
+fn figure_draws() {
+    let args = lesson::Args::parse_from(["02_ray_model"]);
+    let rgba = lesson::ray_figure(&args).unwrap().rgba();
+    assert!(
+        rgba.chunks(4)
+            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
+            .count()
+            > 500,
+        "the ray is drawn in blue"
+    );
+}

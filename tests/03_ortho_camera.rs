@@ -1,0 +1,140 @@
+//! Lesson 03: the orthographic camera at the origin.
+
+#[path = "../examples/03_ortho_camera.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use clap::Parser;
+use glam::{Vec2, Vec3};
+use proptest::prelude::*;
+use render_lessons::Error;
+use render_lessons::camera::{Film, MAX_RESOLUTION, OrthoCamera};
+
+fn slide_camera() -> OrthoCamera {
+    OrthoCamera::at_origin(Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap())
+}
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["03_ortho_camera"]);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+}
+
+#[test]
+fn pixel_0_0_is_the_slides_ray() {
+    let ray = slide_camera().ray(0, 0);
+    assert_eq!(ray.origin(), Vec3::new(-6.0, 4.0, 0.0));
+    assert_eq!(ray.direction(), Vec3::new(0.0, 0.0, -1.0));
+}
+
+#[test]
+fn the_literal_slide_formula_counts_rows_from_the_bottom() {
+    // The slide's formula with y_pixel = 0 gives the bottom row, y = -4: only with
+    // row 0 at the top does pixel (0,0) land at y = 4, as the slide says.
+    let (x_pixel, y_pixel, res_x, res_y) = (0.0f32, 0.0f32, 4.0f32, 3.0f32);
+    let literal = Vec2::new(
+        (x_pixel + 0.5) / res_x * 16.0 - 8.0,
+        (y_pixel + 0.5) / res_y * 12.0 - 6.0,
+    );
+    assert_eq!(literal, Vec2::new(-6.0, -4.0));
+    assert_eq!(slide_camera().ray(0, 2).origin(), literal.extend(0.0));
+    assert_eq!(slide_camera().film().row_from_bottom(0), 2);
+}
+
+#[test]
+fn pixel_centres_round_trip_through_the_plane() {
+    let film = Film::new(7, 5, (-3.0, 11.0), (2.0, 4.5)).unwrap();
+    for y in 0..5 {
+        for x in 0..7 {
+            let back = film.plane_to_pixel(film.pixel_to_plane(x, y));
+            assert!(
+                (back - Vec2::new(x as f32 + 0.5, y as f32 + 0.5))
+                    .abs()
+                    .max_element()
+                    < 1e-5
+            );
+        }
+    }
+}
+
+#[test]
+fn bad_films_name_their_parameter() {
+    let x = (-8.0, 8.0);
+    let y = (-6.0, 6.0);
+    assert_eq!(
+        Film::new(0, 3, x, y),
+        Err(Error::Resolution {
+            param: "width",
+            value: 0
+        })
+    );
+    assert_eq!(
+        Film::new(4, MAX_RESOLUTION + 1, x, y),
+        Err(Error::Resolution {
+            param: "height",
+            value: MAX_RESOLUTION + 1
+        })
+    );
+    assert_eq!(
+        Film::new(4, 3, (1.0, 1.0), y).unwrap_err().param(),
+        "x extent"
+    );
+    assert_eq!(
+        Film::new(4, 3, x, (6.0, -6.0)).unwrap_err().param(),
+        "y extent"
+    );
+    assert_eq!(
+        Film::new(4, 3, (f32::NAN, 1.0), y),
+        Err(Error::NotFinite { param: "x extent" })
+    );
+    assert_eq!(
+        Film::new(4, 3, (-f32::MAX, f32::MAX), y)
+            .unwrap_err()
+            .param(),
+        "x extent"
+    );
+}
+
+proptest! {
+    #[test]
+    fn every_ray_starts_inside_the_plane_and_points_down_minus_z(
+        w in 1u32..64, h in 1u32..64, x0 in -100.0f32..100.0, dx in 0.01f32..100.0,
+        y0 in -100.0f32..100.0, dy in 0.01f32..100.0, px in 0u32..64, py in 0u32..64,
+    ) {
+        let film = Film::new(w, h, (x0, x0 + dx), (y0, y0 + dy)).unwrap();
+        let ray = OrthoCamera::at_origin(film).ray(px % w, py % h);
+        let o = ray.origin();
+        prop_assert!(o.x > x0 && o.x < x0 + dx && o.y > y0 && o.y < y0 + dy && o.z == 0.0);
+        prop_assert_eq!(ray.direction(), Vec3::NEG_Z);
+    }
+}
+
+#[test]
+fn origin_image_is_green_at_the_top_and_red_at_the_right() {
+    let args = lesson::Args::parse_from(["03_ortho_camera"]);
+    let image = lesson::origin_image(&args, 32, 24).unwrap();
+    let (top_left, bottom_left, top_right) = (
+        image.get(0, 0).unwrap(),
+        image.get(0, 23).unwrap(),
+        image.get(31, 0).unwrap(),
+    );
+    assert!(top_left.y > 0.95 && bottom_left.y < 0.05);
+    assert!(top_left.x < 0.05 && top_right.x > 0.95);
+}
+
+#[test]
+fn figures_draw() {
+    let args = lesson::Args::parse_from(["03_ortho_camera"]);
+    for d in [
+        lesson::plane_figure(&args).unwrap(),
+        lesson::rays_figure(&args).unwrap(),
+    ] {
+        assert!(
+            d.rgba()
+                .chunks(4)
+                .filter(|p| p[0] as i32 > p[2] as i32 + 60)
+                .count()
+                > 200
+        );
+    }
+}

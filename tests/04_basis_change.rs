@@ -1,0 +1,110 @@
+//! Lesson 04: a vector in two orthonormal bases.
+
+#[path = "../examples/04_basis_change.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use clap::Parser;
+use glam::{Quat, Vec3};
+use proptest::prelude::*;
+use render_lessons::Error;
+use render_lessons::basis::Basis;
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["04_basis_change"]);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+}
+
+#[test]
+fn standard_basis_changes_nothing() {
+    let s = Vec3::new(3.0, -1.0, 2.5);
+    assert_eq!(Basis::STANDARD.to_world(s), s);
+    assert_eq!(Basis::STANDARD.to_local(s), s);
+}
+
+#[test]
+fn a_equals_b_times_b_by_hand() {
+    // u = (0, 1, 0), v = (-1, 0, 0), w = (0, 0, 1): a quarter turn about z.
+    let basis = Basis::new(Vec3::Y, Vec3::NEG_X, Vec3::Z).unwrap();
+    // b = (2, 1, 3) means 2u + 1v + 3w = (0, 2, 0) + (-1, 0, 0) + (0, 0, 3).
+    assert_eq!(
+        basis.to_world(Vec3::new(2.0, 1.0, 3.0)),
+        Vec3::new(-1.0, 2.0, 3.0)
+    );
+    assert_eq!(
+        basis.to_local(Vec3::new(-1.0, 2.0, 3.0)),
+        Vec3::new(2.0, 1.0, 3.0)
+    );
+    assert_eq!(
+        basis.matrix() * Vec3::new(2.0, 1.0, 3.0),
+        Vec3::new(-1.0, 2.0, 3.0)
+    );
+}
+
+#[test]
+fn not_orthonormal_is_refused() {
+    let skew = Basis::new(Vec3::X, Vec3::new(0.5, 1.0, 0.0).normalize(), Vec3::Z);
+    assert_eq!(skew.unwrap_err().param(), "basis");
+    assert_eq!(
+        Basis::new(Vec3::X, Vec3::Y * 2.0, Vec3::Z)
+            .unwrap_err()
+            .param(),
+        "basis"
+    );
+    assert_eq!(
+        Basis::new(Vec3::NAN, Vec3::Y, Vec3::Z),
+        Err(Error::NotFinite { param: "u" })
+    );
+}
+
+#[test]
+fn a_mirrored_basis_is_orthonormal_but_left_handed() {
+    let left = Basis::new(Vec3::X, Vec3::Y, Vec3::NEG_Z).unwrap();
+    assert!(!left.is_right_handed());
+    assert!(Basis::STANDARD.is_right_handed());
+}
+
+fn rotation() -> impl Strategy<Value = Quat> {
+    (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0)
+        .prop_filter("non-zero", |(x, y, z, w)| {
+            x * x + y * y + z * z + w * w > 1e-2
+        })
+        .prop_map(|(x, y, z, w)| Quat::from_xyzw(x, y, z, w).normalize())
+}
+
+proptest! {
+    #[test]
+    fn round_trip_and_length_hold_for_any_rotated_basis(
+        q in rotation(), b in (-10.0f32..10.0, -10.0f32..10.0, -10.0f32..10.0)
+    ) {
+        let basis = Basis::new(q * Vec3::X, q * Vec3::Y, q * Vec3::Z).unwrap();
+        let b = Vec3::new(b.0, b.1, b.2);
+        let a = basis.to_world(b);
+        prop_assert!((basis.to_local(a) - b).length() <= 1e-5 * (1.0 + b.length()));
+        prop_assert!((a.length() - b.length()).abs() <= 1e-5 * (1.0 + b.length()));
+        prop_assert!(basis.orthonormality_error() < 1e-5);
+        prop_assert!(basis.is_right_handed());
+        prop_assert!((basis.u().cross(basis.v()) - basis.w()).length() < 1e-5);
+    }
+}
+
+#[test]
+fn lesson_round_trip_is_exact_enough() {
+    let args = lesson::Args::parse_from(["04_basis_change"]);
+    let basis = lesson::turned_basis(args.angle).unwrap();
+    let back = basis.to_local(basis.to_world(args.b));
+    assert!((back - args.b).length() < 1e-6);
+}
+
+#[test]
+fn figure_draws() {
+    let args = lesson::Args::parse_from(["04_basis_change"]);
+    let rgba = lesson::bases_figure(&args).unwrap().rgba();
+    assert!(
+        rgba.chunks(4)
+            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
+            .count()
+            > 300
+    );
+}

@@ -1,0 +1,176 @@
+//! Lesson 06: the pinhole camera, the slide erratum, and handedness (S11) for both cameras.
+
+#[path = "../examples/06_pinhole_camera.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use clap::Parser;
+use glam::{Vec2, Vec3};
+use proptest::prelude::*;
+use render_lessons::Error;
+use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+
+fn film() -> Film {
+    Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap()
+}
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["06_pinhole_camera"]);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+}
+
+#[test]
+fn screen_point_is_c_plus_u_a_plus_v_b() {
+    // The slide's vectors, written out independently of the film code.
+    let (s, res_x, res_y) = (8.0f32, 4.0f32, 3.0f32);
+    let a = Vec3::X * 16.0;
+    let b = Vec3::Y * 12.0;
+    let c = -8.0 * Vec3::X - 6.0 * Vec3::Y - s * Vec3::Z;
+    let cam = PinholeCamera::at_origin(film(), s).unwrap();
+    for py in 0..3u32 {
+        for px in 0..4u32 {
+            let y_from_bottom = 2 - py; // the slides count rows from the bottom
+            let (u, v) = (
+                (px as f32 + 0.5) / res_x,
+                (y_from_bottom as f32 + 0.5) / res_y,
+            );
+            assert!((cam.screen_point(px, py) - (c + u * a + v * b)).length() < 1e-6);
+        }
+    }
+}
+
+#[test]
+fn pixel_0_0_ray_by_hand() {
+    // Screen point (-6, 4, -8); |(-6, 4, -8)| = sqrt(116).
+    let ray = PinholeCamera::at_origin(film(), 8.0).unwrap().ray(0, 0);
+    assert_eq!(ray.origin(), Vec3::ZERO);
+    let expected = Vec3::new(-6.0, 4.0, -8.0) / 116f32.sqrt();
+    assert!((ray.direction() - expected).length() < 1e-6);
+}
+
+#[test]
+fn erratum_the_slides_repeated_orthographic_rays_are_parallel() {
+    // Literally as on the arbitrary-pinhole slide: origin (x, y, 0), direction (0, 0, -1).
+    let literal = OrthoCamera::at_origin(film());
+    let pinhole = PinholeCamera::at_origin(film(), 8.0).unwrap();
+    let (a, b) = (literal.ray(0, 0), literal.ray(3, 2));
+    assert_eq!(
+        a.direction(),
+        b.direction(),
+        "parallel: no centre of projection"
+    );
+    // The literal rays do not pass through the eye e = 0; the pinhole rays all do.
+    assert!(a.origin().length() > 1.0);
+    for (px, py) in [(0, 0), (3, 2)] {
+        let r = pinhole.ray(px, py);
+        assert!((r.at(r.t_closest_to(Vec3::ZERO))).length() < 1e-6);
+    }
+    // Depth: a point and the same point ten times farther land on the same pixel with the
+    // literal rays, but not with the pinhole.
+    let (near, far) = (Vec3::new(4.0, 2.0, -5.0), Vec3::new(4.0, 2.0, -50.0));
+    assert_eq!(literal.project(near), literal.project(far));
+    let (pn, pf) = (
+        pinhole.project(near).unwrap(),
+        pinhole.project(far).unwrap(),
+    );
+    assert!((pn - pf).length() > 0.5);
+    assert!(
+        (pf - Vec2::new(2.0, 1.5)).length() < (pn - Vec2::new(2.0, 1.5)).length(),
+        "far things move to the centre"
+    );
+}
+
+#[test]
+fn s11_right_is_right_and_up_is_up_for_both_cameras() {
+    let frame = Frame::look(Vec3::ZERO, Vec3::NEG_Z, Vec3::Y).unwrap();
+    let film = Film::new(64, 48, (-4.0, 4.0), (-3.0, 3.0)).unwrap();
+    let cameras: [Camera; 2] = [
+        OrthoCamera::new(film, frame).into(),
+        PinholeCamera::new(film, 2.0, frame).unwrap().into(),
+    ];
+    let b = frame.basis();
+    assert!((b.u().cross(b.v()) - b.w()).length() < 1e-6);
+    for camera in cameras {
+        let right = camera.project(Vec3::new(1.0, 0.0, -5.0)).unwrap();
+        let up = camera.project(Vec3::new(0.0, 1.0, -5.0)).unwrap();
+        assert!(right.x > 32.0, "{camera:?}: (1,0,-5) in the right half");
+        assert!(
+            up.y < 24.0,
+            "{camera:?}: (0,1,-5) in the upper half (rows count from the top)"
+        );
+    }
+}
+
+#[test]
+fn bad_screen_distance_is_named() {
+    assert_eq!(
+        PinholeCamera::at_origin(film(), 0.0),
+        Err(Error::NotPositive {
+            param: "screen distance",
+            value: 0.0
+        })
+    );
+    assert_eq!(
+        PinholeCamera::at_origin(film(), -2.0).unwrap_err().param(),
+        "screen distance"
+    );
+    assert_eq!(
+        PinholeCamera::at_origin(film(), f32::NAN),
+        Err(Error::NotFinite {
+            param: "screen distance"
+        })
+    );
+}
+
+fn direction() -> impl Strategy<Value = Vec3> {
+    (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0)
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
+        .prop_filter("long enough", |v| v.length() > 0.05)
+}
+
+proptest! {
+    #[test]
+    fn every_pinhole_ray_passes_through_its_screen_point(
+        d in direction(), k in direction(), p in (-50.0f32..50.0, -50.0f32..50.0, -50.0f32..50.0),
+        s in 0.1f32..20.0, w in 1u32..40, h in 1u32..40, px in 0u32..40, py in 0u32..40,
+    ) {
+        prop_assume!(d.normalize().cross(k.normalize()).length() > 1e-3);
+        let frame = Frame::look(Vec3::new(p.0, p.1, p.2), d, k).unwrap();
+        let film = Film::new(w, h, (-2.0, 3.0), (-1.0, 1.5)).unwrap();
+        let cam = PinholeCamera::new(film, s, frame).unwrap();
+        let (px, py) = (px % w, py % h);
+        let ray = cam.ray(px, py);
+        let target = frame.point_to_world(cam.screen_point(px, py));
+        let t = ray.t_closest_to(target);
+        prop_assert!(t > 0.0, "the screen is in front of the eye");
+        prop_assert!((ray.at(t) - target).length() < 1e-4 * (1.0 + target.length()));
+        prop_assert!(ray.direction().is_finite() && ray.origin() == frame.position());
+        // And projecting the screen point gives back the pixel centre.
+        let back = cam.project(target).unwrap();
+        prop_assert!((back - Vec2::new(px as f32 + 0.5, py as f32 + 0.5)).length() < 1e-2);
+    }
+}
+
+#[test]
+fn side_by_side_orthographic_sees_only_floor_and_pinhole_sees_the_sky() {
+    let args = lesson::Args::parse_from(["06_pinhole_camera", "--view-width", "64"]);
+    let image = lesson::side_by_side(&args).unwrap();
+    let sky = glam::Vec3::new(0.6, 0.75, 0.95);
+    // Every orthographic ray points along d = (0, -1, -2): all of them reach the floor.
+    assert!((0..64).all(|x| image.get(x, 0).unwrap() != sky));
+    // The pinhole's top row looks above the horizon.
+    assert!((64..128).all(|x| image.get(x, 0).unwrap() == sky));
+}
+
+#[test]
+fn figure_draws() {
+    let args = lesson::Args::parse_from(["06_pinhole_camera"]);
+    let rgba = lesson::fan_figure(&args).unwrap().rgba();
+    assert!(
+        rgba.chunks(4)
+            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
+            .count()
+            > 300
+    );
+}

@@ -179,6 +179,16 @@ fn has_marker(text: &str, marker: &str, name: &str) -> bool {
     })
 }
 
+/// The 1-based line on which an insta snapshot's content starts: the line after the
+/// second `---`.
+fn snapshot_body_start(text: &str) -> usize {
+    text.lines()
+        .enumerate()
+        .filter(|(_, l)| l.trim_end() == "---")
+        .nth(1)
+        .map_or(1, |(i, _)| i + 2)
+}
+
 fn is_remote_or_absolute(target: &str) -> bool {
     target.is_empty()
         || target.starts_with('#')
@@ -349,6 +359,22 @@ fn check_markdown(files: &dyn Files, path: &Path, text: &str, problems: &mut Vec
                     let count = content.lines().count();
                     let first = start.unwrap_or(1);
                     let last = end.unwrap_or(count);
+                    // An insta snapshot starts with a `---` ... `---` header; an include
+                    // of one must start on the first line after it, so the book shows
+                    // exactly the pinned numbers and none of the metadata.
+                    let is_snapshot = target.extension().is_some_and(|e| e == "snap");
+                    let body = snapshot_body_start(&content);
+                    if is_snapshot && start != Some(body) {
+                        report(
+                            lineno,
+                            format!(
+                                "{{{{#{} {}}}}}: a snapshot's numbers start on line {body} of `{}`: include it as `:{body}:`",
+                                d.name,
+                                d.args,
+                                target.display()
+                            ),
+                        );
+                    }
                     if first == 0 || first > count || last > count || first > last {
                         report(
                             lineno,

@@ -10,11 +10,11 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::{Vec2, Vec3};
+use render_lessons::Result;
 use render_lessons::diagram::{Diagram, Place, palette};
 use render_lessons::lesson::{self, Output, parse_vec3};
 use render_lessons::ray::Ray;
 use render_lessons::report::{Table, num, vec3};
-use render_lessons::{Error, Result};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
@@ -107,9 +107,6 @@ fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
         print!("{}", numbers(&args)?);
-        let path = args.output.file("02_ray.png");
-        ray_figure(&args)?.save(&path)?;
-        lesson::wrote(&path);
-        Ok::<(), Error>(())
+        args.output.diagram("02_ray.png", &ray_figure(&args)?)
     })
 }

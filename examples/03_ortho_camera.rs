@@ -11,12 +11,12 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::{Vec2, Vec3};
+use render_lessons::Result;
 use render_lessons::camera::{Film, OrthoCamera};
 use render_lessons::diagram::{Diagram, Place, palette};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::lesson::{self, Output, parse_finite};
 use render_lessons::report::{Table, num, vec3};
-use render_lessons::{Error, Result};
 
 /// The lesson's parameters; the defaults reproduce the slide's pixel (0,0) -> (-6, 4, 0).
 #[derive(Parser, Debug)]
@@ -214,17 +214,9 @@ fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
         print!("{}", numbers(&args)?);
-        for (name, diagram) in [
-            ("03_plane.png", plane_figure(&args)?),
-            ("03_rays.png", rays_figure(&args)?),
-        ] {
-            let path = args.output.file(name);
-            diagram.save(&path)?;
-            lesson::wrote(&path);
-        }
-        let path = args.output.file("03_origins.png");
-        origin_image(&args, 320, 240)?.save_png(&path)?;
-        lesson::wrote(&path);
-        Ok::<(), Error>(())
+        args.output.diagram("03_plane.png", &plane_figure(&args)?)?;
+        args.output.diagram("03_rays.png", &rays_figure(&args)?)?;
+        args.output
+            .image("03_origins.png", &origin_image(&args, 320, 240)?)
     })
 }

@@ -11,13 +11,13 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::{Vec2, Vec3};
+use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::diagram::{Diagram, Place, palette};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::ray::Ray;
 use render_lessons::report::{Table, num, vec3};
-use render_lessons::{Error, Result};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
@@ -175,12 +175,9 @@ fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
         print!("{}", numbers(&args)?);
-        let path = args.output.file("06_pinhole_rays.png");
-        fan_figure(&args)?.save(&path)?;
-        lesson::wrote(&path);
-        let path = args.output.file("06_ortho_vs_pinhole.png");
-        side_by_side(&args)?.save_png(&path)?;
-        lesson::wrote(&path);
-        Ok::<(), Error>(())
+        args.output
+            .diagram("06_pinhole_rays.png", &fan_figure(&args)?)?;
+        args.output
+            .image("06_ortho_vs_pinhole.png", &side_by_side(&args)?)
     })
 }

@@ -4,7 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use crate::diagram::Diagram;
 use crate::error::Result;
+use crate::framebuffer::Framebuffer;
 
 /// The flag every lesson accepts: the folder its images go to.
 #[derive(clap::Args, Clone, Debug)]
@@ -18,6 +20,22 @@ impl Output {
     /// The path of the file `name` in the output folder.
     pub fn file(&self, name: &str) -> PathBuf {
         self.out.join(name)
+    }
+
+    /// Saves a diagram as `name` in the output folder and says so.
+    pub fn diagram(&self, name: &str, diagram: &Diagram) -> Result<()> {
+        let path = self.file(name);
+        diagram.save(&path)?;
+        wrote(&path);
+        Ok(())
+    }
+
+    /// Saves a rendered image as `name` in the output folder and says so.
+    pub fn image(&self, name: &str, image: &Framebuffer) -> Result<()> {
+        let path = self.file(name);
+        image.save_png(&path)?;
+        wrote(&path);
+        Ok(())
     }
 }
 

@@ -1,5 +1,6 @@
 //! Lesson 02: the ray r(t) = o + t d.
 
+mod common;
 #[path = "../examples/02_ray_model.rs"]
 #[allow(dead_code)]
 mod lesson;
@@ -65,11 +66,5 @@ proptest! {
 fn figure_draws() {
     let args = lesson::Args::parse_from(["02_ray_model"]);
     let rgba = lesson::ray_figure(&args).unwrap().rgba();
-    assert!(
-        rgba.chunks(4)
-            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
-            .count()
-            > 500,
-        "the ray is drawn in blue"
-    );
+    assert!(common::blue_pixels(&rgba) > 500, "the ray is drawn in blue");
 }

@@ -1,5 +1,6 @@
 //! Lesson 03: the orthographic camera at the origin.
 
+mod common;
 #[path = "../examples/03_ortho_camera.rs"]
 #[allow(dead_code)]
 mod lesson;
@@ -129,12 +130,6 @@ fn figures_draw() {
         lesson::plane_figure(&args).unwrap(),
         lesson::rays_figure(&args).unwrap(),
     ] {
-        assert!(
-            d.rgba()
-                .chunks(4)
-                .filter(|p| p[0] as i32 > p[2] as i32 + 60)
-                .count()
-                > 200
-        );
+        assert!(common::red_pixels(&d.rgba()) > 200);
     }
 }

@@ -1,5 +1,6 @@
 //! Lesson 04: a vector in two orthonormal bases.
 
+mod common;
 #[path = "../examples/04_basis_change.rs"]
 #[allow(dead_code)]
 mod lesson;
@@ -101,10 +102,5 @@ fn lesson_round_trip_is_exact_enough() {
 fn figure_draws() {
     let args = lesson::Args::parse_from(["04_basis_change"]);
     let rgba = lesson::bases_figure(&args).unwrap().rgba();
-    assert!(
-        rgba.chunks(4)
-            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
-            .count()
-            > 300
-    );
+    assert!(common::blue_pixels(&rgba) > 300);
 }

@@ -1,5 +1,6 @@
 //! Lesson 05: the arbitrary orthographic camera, its basis, the slide erratum and S10.
 
+mod common;
 #[path = "../examples/05_arbitrary_ortho_camera.rs"]
 #[allow(dead_code)]
 mod lesson;
@@ -42,15 +43,9 @@ fn erratum_the_slides_w_makes_the_camera_look_backwards() {
     );
 }
 
-fn direction() -> impl Strategy<Value = Vec3> {
-    (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0)
-        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
-        .prop_filter("long enough", |v| v.length() > 0.05)
-}
-
 proptest! {
     #[test]
-    fn camera_basis_is_orthonormal_right_handed_and_looks_along_d(d in direction(), k in direction()) {
+    fn camera_basis_is_orthonormal_right_handed_and_looks_along_d(d in common::direction(), k in common::direction()) {
         prop_assume!(d.normalize().cross(k.normalize()).length() > 1e-3);
         let b = camera_basis(d, k).unwrap();
         prop_assert!(b.orthonormality_error() < 1e-5);
@@ -62,7 +57,7 @@ proptest! {
     }
 
     #[test]
-    fn every_world_ray_is_parallel_to_d(d in direction(), k in direction(), px in 0u32..4, py in 0u32..3) {
+    fn every_world_ray_is_parallel_to_d(d in common::direction(), k in common::direction(), px in 0u32..4, py in 0u32..3) {
         prop_assume!(d.normalize().cross(k.normalize()).length() > 1e-3);
         let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
         let cam = OrthoCamera::new(film, Frame::look(Vec3::new(1.0, 2.0, 3.0), d, k).unwrap());
@@ -148,10 +143,5 @@ fn bad_camera_input_names_the_parameter() {
 fn figure_draws() {
     let args = lesson::Args::parse_from(["05_arbitrary_ortho_camera"]);
     let rgba = lesson::top_figure(&args).unwrap().rgba();
-    assert!(
-        rgba.chunks(4)
-            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
-            .count()
-            > 300
-    );
+    assert!(common::blue_pixels(&rgba) > 300);
 }

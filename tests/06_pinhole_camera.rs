@@ -1,5 +1,6 @@
 //! Lesson 06: the pinhole camera, the slide erratum, and handedness (S11) for both cameras.
 
+mod common;
 #[path = "../examples/06_pinhole_camera.rs"]
 #[allow(dead_code)]
 mod lesson;
@@ -123,16 +124,10 @@ fn bad_screen_distance_is_named() {
     );
 }
 
-fn direction() -> impl Strategy<Value = Vec3> {
-    (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0)
-        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
-        .prop_filter("long enough", |v| v.length() > 0.05)
-}
-
 proptest! {
     #[test]
     fn every_pinhole_ray_passes_through_its_screen_point(
-        d in direction(), k in direction(), p in (-50.0f32..50.0, -50.0f32..50.0, -50.0f32..50.0),
+        d in common::direction(), k in common::direction(), p in (-50.0f32..50.0, -50.0f32..50.0, -50.0f32..50.0),
         s in 0.1f32..20.0, w in 1u32..40, h in 1u32..40, px in 0u32..40, py in 0u32..40,
     ) {
         prop_assume!(d.normalize().cross(k.normalize()).length() > 1e-3);
@@ -167,10 +162,5 @@ fn side_by_side_orthographic_sees_only_floor_and_pinhole_sees_the_sky() {
 fn figure_draws() {
     let args = lesson::Args::parse_from(["06_pinhole_camera"]);
     let rgba = lesson::fan_figure(&args).unwrap().rgba();
-    assert!(
-        rgba.chunks(4)
-            .filter(|p| p[2] as i32 > p[0] as i32 + 60)
-            .count()
-            > 300
-    );
+    assert!(common::blue_pixels(&rgba) > 300);
 }

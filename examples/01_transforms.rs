@@ -122,7 +122,7 @@ pub fn order_figure(args: &Args) -> Result<Diagram> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        print!("{}", numbers(&args)?);
+        lesson::print(&numbers(&args)?);
         args.output
             .diagram("01_transform_order.png", &order_figure(&args)?)
     })

@@ -106,7 +106,7 @@ pub fn ray_figure(args: &Args) -> Result<Diagram> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        print!("{}", numbers(&args)?);
+        lesson::print(&numbers(&args)?);
         args.output.diagram("02_ray.png", &ray_figure(&args)?)
     })
 }

@@ -213,7 +213,7 @@ pub fn origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer>
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        print!("{}", numbers(&args)?);
+        lesson::print(&numbers(&args)?);
         args.output.diagram("03_plane.png", &plane_figure(&args)?)?;
         args.output.diagram("03_rays.png", &rays_figure(&args)?)?;
         args.output

@@ -128,7 +128,7 @@ pub fn bases_figure(args: &Args) -> Result<Diagram> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        print!("{}", numbers(&args)?);
+        lesson::print(&numbers(&args)?);
         args.output
             .diagram("04_two_bases.png", &bases_figure(&args)?)
     })

@@ -137,7 +137,7 @@ pub fn top_figure(args: &Args) -> Result<Diagram> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        print!("{}", numbers(&args)?);
+        lesson::print(&numbers(&args)?);
         args.output
             .diagram("05_camera_from_above.png", &top_figure(&args)?)
     })

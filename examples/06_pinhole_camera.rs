@@ -174,7 +174,7 @@ pub fn side_by_side(args: &Args) -> Result<Framebuffer> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        print!("{}", numbers(&args)?);
+        lesson::print(&numbers(&args)?);
         args.output
             .diagram("06_pinhole_rays.png", &fan_figure(&args)?)?;
         args.output

@@ -50,9 +50,16 @@ pub fn run(body: impl FnOnce() -> Result<()>) -> ExitCode {
     }
 }
 
+/// Prints a lesson's text to standard output. A closed pipe (`... | head`) ends the
+/// printing quietly instead of panicking as `print!` would.
+pub fn print(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
 /// Prints where a file was written.
 pub fn wrote(path: &Path) {
-    println!("wrote {}", path.display());
+    print(&format!("wrote {}\n", path.display()));
 }
 
 /// Parses `x,y,z` (as typed after a flag such as `--direction 0,0,-1`) into a vector.

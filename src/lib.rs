@@ -17,6 +17,7 @@ pub mod lesson;
 pub mod output;
 pub mod ray;
 pub mod report;
+pub mod shapes;
 pub mod transform;
 
 pub use error::{Error, Result};

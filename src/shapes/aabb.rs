@@ -1,0 +1,160 @@
+//! Ray / axis-aligned box: the slab test (Kay and Kajiya 1986, in the form of pbrt-v4
+//! `Bounds3::IntersectP`).
+
+use glam::Vec3;
+
+use crate::error::{Error, Result, finite3};
+use crate::ray::Ray;
+use crate::shapes::{Hit, in_open_range};
+
+/// The box of points with `min <= p <= max` on every axis (a closed set).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    min: Vec3,
+    max: Vec3,
+}
+
+/// pbrt's gamma(n) = n eps / (1 - n eps), eps = f32::EPSILON / 2 (the unit roundoff):
+/// a bound on the relative error of n rounded operations (pbrt-v4, section 6.8.1).
+pub const fn gamma(n: u32) -> f32 {
+    let eps = f32::EPSILON / 2.0;
+    let n = n as f32;
+    n * eps / (1.0 - n * eps)
+}
+
+/// The entry and exit of one slab, with the axis index that produced each.
+#[derive(Clone, Copy, Debug)]
+struct Span {
+    t0: f32,
+    axis0: usize,
+    t1: f32,
+    axis1: usize,
+}
+
+impl Aabb {
+    /// The box from `min` to `max`.
+    ///
+    /// Rejects non-finite corners, and `min > max` on any axis with
+    /// [`Error::EmptyRange`] naming `box`; `min == max` is allowed (a box of zero
+    /// thickness, such as a flat quad's bounds).
+    pub fn new(min: Vec3, max: Vec3) -> Result<Aabb> {
+        let (min, max) = (finite3("min", min)?, finite3("max", max)?);
+        for i in 0..3 {
+            if min[i] > max[i] {
+                return Err(Error::EmptyRange {
+                    param: "box",
+                    min: min[i],
+                    max: max[i],
+                });
+            }
+        }
+        Ok(Aabb { min, max })
+    }
+
+    /// The corner with the smallest coordinates.
+    pub fn min(&self) -> Vec3 {
+        self.min
+    }
+
+    /// The corner with the largest coordinates.
+    pub fn max(&self) -> Vec3 {
+        self.max
+    }
+
+    // ANCHOR: slab
+    /// The slab test: the interval `[t0, t1]` of the ray inside the box, clipped to
+    /// `[t_min, t_max]`, or `None`.
+    ///
+    /// Convention: INCLUSIVE. The box is closed and the result is a hit whenever
+    /// t0 <= t1, so a ray that grazes an edge, touches a corner or runs along a face
+    /// plane over the face hits, with t0 == t1 for a single touching point (STABILITY
+    /// S8).
+    ///
+    /// Per axis, t_near = (min - o) / d and t_far = (max - o) / d, computed as
+    /// (min - o) * (1 / d). A zero component of d gives 1/d = inf; a ray lying in a
+    /// face plane then gives 0 * inf = NaN. The updates are written
+    /// `if t_near > t0 { t0 = t_near }` (pbrt's form), so a NaN compares false and
+    /// leaves the interval alone, and that axis, on which the ray sits on the closed
+    /// box, constrains nothing.
+    pub fn slab(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
+        let s = self.span(ray, t_min, t_max, 1.0)?;
+        Some((s.t0, s.t1))
+    }
+    // ANCHOR_END: slab
+
+    // ANCHOR: slab_conservative
+    /// [`Aabb::slab`] with each axis' t_far widened by 1 + 2 gamma(3) (pbrt-v4,
+    /// `Bounds3::IntersectP`: t_far *= 1 + 2 gamma(3); here a negative t_far is divided
+    /// instead, so that it too moves outwards), so that rounding in the three operations behind it
+    /// cannot make the box miss a point that lies on it, such as a vertex of a
+    /// triangle it bounds (STABILITY S6).
+    pub fn slab_conservative(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
+        let s = self.span(ray, t_min, t_max, 1.0 + 2.0 * gamma(3))?;
+        Some((s.t0, s.t1))
+    }
+    // ANCHOR_END: slab_conservative
+
+    /// The slab loop shared by both tests; `widen` scales each axis' t_far.
+    fn span(&self, ray: &Ray, t_min: f32, t_max: f32, widen: f32) -> Option<Span> {
+        let (o, d) = (ray.origin(), ray.direction());
+        let mut s = Span {
+            t0: t_min,
+            axis0: 0,
+            t1: t_max,
+            axis1: 0,
+        };
+        for i in 0..3 {
+            let inv = 1.0 / d[i];
+            let mut t_near = (self.min[i] - o[i]) * inv;
+            let mut t_far = (self.max[i] - o[i]) * inv;
+            if t_near > t_far {
+                std::mem::swap(&mut t_near, &mut t_far);
+            }
+            t_far = widen_up(t_far, widen);
+            if t_near > s.t0 {
+                (s.t0, s.axis0) = (t_near, i);
+            }
+            if t_far < s.t1 {
+                (s.t1, s.axis1) = (t_far, i);
+            }
+            if s.t0 > s.t1 {
+                return None;
+            }
+        }
+        Some(s)
+    }
+
+    // ANCHOR: box_hit
+    /// The nearest crossing of the box surface with `t_min < t < t_max`: the entry,
+    /// or the exit for a ray starting inside.
+    ///
+    /// The normal is the outward normal of the face crossed (the axis whose slab set
+    /// that end of the interval), and the point is snapped onto that face.
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let s = self.span(ray, f32::NEG_INFINITY, f32::INFINITY, 1.0)?;
+        let d = ray.direction();
+        let (t, axis, outward_sign) = if in_open_range(s.t0, t_min, t_max) {
+            (s.t0, s.axis0, -d[s.axis0].signum())
+        } else if in_open_range(s.t1, t_min, t_max) {
+            (s.t1, s.axis1, d[s.axis1].signum())
+        } else {
+            return None;
+        };
+        let mut normal = Vec3::ZERO;
+        normal[axis] = outward_sign;
+        let mut point = ray.at(t);
+        point[axis] = if outward_sign > 0.0 {
+            self.max[axis]
+        } else {
+            self.min[axis]
+        };
+        Some(Hit::new(ray, t, point, normal))
+    }
+    // ANCHOR_END: box_hit
+}
+
+/// `t` moved away from the box by the factor `widen >= 1`: multiplied if positive,
+/// divided if negative; 0, infinities and NaN stay as they are.
+fn widen_up(t: f32, widen: f32) -> f32 {
+    if t > 0.0 { t * widen } else { t / widen }
+}

@@ -1,0 +1,60 @@
+//! Ray / plane: the points p with (p - p0) . n = 0.
+
+use glam::Vec3;
+
+use crate::error::{Result, finite3, unit};
+use crate::ray::Ray;
+use crate::shapes::{Hit, in_open_range};
+
+/// The infinite plane through `point` with unit `normal`; the normal's side is the
+/// front.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane {
+    point: Vec3,
+    normal: Vec3,
+}
+
+impl Plane {
+    /// The plane through `point` perpendicular to `normal` (normalised here).
+    ///
+    /// Rejects a non-finite point, and a normal that is zero or not finite.
+    pub fn new(point: Vec3, normal: Vec3) -> Result<Plane> {
+        Ok(Plane {
+            point: finite3("point", point)?,
+            normal: unit("normal", normal)?,
+        })
+    }
+
+    /// A point p0 on the plane.
+    pub fn point(&self) -> Vec3 {
+        self.point
+    }
+
+    /// The unit normal n.
+    pub fn normal(&self) -> Vec3 {
+        self.normal
+    }
+
+    // ANCHOR: plane_t
+    /// The `t` where the ray's line meets the plane: t = (p0 - o) . n / (d . n).
+    ///
+    /// `None` for a ray parallel to the plane (d . n = 0), and when the quotient
+    /// overflows (d . n tiny): never NaN, never infinite.
+    pub fn t(&self, ray: &Ray) -> Option<f32> {
+        let denom = ray.direction().dot(self.normal);
+        if denom == 0.0 {
+            return None;
+        }
+        let t = (self.point - ray.origin()).dot(self.normal) / denom;
+        t.is_finite().then_some(t)
+    }
+    // ANCHOR_END: plane_t
+
+    // ANCHOR: plane_hit
+    /// The crossing with `t_min < t < t_max`, if any.
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let t = self.t(ray).filter(|&t| in_open_range(t, t_min, t_max))?;
+        Some(Hit::new(ray, t, ray.at(t), self.normal))
+    }
+    // ANCHOR_END: plane_hit
+}

@@ -1,0 +1,112 @@
+//! Ray / sphere: the quadratic |o + t d - c|^2 = r^2, solved two ways.
+//!
+//! With f = o - c the equation is a t^2 + b t + c' = 0 where a = d . d, b = 2 f . d
+//! and c' = f . f - r^2. The textbook solves it as printed; the stable form avoids the
+//! two cancellations that break it (STABILITY S1, S2).
+
+use glam::Vec3;
+
+use crate::error::{Result, finite3, positive};
+use crate::ray::Ray;
+use crate::shapes::{Hit, in_open_range};
+
+/// A sphere with centre `c` and radius `r > 0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    centre: Vec3,
+    radius: f32,
+}
+
+impl Sphere {
+    /// A sphere around `centre`; rejects a non-finite centre and a radius that is not
+    /// finite and strictly positive.
+    pub fn new(centre: Vec3, radius: f32) -> Result<Sphere> {
+        Ok(Sphere {
+            centre: finite3("centre", centre)?,
+            radius: positive("radius", radius)?,
+        })
+    }
+
+    /// The centre `c`.
+    pub fn centre(&self) -> Vec3 {
+        self.centre
+    }
+
+    /// The radius `r`.
+    pub fn radius(&self) -> f32 {
+        self.radius
+    }
+
+    // ANCHOR: roots_textbook
+    /// Both roots, ascending, by the school formula t = (-b +- sqrt(b^2 - 4ac)) / 2a.
+    ///
+    /// For a small sphere far away b^2 and 4ac are both about 4 D^2 and their
+    /// difference, of order r^2, is lost to rounding: at D/r = 1e3 in f32 a few percent
+    /// of hit/miss answers are wrong (STABILITY S1). Kept to show that failure.
+    pub fn roots_textbook(&self, ray: &Ray) -> Option<(f32, f32)> {
+        let f = ray.origin() - self.centre;
+        let d = ray.direction();
+        let a = d.dot(d);
+        let b = 2.0 * f.dot(d);
+        let c = f.dot(f) - self.radius * self.radius;
+        let disc = b * b - 4.0 * a * c;
+        if disc.is_nan() || disc < 0.0 {
+            return None;
+        }
+        let s = disc.sqrt();
+        finite_pair((-b - s) / (2.0 * a), (-b + s) / (2.0 * a))
+    }
+    // ANCHOR_END: roots_textbook
+
+    // ANCHOR: roots_stable
+    /// Both roots, ascending, computed so that neither cancels.
+    ///
+    /// Discriminant (Hearn-Baker form, Ray Tracing Gems ch. 7): with l = f - (f.d / a) d,
+    /// the vector from the centre to the point of the line nearest it,
+    /// b^2 - 4ac = 4a (r^2 - |l|^2); for a unit d this is 4 (r^2 - |f - (f.d) d|^2).
+    /// Roots (Numerical Recipes 5.6): q = -(b + sign(b) sqrt(disc)) / 2 with
+    /// sign(0) = +1, then t = c/q and q/a; no root subtracts nearly equal numbers.
+    pub fn roots_stable(&self, ray: &Ray) -> Option<(f32, f32)> {
+        let f = ray.origin() - self.centre;
+        let d = ray.direction();
+        let a = d.dot(d);
+        let half_b = f.dot(d);
+        let c = f.dot(f) - self.radius * self.radius;
+        let l = f - (half_b / a) * d;
+        let delta = self.radius * self.radius - l.dot(l);
+        if delta.is_nan() || delta < 0.0 {
+            return None;
+        }
+        // q = -(b + sign(b) sqrt(4 a delta)) / 2 with b = 2 half_b.
+        let sign = if half_b >= 0.0 { 1.0 } else { -1.0 };
+        let q = -(half_b + sign * (a * delta).sqrt());
+        if q == 0.0 {
+            // b = 0 and disc = 0: a double root at -b / 2a = 0.
+            return Some((0.0, 0.0));
+        }
+        finite_pair(c / q, q / a)
+    }
+    // ANCHOR_END: roots_stable
+
+    // ANCHOR: sphere_hit
+    /// The nearest crossing with `t_min < t < t_max`, using [`Sphere::roots_stable`].
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let (t0, t1) = self.roots_stable(ray)?;
+        let t = [t0, t1]
+            .into_iter()
+            .find(|&t| in_open_range(t, t_min, t_max))?;
+        let point = ray.at(t);
+        let normal = ((point - self.centre) / self.radius).normalize_or(-ray.direction());
+        Some(Hit::new(ray, t, point, normal))
+    }
+    // ANCHOR_END: sphere_hit
+}
+
+/// `(t0, t1)` in ascending order, or `None` if either overflowed or is NaN.
+fn finite_pair(t0: f32, t1: f32) -> Option<(f32, f32)> {
+    if t0.is_finite() && t1.is_finite() {
+        Some((t0.min(t1), t0.max(t1)))
+    } else {
+        None
+    }
+}

@@ -1,0 +1,167 @@
+//! Ray / triangle: Moller-Trumbore (JGT 1997) and the watertight test of Woop,
+//! Benthin and Wald (JCGT 2013).
+
+use glam::{DVec3, Vec3};
+
+use crate::error::{Error, Result, finite3};
+use crate::ray::Ray;
+use crate::shapes::{Hit, in_open_range};
+
+/// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
+/// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Triangle {
+    v0: Vec3,
+    v1: Vec3,
+    v2: Vec3,
+}
+
+impl Triangle {
+    /// The triangle `v0, v1, v2`.
+    ///
+    /// Rejects non-finite corners, and a degenerate triangle (zero area: the cross
+    /// product of two edges is zero, or too small to normalise) with
+    /// [`Error::NotPositive`] naming `area`.
+    pub fn new(v0: Vec3, v1: Vec3, v2: Vec3) -> Result<Triangle> {
+        let tri = Triangle {
+            v0: finite3("v0", v0)?,
+            v1: finite3("v1", v1)?,
+            v2: finite3("v2", v2)?,
+        };
+        let cross = (v1 - v0).cross(v2 - v0);
+        if cross.normalize_or_zero() == Vec3::ZERO {
+            let area = 0.5 * cross.length();
+            let value = if area.is_finite() { area } else { 0.0 };
+            return Err(Error::NotPositive {
+                param: "area",
+                value,
+            });
+        }
+        Ok(tri)
+    }
+
+    /// The three corners.
+    pub fn vertices(&self) -> [Vec3; 3] {
+        [self.v0, self.v1, self.v2]
+    }
+
+    /// The unit geometric normal, normalize((v1 - v0) x (v2 - v0)).
+    pub fn normal(&self) -> Vec3 {
+        (self.v1 - self.v0)
+            .cross(self.v2 - self.v0)
+            .normalize_or(Vec3::Z)
+    }
+
+    // ANCHOR: moller_trumbore
+    /// Moller and Trumbore (JGT 1997): solve o + t d = (1 - b1 - b2) v0 + b1 v1 + b2 v2
+    /// by Cramer's rule. With e1 = v1 - v0, e2 = v2 - v0, p = d x e2, s = o - v0 and
+    /// q = s x e1: det = e1 . p, b1 = s . p / det, b2 = d . q / det, t = e2 . q / det.
+    ///
+    /// Returns `(t, b1, b2)` for a hit with `t_min < t < t_max`. Fast, but b1 and b2
+    /// of two triangles sharing an edge are rounded separately, so a ray aimed exactly
+    /// at the edge or a vertex can slip between them (STABILITY S4, S5).
+    pub fn moller_trumbore(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32, f32)> {
+        let (o, d) = (ray.origin(), ray.direction());
+        let (e1, e2) = (self.v1 - self.v0, self.v2 - self.v0);
+        let p = d.cross(e2);
+        let det = e1.dot(p);
+        if det == 0.0 {
+            return None; // the ray is parallel to the plane
+        }
+        let inv = 1.0 / det;
+        let s = o - self.v0;
+        let b1 = s.dot(p) * inv;
+        if !(0.0..=1.0).contains(&b1) {
+            return None; // also catches NaN
+        }
+        let q = s.cross(e1);
+        let b2 = d.dot(q) * inv;
+        if !(b2 >= 0.0 && b1 + b2 <= 1.0) {
+            return None;
+        }
+        let t = e2.dot(q) * inv;
+        in_open_range(t, t_min, t_max).then_some((t, b1, b2))
+    }
+    // ANCHOR_END: moller_trumbore
+
+    // ANCHOR: watertight
+    /// The watertight test of Woop, Benthin and Wald (JCGT 2013), as in pbrt-v3/v4.
+    ///
+    /// Translate the vertices so the ray starts at the origin, permute the axes so the
+    /// largest component of d is z, and shear so d becomes (0, 0, 1): the ray is now
+    /// the z axis and the test is 2-D. The edge functions
+    /// e0 = p1.x p2.y - p1.y p2.x (and cyclically) are the same numbers, bit for bit,
+    /// for the two triangles sharing an edge, so no ray slips between them; when one
+    /// is exactly 0 it is recomputed in f64 so that its sign is right. A hit needs all
+    /// three of one sign; then b_i = e_i / (e0 + e1 + e2) and t interpolates the
+    /// sheared z.
+    ///
+    /// Returns `(t, b0, b1, b2)` for a hit with `t_min < t < t_max`.
+    pub fn watertight(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32, f32, f32)> {
+        let (o, d) = (ray.origin(), ray.direction());
+        let (kx, ky, kz) = permutation(d);
+        let d = permute(d, kx, ky, kz);
+        let shear = Vec3::new(-d.x / d.z, -d.y / d.z, 1.0 / d.z);
+        let [p0, p1, p2] =
+            [self.v0, self.v1, self.v2].map(|v| sheared(permute(v - o, kx, ky, kz), shear));
+        let mut e = [edge(p1, p2), edge(p2, p0), edge(p0, p1)];
+        if e.contains(&0.0) {
+            e = [edge_f64(p1, p2), edge_f64(p2, p0), edge_f64(p0, p1)];
+        }
+        let any_negative = e.iter().any(|&x| x < 0.0);
+        let any_positive = e.iter().any(|&x| x > 0.0);
+        let det = e[0] + e[1] + e[2];
+        if (any_negative && any_positive) || det == 0.0 {
+            return None;
+        }
+        let z = [p0.z, p1.z, p2.z].map(|z| z * shear.z);
+        let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
+        let inv = 1.0 / det;
+        let (t, b) = (t_scaled * inv, e.map(|x| x * inv));
+        let finite = b.iter().all(|x| x.is_finite());
+        (finite && in_open_range(t, t_min, t_max)).then_some((t, b[0], b[1], b[2]))
+    }
+    // ANCHOR_END: watertight
+
+    // ANCHOR: triangle_hit
+    /// The crossing with `t_min < t < t_max`, by [`Triangle::watertight`].
+    ///
+    /// The point is b0 v0 + b1 v1 + b2 v2, not o + t d: far from the origin the
+    /// barycentric point stays on the triangle's plane, o + t d does not (STABILITY S7).
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let (t, b0, b1, b2) = self.watertight(ray, t_min, t_max)?;
+        let point = b0 * self.v0 + b1 * self.v1 + b2 * self.v2;
+        Some(Hit::new(ray, t, point, self.normal()))
+    }
+    // ANCHOR_END: triangle_hit
+}
+
+/// The axis indices (kx, ky, kz) with kz the largest |d| component, kx and ky the next
+/// two cyclically (which keeps the handedness, so the sign of det is kept too).
+fn permutation(d: Vec3) -> (usize, usize, usize) {
+    let kz = d.abs().max_position();
+    let kx = (kz + 1) % 3;
+    (kx, (kx + 1) % 3, kz)
+}
+
+/// (v[kx], v[ky], v[kz]).
+fn permute(v: Vec3, kx: usize, ky: usize, kz: usize) -> Vec3 {
+    Vec3::new(v[kx], v[ky], v[kz])
+}
+
+/// The shear that takes the permuted direction to the z axis: x += s_x z, y += s_y z;
+/// z is left alone here and scaled by s_z only when t is computed.
+fn sheared(p: Vec3, shear: Vec3) -> Vec3 {
+    Vec3::new(p.x + shear.x * p.z, p.y + shear.y * p.z, p.z)
+}
+
+/// The 2-D edge function a.x b.y - a.y b.x in f32.
+fn edge(a: Vec3, b: Vec3) -> f32 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The same edge function in f64, where the product of two f32 is exact.
+fn edge_f64(a: Vec3, b: Vec3) -> f32 {
+    let (a, b): (DVec3, DVec3) = (a.as_dvec3(), b.as_dvec3());
+    (a.x * b.y - a.y * b.x) as f32
+}

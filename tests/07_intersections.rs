@@ -1,0 +1,754 @@
+//! Lesson 07: ray / primitive intersection, and where the naive methods fail
+//! (STABILITY S1, S2, S4 to S8).
+//!
+//! Expected values are worked out by hand (or in f64 from the same f32 inputs), not
+//! by the code under test. Failure rates are measured, never hard-coded: the tests
+//! assert that the naive method is wrong often and the robust one (almost) never.
+
+use glam::{DVec3, Vec3};
+use proptest::prelude::*;
+use render_lessons::Error;
+use render_lessons::ray::Ray;
+use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
+
+fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
+    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
+}
+
+fn unit_sphere() -> Sphere {
+    Sphere::new(Vec3::ZERO, 1.0).unwrap()
+}
+
+/// A pair of roots, or the entry and exit of a slab interval; `None` for a miss.
+type Interval = Option<(f32, f32)>;
+
+fn close(a: (f32, f32), b: (f32, f32), tol: f32) -> bool {
+    (a.0 - b.0).abs() <= tol && (a.1 - b.1).abs() <= tol
+}
+
+// ---------------------------------------------------------------- sphere
+
+#[test]
+fn sphere_known_answers_both_root_finders() {
+    let s = unit_sphere();
+    let cases: [([f32; 3], Interval); 4] = [
+        // Straight through: |z| = 1 at z = -5 + t, so t = 4 and 6.
+        ([0.0, 0.0, -5.0], Some((4.0, 6.0))),
+        // Tangent at (0, 1, 0): a double root at t = 5.
+        ([0.0, 1.0, -5.0], Some((5.0, 5.0))),
+        // Passes at distance 2: misses.
+        ([0.0, 2.0, -5.0], None),
+        // From the centre: one root behind, one ahead.
+        ([0.0, 0.0, 0.0], Some((-1.0, 1.0))),
+    ];
+    for (o, expected) in cases {
+        let r = ray(o, [0.0, 0.0, 1.0]);
+        for (name, got) in [
+            ("textbook", s.roots_textbook(&r)),
+            ("stable", s.roots_stable(&r)),
+        ] {
+            match (got, expected) {
+                (Some(g), Some(e)) => assert!(close(g, e, 1e-6), "{name} {o:?}: {g:?} vs {e:?}"),
+                (None, None) => {}
+                _ => panic!("{name} {o:?}: got {got:?}, expected {expected:?}"),
+            }
+        }
+    }
+}
+
+#[test]
+fn sphere_hit_nearest_in_range_and_normal() {
+    let s = unit_sphere();
+    let h = s
+        .hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert_eq!(h.t, 4.0);
+    assert_eq!(h.point, Vec3::new(0.0, 0.0, -1.0));
+    assert_eq!(h.normal, Vec3::new(0.0, 0.0, -1.0));
+    assert!(h.front_face);
+    // With t_min past the first root, the exit is the nearest crossing; seen from inside.
+    let h = s
+        .hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), 4.5, 100.0)
+        .unwrap();
+    assert_eq!(h.t, 6.0);
+    assert_eq!(h.normal, Vec3::new(0.0, 0.0, 1.0));
+    assert!(!h.front_face);
+    // t_max before the sphere: no hit.
+    assert!(
+        s.hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), 0.0, 3.0)
+            .is_none()
+    );
+}
+
+#[test]
+fn sphere_behind_the_ray_is_not_hit() {
+    let s = unit_sphere();
+    let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]);
+    let (t0, t1) = s.roots_stable(&r).unwrap();
+    assert!(close((t0, t1), (-6.0, -4.0), 1e-6));
+    assert!(s.hit(&r, 0.0, f32::INFINITY).is_none());
+    assert!(Shape::Sphere(s).hit(&r, 0.0, f32::INFINITY).is_none());
+}
+
+/// Hit/miss disagreements with the f64 reference, for both root finders, and the
+/// median |t - t_ref| / r of the stable near root, over an n x n grid of rays from the
+/// origin aimed over a 2.4 r square around a unit sphere at distance `dist` (S1).
+fn s1_disagreements(dist: f32, n: usize) -> (f64, f64, f64) {
+    let w = Vec3::new(0.3, 0.2, -1.0).normalize();
+    let centre = dist * w;
+    let sphere = Sphere::new(centre, 1.0).unwrap();
+    let u = w.cross(Vec3::Y).normalize();
+    let v = u.cross(w);
+    let (mut textbook_wrong, mut stable_wrong) = (0usize, 0usize);
+    let mut errors = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let su = -1.2 + 2.4 * (i as f32 + 0.5) / n as f32;
+            let sv = -1.2 + 2.4 * (j as f32 + 0.5) / n as f32;
+            let r = Ray::new(Vec3::ZERO, centre + su * u + sv * v).unwrap();
+            let reference = reference_roots(&r, centre, 1.0);
+            textbook_wrong +=
+                usize::from(sphere.roots_textbook(&r).is_some() != reference.is_some());
+            let stable = sphere.roots_stable(&r);
+            stable_wrong += usize::from(stable.is_some() != reference.is_some());
+            if let (Some(s), Some(e)) = (stable, reference) {
+                errors.push((s.0 as f64 - e.0).abs());
+            }
+        }
+    }
+    errors.sort_by(f64::total_cmp);
+    let total = (n * n) as f64;
+    let median = errors.get(errors.len() / 2).copied().unwrap_or(0.0);
+    (
+        textbook_wrong as f64 / total,
+        stable_wrong as f64 / total,
+        median,
+    )
+}
+
+/// The roots for the same f32 inputs, computed in f64 (independent code).
+fn reference_roots(r: &Ray, centre: Vec3, radius: f32) -> Option<(f64, f64)> {
+    let o = r.origin().as_dvec3();
+    let d = r.direction().as_dvec3();
+    let f = o - centre.as_dvec3();
+    let a = d.dot(d);
+    let t_mid = -f.dot(d) / a;
+    let l: DVec3 = f + t_mid * d;
+    let rr = radius as f64 * radius as f64;
+    let h2 = rr - l.dot(l);
+    if h2 < 0.0 {
+        return None;
+    }
+    let h = (h2 / a).sqrt();
+    Some((t_mid - h, t_mid + h))
+}
+
+#[test]
+fn s1_small_sphere_far_away_textbook_fails_stable_holds() {
+    let (tb3, st3, med3) = s1_disagreements(1e3, 100);
+    let (tb4, st4, med4) = s1_disagreements(1e4, 100);
+    eprintln!(
+        "S1 D/r=1e3: textbook wrong {:.3}%, stable wrong {:.3}%, stable median |dt| {med3:.2e}",
+        tb3 * 100.0,
+        st3 * 100.0
+    );
+    eprintln!(
+        "S1 D/r=1e4: textbook wrong {:.3}%, stable wrong {:.3}%, stable median |dt| {med4:.2e}",
+        tb4 * 100.0,
+        st4 * 100.0
+    );
+    assert!(
+        tb3 > 0.01,
+        "textbook should be wrong on > 1% at 1e3, was {tb3}"
+    );
+    assert!(
+        st3 < 1e-4,
+        "stable should be wrong on < 0.01% at 1e3, was {st3}"
+    );
+    assert!(med3 < 1e-3, "stable median error at 1e3: {med3}");
+    assert!(
+        tb4 > 0.2,
+        "textbook should be wrong on > 20% at 1e4, was {tb4}"
+    );
+    assert!(
+        st4 < 5e-3 && st4 * 50.0 < tb4,
+        "stable at 1e4: {st4} vs textbook {tb4}"
+    );
+}
+
+#[test]
+fn s2_origin_at_centre_and_on_surface() {
+    let c = Vec3::new(1.0, 2.0, 3.0);
+    let s = Sphere::new(c, 2.0).unwrap();
+    for d in [[0.0, 0.0, 1.0], [1.0, -2.0, 0.5], [-0.3, 0.0, 0.0]] {
+        // At the centre b = 0 exactly: sign(0) must be +1 or q = 0 and c/q = NaN.
+        let r = Ray::new(c, Vec3::from(d)).unwrap();
+        for roots in [s.roots_stable(&r), s.roots_textbook(&r)] {
+            let (t0, t1) = roots.unwrap();
+            assert!(t0.is_finite() && t1.is_finite());
+            assert!(close((t0, t1), (-2.0, 2.0), 1e-6), "{d:?}: {t0} {t1}");
+        }
+    }
+    let on_surface = Vec3::new(1.0, 2.0, 1.0); // c - 2 z
+    // Towards the centre: 0 and 2r; away from it: -2r and 0.
+    let towards = Ray::new(on_surface, Vec3::Z).unwrap();
+    assert_eq!(s.roots_stable(&towards), Some((0.0, 4.0)));
+    let away = Ray::new(on_surface, -Vec3::Z).unwrap();
+    assert_eq!(s.roots_stable(&away), Some((-4.0, 0.0)));
+    // Tangent at the surface: b = 0 and c = 0, a double root at 0, no NaN.
+    let tangent = Ray::new(on_surface, Vec3::X).unwrap();
+    assert_eq!(s.roots_stable(&tangent), Some((0.0, 0.0)));
+    assert_eq!(s.roots_textbook(&tangent), Some((0.0, 0.0)));
+}
+
+// ---------------------------------------------------------------- plane
+
+#[test]
+fn plane_known_answers() {
+    // The plane x + y + z = 3, through (1, 1, 1).
+    let p = Plane::new(Vec3::ONE, Vec3::ONE).unwrap();
+    // Along +x: x = 3 at t = 3.
+    let h = p
+        .hit(&ray([0.0; 3], [1.0, 0.0, 0.0]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert!((h.t - 3.0).abs() < 1e-6);
+    assert!((h.point - Vec3::new(3.0, 0.0, 0.0)).length() < 1e-6);
+    // Along (1, 1, 0)/sqrt 2: x = y = 1.5, at t = 1.5 sqrt 2 = 3 / sqrt 2.
+    let h = p
+        .hit(&ray([0.0; 3], [1.0, 1.0, 0.0]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert!((h.t - 3.0 / 2f32.sqrt()).abs() < 1e-6);
+    assert!((h.point - Vec3::new(1.5, 1.5, 0.0)).length() < 1e-6);
+    // The origin lies behind the plane (x + y + z = 0 < 3): seen from the back.
+    assert!(!h.front_face);
+    assert!((h.normal - Vec3::ONE.normalize()).length() < 1e-6);
+    // From the front side.
+    let h = p
+        .hit(&ray([5.0; 3], [-1.0; 3]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert!(h.front_face);
+    assert!((h.t - 12.0 / 3f32.sqrt()).abs() < 1e-5); // (15 - 3) / sqrt 3
+}
+
+#[test]
+fn plane_parallel_ray_misses_without_nan() {
+    let p = Plane::new(Vec3::ZERO, Vec3::Y).unwrap();
+    for o in [[0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [3.0, -2.0, 1.0]] {
+        let r = ray(o, [1.0, 0.0, 1.0]);
+        assert_eq!(p.t(&r), None);
+        assert!(p.hit(&r, f32::NEG_INFINITY, f32::INFINITY).is_none());
+    }
+    // Behind the origin: t = -2, outside (0, inf).
+    let r = ray([0.0, 2.0, 0.0], [0.0, 1.0, 0.0]);
+    assert_eq!(p.t(&r), Some(-2.0));
+    assert!(Shape::Plane(p).hit(&r, 0.0, f32::INFINITY).is_none());
+}
+
+// ---------------------------------------------------------------- box (S8)
+
+fn cube() -> Aabb {
+    Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0)).unwrap()
+}
+
+/// A slab test written the naive way round: `t0 = if t0 > t_near { t0 } else { t_near }`
+/// lets a NaN from 0 * inf replace the interval (kept to show the failure).
+fn naive_slab(b: &Aabb, r: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
+    let (mut t0, mut t1) = (t_min, t_max);
+    for i in 0..3 {
+        let inv = 1.0 / r.direction()[i];
+        let a = (b.min()[i] - r.origin()[i]) * inv;
+        let c = (b.max()[i] - r.origin()[i]) * inv;
+        let (near, far) = if a < c { (a, c) } else { (c, a) };
+        t0 = if t0 > near { t0 } else { near };
+        t1 = if t1 < far { t1 } else { far };
+        if t0 > t1 {
+            return None;
+        }
+    }
+    Some((t0, t1))
+}
+
+#[test]
+fn s8_slab_truth_table() {
+    let b = cube();
+    let inf = f32::INFINITY;
+    // (box, origin, direction, expected interval clipped to [0, inf))
+    let flat = Aabb::new(Vec3::new(-1.0, 0.0, -1.0), Vec3::new(1.0, 0.0, 1.0)).unwrap();
+    let table: [(Aabb, [f32; 3], [f32; 3], Interval); 10] = [
+        // In the top face's plane but outside in x: miss.
+        (b, [3.0, 1.0, -5.0], [0.0, 0.0, 1.0], None),
+        // In the plane z = 3, outside: miss.
+        (b, [-5.0, 1.0, 3.0], [1.0, 0.0, 0.0], None),
+        // A box of zero thickness, hit head on at y = 0: t = 1.
+        (flat, [0.5, 1.0, 0.5], [0.0, -1.0, 0.0], Some((1.0, 1.0))),
+        // Origin inside: from 0 to the exit at x = 1.
+        (b, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], Some((0.0, 1.0))),
+        // Box behind the origin: miss.
+        (b, [0.0, 0.0, 5.0], [0.0, 0.0, 1.0], None),
+        // Along the top face's plane, over the face: touches from z = -1 to 1.
+        (b, [0.0, 1.0, -5.0], [0.0, 0.0, 1.0], Some((4.0, 6.0))),
+        // Along an edge (two faces' planes at once).
+        (b, [1.0, 1.0, -5.0], [0.0, 0.0, 1.0], Some((4.0, 6.0))),
+        // Zero components, straight through.
+        (b, [0.5, -0.5, -5.0], [0.0, 0.0, 1.0], Some((4.0, 6.0))),
+        // Negative zero components: 1 / -0 = -inf must work too.
+        (b, [0.5, 0.5, 5.0], [-0.0, -0.0, -1.0], Some((4.0, 6.0))),
+        // Parallel to x, just outside in y: miss.
+        (b, [-5.0, 1.0 + 1e-6, 0.0], [1.0, 0.0, 0.0], None),
+    ];
+    for (bx, o, d, expected) in table {
+        let r = ray(o, d);
+        let got = bx.slab(&r, 0.0, inf);
+        assert_eq!(got, expected, "o = {o:?}, d = {d:?}");
+        let wide = bx.slab_conservative(&r, 0.0, inf);
+        assert_eq!(
+            wide.is_some(),
+            expected.is_some(),
+            "conservative, o = {o:?}"
+        );
+    }
+    // The naive comparison order gets the second case wrong: the NaN from the y slab
+    // (0 * inf) replaces t0, no later comparison can reject it, and the miss becomes
+    // a hit.
+    let r = ray([-5.0, 1.0, 3.0], [1.0, 0.0, 0.0]);
+    assert!(naive_slab(&b, &r, 0.0, inf).is_some());
+    assert!(b.slab(&r, 0.0, inf).is_none());
+}
+
+#[test]
+fn box_hit_normal_is_the_face_axis() {
+    let b = cube();
+    let h = b
+        .hit(&ray([0.2, 0.3, -5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert_eq!(
+        (h.t, h.normal, h.front_face),
+        (4.0, Vec3::new(0.0, 0.0, -1.0), true)
+    );
+    assert_eq!(h.point, Vec3::new(0.2, 0.3, -1.0));
+    // From inside: the exit face, seen from the back.
+    let h = b
+        .hit(&ray([0.0; 3], [-1.0, 0.1, 0.0]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert_eq!(h.normal, Vec3::new(-1.0, 0.0, 0.0));
+    assert!(!h.front_face);
+    assert_eq!(h.point.x, -1.0);
+    // Behind: none.
+    assert!(
+        Shape::Aabb(b)
+            .hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+            .is_none()
+    );
+}
+
+#[test]
+fn gamma_matches_pbrt() {
+    let eps = f32::EPSILON as f64 / 2.0;
+    let g3 = 3.0 * eps / (1.0 - 3.0 * eps);
+    assert!((render_lessons::shapes::aabb::gamma(3) as f64 - g3).abs() < 1e-12);
+}
+
+// ---------------------------------------------------------------- triangle
+
+/// A closed bumpy UV sphere, `n` x `n` segments, vertex radii in [1, 1.5] from a
+/// fixed formula; triangles wound outwards.
+fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
+    let mut vertices = vec![Vec3::new(0.0, 1.3, 0.0)]; // north pole
+    for i in 1..n {
+        let theta = std::f32::consts::PI * i as f32 / n as f32;
+        for j in 0..n {
+            let phi = std::f32::consts::TAU * j as f32 / n as f32;
+            let r = 1.25 + 0.25 * (3.0 * phi + 2.0 * theta).sin() * (5.0 * theta).cos();
+            vertices.push(
+                r * Vec3::new(
+                    theta.sin() * phi.cos(),
+                    theta.cos(),
+                    theta.sin() * phi.sin(),
+                ),
+            );
+        }
+    }
+    vertices.push(Vec3::new(0.0, -1.1, 0.0)); // south pole
+    let south = vertices.len() - 1;
+    let ring = |i: usize, j: usize| 1 + (i - 1) * n + j % n;
+    let mut tris = Vec::new();
+    for j in 0..n {
+        tris.push([0, ring(1, j + 1), ring(1, j)]);
+        tris.push([south, ring(n - 1, j), ring(n - 1, j + 1)]);
+        for i in 1..n - 1 {
+            let (a, b, c, d) = (
+                ring(i, j),
+                ring(i, j + 1),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+            );
+            tris.push([a, b, d]);
+            tris.push([a, d, c]);
+        }
+    }
+    (vertices, tris)
+}
+
+/// How many of the rays from the origin towards `targets` hit no triangle at all, for
+/// Moller-Trumbore and for the watertight test.
+fn leaks(tris: &[Triangle], targets: &[Vec3]) -> (usize, usize) {
+    let (mut mt, mut wt) = (0, 0);
+    for &target in targets {
+        let r = Ray::new(Vec3::ZERO, target).unwrap();
+        mt += usize::from(
+            !tris
+                .iter()
+                .any(|t| t.moller_trumbore(&r, 0.0, f32::INFINITY).is_some()),
+        );
+        wt += usize::from(
+            !tris
+                .iter()
+                .any(|t| t.watertight(&r, 0.0, f32::INFINITY).is_some()),
+        );
+    }
+    (mt, wt)
+}
+
+fn mesh_triangles() -> (Vec<Vec3>, Vec<[usize; 3]>, Vec<Triangle>) {
+    let (vertices, indices) = bumpy_sphere(16);
+    let tris = indices
+        .iter()
+        .map(|&[a, b, c]| Triangle::new(vertices[a], vertices[b], vertices[c]).unwrap())
+        .collect();
+    (vertices, indices, tris)
+}
+
+#[test]
+fn bumpy_sphere_is_closed_and_outward() {
+    let (vertices, indices, tris) = mesh_triangles();
+    assert_eq!(vertices.len(), 2 + 15 * 16);
+    assert_eq!(tris.len(), 2 * 16 * 15);
+    let mut edges = std::collections::HashMap::new();
+    for t in &indices {
+        for k in 0..3 {
+            *edges
+                .entry((t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3])))
+                .or_insert(0) += 1;
+        }
+    }
+    assert!(
+        edges.values().all(|&c| c == 2),
+        "every edge shared by exactly two triangles"
+    );
+    for t in &tris {
+        let centroid = t.vertices().iter().sum::<Vec3>() / 3.0;
+        assert!(t.normal().dot(centroid) > 0.0, "wound outwards");
+    }
+    for v in &vertices {
+        assert!((1.0..=1.5).contains(&v.length()));
+    }
+}
+
+#[test]
+fn s4_s5_watertight_never_leaks_moller_trumbore_does() {
+    let (vertices, indices, tris) = mesh_triangles();
+    let (mt_v, wt_v) = leaks(&tris, &vertices);
+    let mut edges = std::collections::BTreeSet::new();
+    for t in &indices {
+        for k in 0..3 {
+            edges.insert((t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3])));
+        }
+    }
+    let midpoints: Vec<Vec3> = edges
+        .iter()
+        .map(|&(a, b)| (vertices[a] + vertices[b]) * 0.5)
+        .collect();
+    let (mt_e, wt_e) = leaks(&tris, &midpoints);
+    let pct = |k: usize, n: usize| 100.0 * k as f64 / n as f64;
+    eprintln!(
+        "S4 vertices: {} rays, Moller-Trumbore leaks {mt_v} ({:.1}%), watertight {wt_v}",
+        vertices.len(),
+        pct(mt_v, vertices.len())
+    );
+    eprintln!(
+        "S5 edge midpoints: {} rays, Moller-Trumbore leaks {mt_e} ({:.1}%), watertight {wt_e}",
+        midpoints.len(),
+        pct(mt_e, midpoints.len())
+    );
+    assert_eq!(wt_v, 0);
+    assert_eq!(wt_e, 0);
+    assert!(
+        pct(mt_v, vertices.len()) > 1.0,
+        "Moller-Trumbore should leak at vertices"
+    );
+    assert!(
+        pct(mt_e, midpoints.len()) > 1.0,
+        "Moller-Trumbore should leak at edges"
+    );
+}
+
+#[test]
+fn triangle_known_answers() {
+    // The unit right triangle in z = 0, seen from z = 5 looking down -z.
+    let t = Triangle::new(Vec3::ZERO, Vec3::X, Vec3::Y).unwrap();
+    let r = ray([0.25, 0.5, 5.0], [0.0, 0.0, -1.0]);
+    // b1 = x = 0.25, b2 = y = 0.5, b0 = 0.25, t = 5.
+    assert_eq!(
+        t.moller_trumbore(&r, 0.0, f32::INFINITY),
+        Some((5.0, 0.25, 0.5))
+    );
+    assert_eq!(
+        t.watertight(&r, 0.0, f32::INFINITY),
+        Some((5.0, 0.25, 0.25, 0.5))
+    );
+    let h = t.hit(&r, 0.0, f32::INFINITY).unwrap();
+    assert_eq!(h.point, Vec3::new(0.25, 0.5, 0.0));
+    assert_eq!(h.normal, Vec3::Z);
+    assert!(h.front_face);
+    // Outside (x + y > 1), behind, and parallel: misses.
+    let outside = ray([0.75, 0.5, 5.0], [0.0, 0.0, -1.0]);
+    let behind = ray([0.25, 0.5, 5.0], [0.0, 0.0, 1.0]);
+    let parallel = ray([0.25, 0.25, 0.0], [1.0, 0.0, 0.0]);
+    for r in [outside, behind, parallel] {
+        assert!(t.moller_trumbore(&r, 0.0, f32::INFINITY).is_none());
+        assert!(t.watertight(&r, 0.0, f32::INFINITY).is_none());
+        assert!(Shape::Triangle(t).hit(&r, 0.0, f32::INFINITY).is_none());
+    }
+    // From below: back face, normal still +z.
+    let h = t
+        .hit(&ray([0.25, 0.5, -5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+        .unwrap();
+    assert!(!h.front_face);
+    assert_eq!(h.normal, Vec3::Z);
+}
+
+/// A tiny deterministic generator (xorshift), so the tests need no RNG crate.
+struct XorShift(u64);
+
+impl XorShift {
+    fn next_f32(&mut self) -> f32 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+#[test]
+fn s7_barycentric_point_stays_on_the_plane() {
+    // The unit triangle in the plane x + y + z = 1, hit from distance about 1e4.
+    let t = Triangle::new(Vec3::X, Vec3::Y, Vec3::Z).unwrap();
+    let off_plane = |p: Vec3| ((p.x as f64 + p.y as f64 + p.z as f64) - 1.0).abs() / 3f64.sqrt();
+    let mut rng = XorShift(0x9E37_79B9_7F4A_7C15);
+    let (mut bary, mut ray_point) = (Vec::new(), Vec::new());
+    for _ in 0..1000 {
+        let (u, v) = (rng.next_f32(), rng.next_f32());
+        let (u, v) = if u + v > 1.0 {
+            (1.0 - u, 1.0 - v)
+        } else {
+            (u, v)
+        };
+        let aim = (1.0 - u - v) * Vec3::X + u * Vec3::Y + v * Vec3::Z;
+        let dir = Vec3::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, 0.0) + Vec3::ONE;
+        let o = aim + 1e4 * dir.normalize();
+        let r = Ray::new(o, aim - o).unwrap();
+        if let Some(h) = t.hit(&r, 0.0, f32::INFINITY) {
+            bary.push(off_plane(h.point));
+            ray_point.push(off_plane(r.at(h.t)));
+        }
+    }
+    assert!(
+        bary.len() > 900,
+        "most rays aimed inside should hit: {}",
+        bary.len()
+    );
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let (bary_max, ray_max) = (
+        bary.iter().cloned().fold(0.0, f64::max),
+        ray_point.iter().cloned().fold(0.0, f64::max),
+    );
+    let (bary_med, ray_med) = (median(&mut bary), median(&mut ray_point));
+    eprintln!(
+        "S7: barycentric off-plane median {bary_med:.1e} max {bary_max:.1e}; o + t d median {ray_med:.1e} max {ray_max:.1e}"
+    );
+    assert!(
+        bary_max < 1e-6,
+        "barycentric point off the plane by {bary_max}"
+    );
+    assert!(
+        ray_med > 1e-5,
+        "o + t d should be visibly off the plane: {ray_med}"
+    );
+    assert!(ray_med > 100.0 * bary_med.max(1e-9));
+}
+
+#[test]
+fn s6_conservative_box_never_rejects_its_own_triangle() {
+    let mut rng = XorShift(12345);
+    let mut p =
+        || 10.0 * Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - Vec3::splat(5.0);
+    let (mut tested, mut naive_miss, mut conservative_miss) = (0, 0, 0);
+    for _ in 0..20000 {
+        let Ok(t) = Triangle::new(p(), p(), p()) else {
+            continue;
+        };
+        let o = 20.0 * p();
+        let [v0, v1, v2] = t.vertices();
+        let Ok(r) = Ray::new(o, v0 - o) else { continue };
+        if t.watertight(&r, 0.0, f32::INFINITY).is_none() {
+            continue;
+        }
+        let bounds = Aabb::new(v0.min(v1).min(v2), v0.max(v1).max(v2)).unwrap();
+        tested += 1;
+        naive_miss += usize::from(bounds.slab(&r, 0.0, f32::INFINITY).is_none());
+        conservative_miss +=
+            usize::from(bounds.slab_conservative(&r, 0.0, f32::INFINITY).is_none());
+    }
+    eprintln!(
+        "S6: {tested} vertex hits; plain slab rejects {naive_miss}, conservative {conservative_miss}"
+    );
+    assert!(tested > 1000);
+    assert_eq!(conservative_miss, 0);
+    assert!(
+        naive_miss > 0,
+        "plain slab should reject some of its own triangles"
+    );
+}
+
+// ---------------------------------------------------------------- bad input
+
+#[test]
+fn bad_input_names_the_parameter() {
+    for r in [0.0, -1.0] {
+        assert_eq!(
+            Sphere::new(Vec3::ZERO, r),
+            Err(Error::NotPositive {
+                param: "radius",
+                value: r
+            })
+        );
+    }
+    assert_eq!(
+        Sphere::new(Vec3::ZERO, f32::NAN).unwrap_err().param(),
+        "radius"
+    );
+    assert_eq!(Sphere::new(Vec3::NAN, 1.0).unwrap_err().param(), "centre");
+    assert_eq!(
+        Plane::new(Vec3::ZERO, Vec3::ZERO),
+        Err(Error::ZeroLength { param: "normal" })
+    );
+    assert_eq!(
+        Plane::new(Vec3::INFINITY, Vec3::Y).unwrap_err().param(),
+        "point"
+    );
+    assert_eq!(
+        Aabb::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, 1.0, 1.0)),
+        Err(Error::EmptyRange {
+            param: "box",
+            min: 2.0,
+            max: 1.0
+        })
+    );
+    assert_eq!(Aabb::new(Vec3::ZERO, Vec3::NAN).unwrap_err().param(), "max");
+    // Zero thickness is allowed.
+    assert!(Aabb::new(Vec3::ZERO, Vec3::new(1.0, 0.0, 1.0)).is_ok());
+    // Degenerate triangles: collinear, and two equal corners.
+    let collinear = Triangle::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X);
+    assert_eq!(
+        collinear,
+        Err(Error::NotPositive {
+            param: "area",
+            value: 0.0
+        })
+    );
+    assert_eq!(
+        Triangle::new(Vec3::Y, Vec3::Y, Vec3::X)
+            .unwrap_err()
+            .param(),
+        "area"
+    );
+    assert_eq!(
+        Triangle::new(Vec3::ZERO, Vec3::X, Vec3::NAN)
+            .unwrap_err()
+            .param(),
+        "v2"
+    );
+}
+
+// ---------------------------------------------------------------- properties
+
+fn coord() -> impl Strategy<Value = f32> {
+    -50.0f32..50.0
+}
+
+fn point() -> impl Strategy<Value = Vec3> {
+    (coord(), coord(), coord()).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+/// Rays aimed at a random point near the shape, so that many of them hit. Directions
+/// with exact zero components are mixed in on purpose.
+fn aimed_ray() -> impl Strategy<Value = Ray> {
+    (point(), point(), 0u8..8).prop_filter_map("origin != target", |(o, target, zero_mask)| {
+        let mut d = target - o;
+        for i in 0..3 {
+            if zero_mask & (1 << i) != 0 {
+                d[i] = 0.0;
+            }
+        }
+        Ray::new(o, d).ok()
+    })
+}
+
+fn no_nan(h: &render_lessons::shapes::Hit) -> bool {
+    h.t.is_finite() && h.point.is_finite() && h.normal.is_finite()
+}
+
+proptest! {
+    /// Tolerance: 1e-5 times the size of the numbers involved (1 + |o| + |t| + |c|),
+    /// about 100 f32 roundings; a grazing plane hit can lie 1e4 away.
+    #[test]
+    fn hit_points_lie_on_their_surface(
+        r in aimed_ray(),
+        c in point(),
+        radius in 0.1f32..20.0,
+        n in point(),
+        corners in (point(), point(), point()),
+    ) {
+        let scale = |t: f32| 1.0 + r.origin().abs().max_element() + t.abs() + c.abs().max_element();
+        let tol = |t: f32| 1e-5 * scale(t);
+        let sphere = Sphere::new(c, radius).unwrap();
+        for (t0, t1) in [sphere.roots_stable(&r), sphere.roots_textbook(&r)].into_iter().flatten() {
+            prop_assert!(t0.is_finite() && t1.is_finite() && t0 <= t1);
+        }
+        if let Some(h) = sphere.hit(&r, 0.0, f32::INFINITY) {
+            prop_assert!(no_nan(&h));
+            prop_assert!(((h.point - c).length() - radius).abs() < tol(h.t), "sphere {:?}", h);
+            prop_assert!((h.normal.length() - 1.0).abs() < 1e-5);
+        }
+        if let Ok(plane) = Plane::new(c, n)
+            && let Some(h) = plane.hit(&r, 0.0, f32::INFINITY)
+        {
+            prop_assert!(no_nan(&h));
+            prop_assert!((h.point - c).dot(plane.normal()).abs() < tol(h.t), "plane {:?}", h);
+        }
+        let (a, b, e) = corners;
+        let bx = Aabb::new(a.min(b), a.max(b)).unwrap();
+        if let Some((t0, t1)) = bx.slab(&r, 0.0, f32::INFINITY) {
+            prop_assert!(!t0.is_nan() && !t1.is_nan() && t0 <= t1);
+        }
+        if let Some(h) = bx.hit(&r, 0.0, f32::INFINITY) {
+            prop_assert!(no_nan(&h));
+            let inside = h.point.cmpge(bx.min() - tol(h.t)).all() && h.point.cmple(bx.max() + tol(h.t)).all();
+            let on_face = (0..3).any(|i| h.point[i] == bx.min()[i] || h.point[i] == bx.max()[i]);
+            prop_assert!(inside && on_face, "box {:?}", h);
+        }
+        if let Ok(tri) = Triangle::new(a, b, e) {
+            if let Some(h) = tri.hit(&r, 0.0, f32::INFINITY) {
+                prop_assert!(no_nan(&h));
+                prop_assert!((h.point - a).dot(tri.normal()).abs() < tol(h.t), "triangle {:?}", h);
+                prop_assert!((h.point - r.at(h.t)).length() < tol(h.t));
+            }
+            if let Some((t, b1, b2)) = tri.moller_trumbore(&r, 0.0, f32::INFINITY) {
+                prop_assert!(t.is_finite() && b1.is_finite() && b2.is_finite());
+            }
+        }
+    }
+}

@@ -47,6 +47,41 @@ impl Basis {
         }
     }
 
+    // ANCHOR: around
+    /// A right-handed orthonormal basis with `n` (unit) as its third vector w, for
+    /// sampling directions around a surface normal: the branchless construction of
+    /// Duff, Burgess, Christensen, Hery, Kensler, Liani and Villemin, "Building an
+    /// Orthonormal Basis, Revisited", JCGT 6(1), 2017. Accurate for every unit n
+    /// (STABILITY S12).
+    pub fn around(n: Vec3) -> Basis {
+        let sign = 1.0f32.copysign(n.z);
+        let a = -1.0 / (sign + n.z);
+        let b = n.x * n.y * a;
+        let u = Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+        let v = Vec3::new(b, sign + n.y * n.y * a, -n.y);
+        Basis { u, v, w: n }
+    }
+    // ANCHOR_END: around
+
+    /// The same, by Frisvad's earlier method ("Building an Orthonormal Basis from a 3D
+    /// Unit Vector Without Normalization", JGT 2012), kept to show its failure: for n
+    /// close to -Z but not within its 0.9999999 guard, 1/(1 + n.z) loses almost every
+    /// digit and the basis is far from orthonormal (STABILITY S12).
+    pub fn around_frisvad(n: Vec3) -> Basis {
+        if n.z < -0.999_999_9 {
+            return Basis {
+                u: Vec3::new(0.0, -1.0, 0.0),
+                v: Vec3::new(-1.0, 0.0, 0.0),
+                w: n,
+            };
+        }
+        let a = 1.0 / (1.0 + n.z);
+        let b = -n.x * n.y * a;
+        let u = Vec3::new(1.0 - n.x * n.x * a, b, -n.x);
+        let v = Vec3::new(b, 1.0 - n.y * n.y * a, -n.y);
+        Basis { u, v, w: n }
+    }
+
     /// Three vectors the caller has built to be orthonormal (e.g. by cross products).
     pub(crate) fn from_orthonormal(u: Vec3, v: Vec3, w: Vec3) -> Basis {
         Basis { u, v, w }

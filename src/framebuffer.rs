@@ -39,6 +39,18 @@ impl Framebuffer {
         })
     }
 
+    /// A framebuffer from its pixels, row by row from the top.
+    pub fn from_pixels(width: u32, height: u32, pixels: Vec<Vec3>) -> Result<Self> {
+        let fb = Framebuffer::from_fn(width, height, |_, _| Vec3::ZERO)?;
+        if pixels.len() != fb.pixels.len() {
+            return Err(Error::Resolution {
+                param: "pixel count",
+                value: pixels.len().min(u32::MAX as usize) as u32,
+            });
+        }
+        Ok(Framebuffer { pixels, ..fb })
+    }
+
     /// Width in pixels.
     pub fn width(&self) -> u32 {
         self.width

@@ -5,8 +5,8 @@
 //! example (`examples/NN_*.rs`) builds on these modules, and the book includes their
 //! code by anchor.
 //!
-//! Dependencies flow one way: `transform`, `ray`, `basis` -> `camera` -> output
-//! (`framebuffer`, `diagram`).
+//! Dependencies flow one way: `transform`, `ray`, `basis` -> `camera`, `shapes` ->
+//! `scene` -> renderers (`raycast`, `render`) -> output (`framebuffer`, `diagram`).
 
 pub mod basis;
 pub mod camera;
@@ -14,9 +14,14 @@ pub mod diagram;
 pub mod error;
 pub mod framebuffer;
 pub mod lesson;
+pub mod offset;
 pub mod output;
 pub mod ray;
+pub mod raycast;
+pub mod render;
 pub mod report;
+pub mod sampling;
+pub mod scene;
 pub mod shapes;
 pub mod transform;
 

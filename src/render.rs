@@ -1,0 +1,68 @@
+//! Rendering an image: one call of a per-ray function for every pixel, rows in
+//! parallel (rayon), with a progress bar on a terminal (indicatif).
+//!
+//! Each pixel's colour depends only on its own ray, so the image is the same bit for
+//! bit whatever the number of threads.
+
+use glam::Vec3;
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::error::{Error, Result};
+use crate::framebuffer::Framebuffer;
+use crate::ray::Ray;
+
+/// Renders with more pixels than this show a progress bar (when stderr is a terminal).
+pub const PROGRESS_PIXELS: u64 = 1 << 20;
+
+// ANCHOR: render
+/// The image `camera` sees, each pixel coloured by `shade` of its ray through the
+/// pixel centre. `threads` = `None` uses every core.
+pub fn render(
+    camera: &Camera,
+    threads: Option<usize>,
+    shade: impl Fn(&Ray) -> Vec3 + Sync,
+) -> Result<Framebuffer> {
+    let (width, height) = (camera.film().width(), camera.film().height());
+    let progress = progress_bar(u64::from(width) * u64::from(height), height);
+    let row = |y: u32| -> Vec<Vec3> {
+        let colours = (0..width).map(|x| shade(&camera.ray(x, y))).collect();
+        progress.inc(1);
+        colours
+    };
+    let rows: Vec<Vec<Vec3>> = in_pool(threads, || (0..height).into_par_iter().map(row).collect())?;
+    progress.finish_and_clear();
+    Framebuffer::from_pixels(width, height, rows.concat())
+}
+// ANCHOR_END: render
+
+/// Runs `work` on a pool of `threads` threads, or on rayon's global pool.
+pub fn in_pool<T: Send>(threads: Option<usize>, work: impl FnOnce() -> T + Send) -> Result<T> {
+    match threads {
+        None => Ok(work()),
+        Some(n) => {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| Error::Io {
+                    path: "thread pool".into(),
+                    message: e.to_string(),
+                })?;
+            Ok(pool.install(work))
+        }
+    }
+}
+
+/// A bar counting rows, hidden for small images and when stderr is not a terminal
+/// (indicatif hides itself then).
+fn progress_bar(pixels: u64, rows: u32) -> ProgressBar {
+    if pixels <= PROGRESS_PIXELS {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(u64::from(rows));
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left") {
+        bar.set_style(style);
+    }
+    bar
+}

@@ -1,0 +1,254 @@
+//! Lesson 08: ray casting, shading, shadow rays; determinism; STABILITY S13, S14.
+
+#[path = "../examples/08_ray_casting.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use std::path::Path;
+
+use clap::Parser;
+use glam::Vec3;
+use render_lessons::basis::Basis;
+use render_lessons::camera::{Camera, Film, OrthoCamera};
+use render_lessons::offset::{Offset, offset_ray_origin};
+use render_lessons::ray::Ray;
+use render_lessons::raycast::shadowless;
+use render_lessons::render::render;
+use render_lessons::sampling::{cosine_hemisphere, grid};
+use render_lessons::scene::{Object, PointLight, Scene};
+use render_lessons::shapes::{Plane, Shape, Sphere};
+
+fn small_args(extra: &[&str]) -> lesson::Args {
+    let mut argv = vec!["08_ray_casting", "--width", "96", "--height", "54"];
+    argv.extend(extra);
+    lesson::Args::parse_from(argv)
+}
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["08_ray_casting"]);
+    let images = lesson::images(&args).unwrap();
+    insta::assert_snapshot!("numbers", lesson::numbers(&args, &images).unwrap());
+}
+
+#[test]
+fn closest_hit_wins_whatever_the_list_order() {
+    let near = Object {
+        shape: Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0).unwrap()),
+        colour: Vec3::X,
+    };
+    let far = Object {
+        shape: Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -8.0), 1.0).unwrap()),
+        colour: Vec3::Y,
+    };
+    let light = PointLight {
+        position: Vec3::ZERO,
+        intensity: Vec3::ONE,
+    };
+    let ray = Ray::new(Vec3::ZERO, Vec3::NEG_Z).unwrap();
+    for objects in [
+        vec![near.clone(), far.clone()],
+        vec![far.clone(), near.clone()],
+    ] {
+        let scene = Scene::new(objects, Vec3::Z, light).unwrap();
+        let (hit, object) = scene.closest_hit(&ray, 0.0, f32::INFINITY).unwrap();
+        assert_eq!(hit.t, 2.0);
+        assert_eq!(object.colour, Vec3::X);
+        assert_eq!(shadowless(&scene, &ray), Vec3::X);
+    }
+    // A ray that misses everything sees the background.
+    let scene = Scene::new(vec![near, far], Vec3::Z, light).unwrap();
+    assert_eq!(
+        shadowless(&scene, &Ray::new(Vec3::ZERO, Vec3::Y).unwrap()),
+        Vec3::Z
+    );
+}
+
+#[test]
+fn the_same_image_whatever_the_thread_count() {
+    let args = small_args(&[]);
+    let scene = lesson::scene(Vec3::ZERO).unwrap();
+    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let shade = |r: &Ray| render_lessons::raycast::lambert(&scene, r, Offset::Scaled);
+    let one = render(&pinhole, Some(1), shade).unwrap();
+    for threads in [Some(2), Some(3), None] {
+        assert_eq!(
+            render(&pinhole, threads, shade).unwrap(),
+            one,
+            "{threads:?} threads"
+        );
+    }
+}
+
+#[test]
+fn the_lambert_image_matches_the_book_within_one_level() {
+    // The committed figure is the reference; a render on this machine may differ from
+    // it by rounding in the last bit, never by more than one 8-bit level per channel.
+    let args = lesson::Args::parse_from(["08_ray_casting"]);
+    let scene = lesson::scene(Vec3::ZERO).unwrap();
+    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let ours = render(&pinhole, None, |r| {
+        render_lessons::raycast::lambert(&scene, r, Offset::Scaled)
+    })
+    .unwrap()
+    .to_srgb8()
+    .unwrap();
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters/figures/08_lambert.png");
+    let reference = image::open(&path).unwrap().to_rgba8().into_raw();
+    assert_eq!(ours.len(), reference.len());
+    let off = ours
+        .chunks(4)
+        .zip(reference.chunks(4))
+        .filter(|(a, b)| a.iter().zip(*b).any(|(x, y)| x.abs_diff(*y) > 1))
+        .count();
+    assert!(
+        off * 1000 <= ours.len() / 4,
+        "{off} pixels differ by more than one level"
+    );
+}
+
+#[test]
+fn every_pixel_is_finite_and_in_range() {
+    let args = small_args(&[]);
+    for (name, image) in lesson::images(&args).unwrap() {
+        for y in 0..image.height() {
+            for x in 0..image.width() {
+                let c = image.get(x, y).unwrap();
+                assert!(
+                    c.is_finite() && c.min_element() >= 0.0,
+                    "{name} ({x}, {y}) = {c}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn orthographic_sees_no_sky_and_pinhole_does() {
+    let args = small_args(&[]);
+    let scene = lesson::scene(Vec3::ZERO).unwrap();
+    let [ortho, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let sky = |camera: &Camera| {
+        render(camera, None, |r| shadowless(&scene, r))
+            .unwrap()
+            .get(0, 0)
+            .unwrap()
+    };
+    assert_ne!(
+        sky(&ortho),
+        scene.background(),
+        "parallel rays tilted down all reach the floor"
+    );
+    assert_eq!(
+        sky(&pinhole),
+        scene.background(),
+        "the pinhole's top rows look over the horizon"
+    );
+}
+
+/// Bounce rays from hit points on a unit sphere centred at (x, x/2, x/4): how many hit
+/// the same (convex) sphere again, which no real bounce can do.
+fn self_hits(x: f32, offset: Offset) -> (u32, u32) {
+    let centre = Vec3::new(x, x / 2.0, x / 4.0);
+    let sphere = Sphere::new(centre, 1.0).unwrap();
+    let (mut wrong, mut total) = (0, 0);
+    for (i, aim) in grid(8).enumerate() {
+        // Primary rays from 5 units away, aimed at points spread over the visible cap.
+        let target = centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
+        let origin = centre + Vec3::new(0.3, -0.2, 5.0) + Vec3::splat(i as f32 * 1e-3);
+        let Some(hit) = sphere.hit(
+            &Ray::new(origin, target - origin).unwrap(),
+            0.0,
+            f32::INFINITY,
+        ) else {
+            continue;
+        };
+        let frame = Basis::around(hit.normal);
+        for u in grid(16) {
+            let (start, t_min) = offset.start(hit.point, hit.normal);
+            let bounce = Ray::new(start, frame.to_world(cosine_hemisphere(u))).unwrap();
+            total += 1;
+            if sphere.hit(&bounce, t_min, f32::INFINITY).is_some() {
+                wrong += 1;
+            }
+        }
+    }
+    (wrong, total)
+}
+
+#[test]
+fn s13_fixed_epsilon_self_intersects_far_from_the_origin_scaled_offset_never() {
+    let (near, total) = self_hits(1.0, Offset::Fixed(1e-4));
+    assert_eq!(near, 0, "near the origin 1e-4 is plenty");
+    let (far, _) = self_hits(1e4, Offset::Fixed(1e-4));
+    assert!(
+        far * 20 > total,
+        "at 1e4, more than 5% of bounces hit their own sphere: {far}/{total}"
+    );
+    for x in [1.0, 1e2, 1e3, 1e4, 1e5] {
+        assert_eq!(self_hits(x, Offset::Scaled).0, 0, "scaled offset at {x}");
+    }
+    eprintln!("S13: fixed 1e-4 at 1e4: {far}/{total} bounce rays hit their own sphere");
+}
+
+#[test]
+fn s14_a_thin_gap_still_casts_a_shadow() {
+    // A floor y = 0, and an occluder parallel to it at a gap of 5e-5, near |p| = 1;
+    // the light straight above. The shadow ray must stop at the occluder.
+    let floor = Plane::new(Vec3::ZERO, Vec3::Y).unwrap();
+    let occluder = Plane::new(Vec3::new(0.0, 5e-5, 0.0), Vec3::Y).unwrap();
+    let p = Vec3::new(0.6, 0.0, 0.8);
+    let hit = floor
+        .hit(
+            &Ray::new(p - Vec3::new(0.0, -2.0, 0.0) + Vec3::Y, Vec3::NEG_Y).unwrap(),
+            0.0,
+            10.0,
+        )
+        .unwrap();
+    let blocked = |offset: Offset| {
+        let (start, t_min) = offset.start(hit.point, Vec3::Y);
+        let shadow_ray = Ray::new(start, Vec3::Y).unwrap();
+        occluder.hit(&shadow_ray, t_min, 10.0).is_some()
+    };
+    assert!(
+        !blocked(Offset::Fixed(1e-4)),
+        "a fixed 1e-4 jumps over the occluder: light leaks"
+    );
+    assert!(
+        blocked(Offset::Scaled),
+        "the scaled offset is far smaller than the gap"
+    );
+    assert!((offset_ray_origin(hit.point, Vec3::Y) - hit.point).length() < 5e-5);
+}
+
+#[test]
+fn ray_casting_an_orthographic_disc() {
+    // Independent check of the whole loop: a sphere of radius 1 seen orthographically
+    // covers pi r^2 of the plane; with 200 x 200 pixels over [-2, 2]^2 that is
+    // pi / 16 of the pixels, up to the pixels cut by the silhouette.
+    let film = Film::new(200, 200, (-2.0, 2.0), (-2.0, 2.0)).unwrap();
+    let camera: Camera = OrthoCamera::at_origin(film).into();
+    let sphere = Object {
+        shape: Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0).unwrap()),
+        colour: Vec3::ONE,
+    };
+    let scene = Scene::new(
+        vec![sphere],
+        Vec3::ZERO,
+        PointLight {
+            position: Vec3::ZERO,
+            intensity: Vec3::ONE,
+        },
+    )
+    .unwrap();
+    let image = render(&camera, None, |r| shadowless(&scene, r)).unwrap();
+    let covered = (0..200)
+        .flat_map(|y| (0..200).map(move |x| (x, y)))
+        .filter(|&(x, y)| image.get(x, y) == Some(Vec3::ONE))
+        .count();
+    let expected = std::f64::consts::PI / 16.0 * 40000.0;
+    assert!(
+        (covered as f64 - expected).abs() < 2.0 * std::f64::consts::PI * 50.0,
+        "{covered} vs {expected}"
+    );
+}

@@ -27,6 +27,8 @@ pub enum Error {
     },
     /// Three vectors that should form an orthonormal basis do not.
     NotOrthonormal { param: &'static str, error: f32 },
+    /// A matrix that must be symmetric is not (relative asymmetry `error`).
+    NotSymmetric { param: &'static str, error: f32 },
     /// A matrix has no inverse.
     Singular { param: &'static str },
     /// A pixel holds NaN or infinity and must not be written to an image.
@@ -48,6 +50,7 @@ impl Error {
             | Error::Resolution { param, .. }
             | Error::EmptyRange { param, .. }
             | Error::NotOrthonormal { param, .. }
+            | Error::NotSymmetric { param, .. }
             | Error::Singular { param } => param,
             Error::UpParallelToDirection => "up",
             Error::NonFinitePixel { .. } => "pixel",
@@ -78,6 +81,12 @@ impl fmt::Display for Error {
             }
             Error::NotOrthonormal { param, error } => {
                 write!(f, "{param} is not orthonormal (error {error:e})")
+            }
+            Error::NotSymmetric { param, error } => {
+                write!(
+                    f,
+                    "{param} must be symmetric (relative asymmetry {error:e})"
+                )
             }
             Error::Singular { param } => write!(f, "{param} is singular: it has no inverse"),
             Error::NonFinitePixel { x, y } => {

@@ -5,6 +5,11 @@
 //! by the code under test. Failure rates are measured, never hard-coded: the tests
 //! assert that the naive method is wrong often and the robust one (almost) never.
 
+mod common;
+#[path = "../examples/07_intersections.rs"]
+#[allow(dead_code)]
+mod lesson;
+
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
@@ -750,5 +755,49 @@ proptest! {
                 prop_assert!(t.is_finite() && b1.is_finite() && b2.is_finite());
             }
         }
+    }
+}
+
+#[test]
+fn numbers() {
+    insta::assert_snapshot!("numbers", lesson::numbers().unwrap());
+}
+
+#[test]
+fn lesson_crossings_lie_on_their_surfaces() {
+    // Each crossing the lesson lists, put back into r(t), is on the surface: checked
+    // with each shape's own implicit equation, written here independently.
+    for case in lesson::cases().unwrap() {
+        for t in lesson::crossings(&case.shape, &case.ray) {
+            let p = case.ray.at(t);
+            let residual = match case.name {
+                "sphere" => p.length() - 1.0,
+                "plane" => {
+                    (p - Vec3::new(0.0, -0.5, 0.0)).dot(Vec3::new(1.0, 2.0, 0.0).normalize())
+                }
+                "box" => p.abs().max_element() - 1.0,
+                "triangle" => p.x - 1.0,
+                "paraboloid" => p.x * p.x + p.y * p.y - p.z,
+                other => panic!("unknown case {other}"),
+            };
+            assert!(
+                residual.abs() < 1e-5,
+                "{}: t = {t}, residual {residual}",
+                case.name
+            );
+        }
+    }
+}
+
+#[test]
+fn figures_draw() {
+    for case in lesson::cases().unwrap() {
+        let rgba = lesson::figure(&case).unwrap().rgba();
+        assert!(common::blue_pixels(&rgba) > 200, "{}: the ray", case.name);
+        assert!(
+            common::red_pixels(&rgba) > 200,
+            "{}: the surface and hits",
+            case.name
+        );
     }
 }

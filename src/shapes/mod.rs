@@ -1,4 +1,4 @@
-//! Ray / primitive intersection (Lecture 7): sphere, plane, axis-aligned box and
+//! Ray / primitive intersection (Lecture 4): sphere, plane, axis-aligned box and
 //! triangle, each in its own file, each with the naive method next to the robust one
 //! (STABILITY cases S1, S2, S4 to S8).
 //!
@@ -11,12 +11,16 @@ use glam::Vec3;
 use crate::ray::Ray;
 
 pub mod aabb;
+pub mod instance;
 pub mod plane;
+pub mod quadric;
 pub mod sphere;
 pub mod triangle;
 
 pub use aabb::Aabb;
+pub use instance::Instance;
 pub use plane::Plane;
+pub use quadric::Quadric;
 pub use sphere::Sphere;
 pub use triangle::Triangle;
 
@@ -52,12 +56,16 @@ pub(crate) fn in_open_range(t: f32, t_min: f32, t_max: f32) -> bool {
 }
 
 /// One primitive of a scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Not `Copy`: an [`Instance`] owns the shape it places, behind a `Box`.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     Sphere(Sphere),
     Plane(Plane),
     Aabb(Aabb),
     Triangle(Triangle),
+    Quadric(Quadric),
+    Instance(Box<Instance>),
 }
 
 impl Shape {
@@ -68,6 +76,8 @@ impl Shape {
             Shape::Plane(p) => p.hit(ray, t_min, t_max),
             Shape::Aabb(b) => b.hit(ray, t_min, t_max),
             Shape::Triangle(tri) => tri.hit(ray, t_min, t_max),
+            Shape::Quadric(q) => q.hit(ray, t_min, t_max),
+            Shape::Instance(i) => i.hit(ray, t_min, t_max),
         }
     }
 }

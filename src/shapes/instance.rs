@@ -1,0 +1,97 @@
+//! Instancing: a shape defined in its own object space, placed in the world by a
+//! lesson-01 [`Transform`] M (object to world).
+//!
+//! Rather than transform the shape (a transformed sphere is no longer a sphere), the
+//! ray is brought into object space by M^-1, intersected there, and the hit taken
+//! back to the world: the point by M, the normal by the inverse transpose M^-T
+//! (pbrt-v4, "Applying Transformations": normals). One routine per primitive then
+//! serves every placement, scale and shear of it.
+
+use glam::{Mat4, Vec3};
+
+use crate::error::{Error, Result};
+use crate::ray::Ray;
+use crate::shapes::{Hit, Shape};
+use crate::transform::Transform;
+
+/// A [`Shape`] placed in the world by `to_world`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instance {
+    shape: Shape,
+    to_world: Transform,
+    to_object: Transform,
+    /// (M^-1)^T: what [`Transform::normal`] applies, computed once instead of per hit.
+    normal_matrix: Mat4,
+}
+
+impl Instance {
+    /// `shape` placed by the object-to-world transform `to_world`.
+    ///
+    /// The inverse is computed here, once; a singular `to_world` (e.g. a scale by 0)
+    /// has none and is rejected with [`Error::Singular`] naming `to_world`.
+    pub fn new(shape: Shape, to_world: Transform) -> Result<Instance> {
+        let to_object = to_world
+            .inverse()
+            .map_err(|_| Error::Singular { param: "to_world" })?;
+        Ok(Instance {
+            shape,
+            to_world,
+            to_object,
+            normal_matrix: to_object.matrix().transpose(),
+        })
+    }
+
+    /// The shape, in object space.
+    pub fn shape(&self) -> &Shape {
+        &self.shape
+    }
+
+    /// The object-to-world transform M.
+    pub fn to_world(&self) -> Transform {
+        self.to_world
+    }
+
+    /// The world-to-object transform M^-1.
+    pub fn to_object(&self) -> Transform {
+        self.to_object
+    }
+
+    // ANCHOR: instance_hit
+    /// The nearest crossing with `t_min < t < t_max`, `t` measured along the world ray.
+    ///
+    /// Object-space ray: origin o' = M^-1 o (a point), direction d' = M^-1 d (a
+    /// vector). Because M^-1 is affine, M^-1 (o + t d) = o' + t d': with d' left as it
+    /// is, every point has the same `t` in both spaces, and the hit's `t` could be
+    /// returned unchanged. But d' is not of unit length under a scale, and [`Ray`]
+    /// always holds a unit direction (its `t` is a distance). So the object ray uses
+    /// d' / s with s = |d'|, and object-space distances are world `t` times s:
+    /// the range is searched as (t_min s, t_max s) and the hit's `t` divided by s.
+    ///
+    /// The hit point goes back by M as a point; the normal by the inverse transpose
+    /// (M^-1)^T, then is normalised, which keeps it perpendicular to the surface
+    /// under non-uniform scale (M n itself is not). Transforming the normal by
+    /// (M^-1)^T also keeps the side it points to, so `front_face` is recomputed from
+    /// the world ray and agrees with the object-space one.
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let origin = self.to_object.point(ray.origin());
+        let direction = self.to_object.vector(ray.direction());
+        let s = direction.length();
+        let unit = direction.normalize_or_zero();
+        if !origin.is_finite() || unit == Vec3::ZERO || !(s.is_finite() && s > 0.0) {
+            return None;
+        }
+        let object_ray = Ray::from_checked(origin, unit);
+        let local = self.shape.hit(&object_ray, t_min * s, t_max * s)?;
+        let t = local.t / s;
+        let point = self.to_world.point(local.point);
+        let normal = self
+            .normal_matrix
+            .transform_vector3(local.normal)
+            .normalize_or_zero();
+        if !(t.is_finite() && point.is_finite()) || normal == Vec3::ZERO {
+            return None;
+        }
+        Some(Hit::new(ray, t, point, normal))
+    }
+    // ANCHOR_END: instance_hit
+}

@@ -1,0 +1,256 @@
+//! Ray / general quadric: the points x = (x, y, z, 1) with x^T Q x = 0, for a
+//! symmetric 4x4 matrix Q (Haines, "Essential Ray Tracing Algorithms", in Glassner
+//! (ed.), An Introduction to Ray Tracing, 1989, section "Ray/Quadric Intersection").
+//!
+//! One matrix covers ellipsoids, cylinders, cones, paraboloids and hyperboloids.
+//! Along the ray, with the homogeneous origin o = (o, 1) and direction d = (d, 0),
+//! (o + t d)^T Q (o + t d) = a t^2 + b t + c with
+//! a = d^T Q d, b = 2 d^T Q o, c = o^T Q o (Q symmetric, so d^T Q o = o^T Q d).
+//!
+//! Unlike the sphere's, this `a` can be zero: a ray parallel to a paraboloid's or a
+//! cylinder's axis, or to a cone's generator, meets the surface once, and the
+//! quadratic degenerates to the line b t + c = 0. The textbook formula divides by
+//! 2a and fails as a -> 0; the stable form has no special case (STABILITY S9).
+
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::error::{Error, Result, positive};
+use crate::ray::Ray;
+use crate::shapes::{Hit, in_open_range};
+
+/// Largest asymmetry |Q_ij - Q_ji| accepted, relative to the largest |Q_ij|: a few
+/// f32 roundings, so that a matrix computed as M^-T Q M^-1 still passes.
+pub const SYMMETRY_TOLERANCE: f32 = 1e-5;
+
+/// The surface x^T Q x = 0 of a symmetric 4x4 matrix Q in homogeneous coordinates.
+///
+/// Outside is where x^T Q x > 0: the normal (the gradient of x^T Q x) points there.
+/// Negating Q describes the same surface with the other side outside.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quadric {
+    q: Mat4,
+}
+
+/// The real roots of a t^2 + b t + c = 0 that came out finite, ascending.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Roots {
+    /// No real root, no finite one, or a degenerate line (a = b = 0) that lies
+    /// entirely on the surface or entirely off it.
+    None,
+    /// One root: the linear case a = 0 (the other root is at infinity).
+    One(f32),
+    /// Two roots, ascending; equal for a tangent ray.
+    Two(f32, f32),
+}
+
+impl Roots {
+    /// The finite values among `t0` and `t1`, ascending; NaN and infinities dropped.
+    fn finite(t0: f32, t1: f32) -> Roots {
+        match (t0.is_finite(), t1.is_finite()) {
+            (true, true) => Roots::Two(t0.min(t1), t0.max(t1)),
+            (true, false) => Roots::One(t0),
+            (false, true) => Roots::One(t1),
+            (false, false) => Roots::None,
+        }
+    }
+
+    /// The smallest root with `t_min < t < t_max`, if any.
+    pub fn first_in(&self, t_min: f32, t_max: f32) -> Option<f32> {
+        let (t0, t1) = match *self {
+            Roots::None => return None,
+            Roots::One(t) => (t, t),
+            Roots::Two(t0, t1) => (t0, t1),
+        };
+        [t0, t1]
+            .into_iter()
+            .find(|&t| in_open_range(t, t_min, t_max))
+    }
+}
+
+impl Quadric {
+    /// The quadric x^T Q x = 0.
+    ///
+    /// Rejects, naming `Q`: a non-finite entry ([`Error::NotFinite`]); an asymmetry
+    /// max |Q_ij - Q_ji| above [`SYMMETRY_TOLERANCE`] times max |Q_ij| (reported as
+    /// [`Error::NotSymmetric`] with that relative asymmetry as its `error`); and a matrix whose
+    /// quadratic part (upper-left 3x3) and linear part (Q_i3, i < 3) are both zero
+    /// ([`Error::ZeroLength`]): x^T Q x is then the constant Q_33, and its zero set
+    /// is empty or all of space. That includes Q = 0.
+    pub fn new(q: Mat4) -> Result<Quadric> {
+        if !q.is_finite() {
+            return Err(Error::NotFinite { param: "Q" });
+        }
+        let m = q.to_cols_array_2d();
+        let mut scale = 0.0_f32;
+        let mut asym = 0.0_f32;
+        let mut xyz_part = 0.0_f32;
+        for (i, row) in m.iter().enumerate() {
+            for (j, &v) in row.iter().enumerate() {
+                scale = scale.max(v.abs());
+                asym = asym.max((v - m[j][i]).abs());
+                if i < 3 || j < 3 {
+                    xyz_part = xyz_part.max(v.abs());
+                }
+            }
+        }
+        if xyz_part == 0.0 {
+            return Err(Error::ZeroLength { param: "Q" });
+        }
+        // scale > 0 here, since xyz_part > 0.
+        let relative = asym / scale;
+        if relative > SYMMETRY_TOLERANCE {
+            return Err(Error::NotSymmetric {
+                param: "Q",
+                error: relative,
+            });
+        }
+        Ok(Quadric { q })
+    }
+
+    /// The ellipsoid x^2/r_x^2 + y^2/r_y^2 + z^2/r_z^2 = 1 centred at the origin:
+    /// Q = diag(1/r_x^2, 1/r_y^2, 1/r_z^2, -1).
+    ///
+    /// Each radius must be finite and positive, and so must 1/r^2 (no overflow or
+    /// underflow); errors name `radii`.
+    pub fn ellipsoid(radii: Vec3) -> Result<Quadric> {
+        let inv = |r: f32| -> Result<f32> { positive("radii", 1.0 / (positive("radii", r)? * r)) };
+        let (ix, iy, iz) = (inv(radii.x)?, inv(radii.y)?, inv(radii.z)?);
+        Quadric::new(Mat4::from_diagonal(Vec4::new(ix, iy, iz, -1.0)))
+    }
+
+    /// The infinite circular cylinder about the Z axis, x^2 + y^2 = r^2:
+    /// Q = diag(1, 1, 0, -r^2).
+    ///
+    /// `radius` and its square must be finite and positive; errors name `radius`.
+    pub fn cylinder(radius: f32) -> Result<Quadric> {
+        let r2 = positive("radius", positive("radius", radius)? * radius)?;
+        Quadric::new(Mat4::from_diagonal(Vec4::new(1.0, 1.0, 0.0, -r2)))
+    }
+
+    /// The infinite double cone about the Z axis with its apex at the origin,
+    /// x^2 + y^2 = (s z)^2, where the slope s is the radius per unit of height:
+    /// Q = diag(1, 1, -s^2, 0).
+    ///
+    /// `slope` and its square must be finite and positive; errors name `slope`.
+    pub fn cone(slope: f32) -> Result<Quadric> {
+        let s2 = positive("slope", positive("slope", slope)? * slope)?;
+        Quadric::new(Mat4::from_diagonal(Vec4::new(1.0, 1.0, -s2, 0.0)))
+    }
+
+    /// The paraboloid z = x^2 + y^2, a bowl opening towards +Z; x^T Q x = x^2 + y^2 - z
+    /// with Q_00 = Q_11 = 1 and Q_23 = Q_32 = -1/2 (the linear term -z w is split
+    /// between the two symmetric entries).
+    pub fn paraboloid() -> Result<Quadric> {
+        Quadric::new(Mat4::from_cols(
+            Vec4::new(1.0, 0.0, 0.0, 0.0),
+            Vec4::new(0.0, 1.0, 0.0, 0.0),
+            Vec4::new(0.0, 0.0, 0.0, -0.5),
+            Vec4::new(0.0, 0.0, -0.5, 0.0),
+        ))
+    }
+
+    /// The matrix Q.
+    pub fn matrix(&self) -> Mat4 {
+        self.q
+    }
+
+    /// x^T Q x at the point p (x = (p, 1)): zero on the surface, positive outside.
+    pub fn value(&self, p: Vec3) -> f32 {
+        let x = p.extend(1.0);
+        x.dot(self.q * x)
+    }
+
+    /// The gradient of x^T Q x at p: the xyz part of 2 Q x (Q symmetric). Not
+    /// normalised; zero at a cone's apex.
+    pub fn gradient(&self, p: Vec3) -> Vec3 {
+        2.0 * (self.q * p.extend(1.0)).truncate()
+    }
+
+    /// The coefficients (a, b, c) of a t^2 + b t + c along the ray:
+    /// a = d^T Q d, b = 2 d^T Q o, c = o^T Q o.
+    pub fn coefficients(&self, ray: &Ray) -> (f32, f32, f32) {
+        let o = ray.origin().extend(1.0);
+        let d = ray.direction().extend(0.0);
+        let qo = self.q * o;
+        (d.dot(self.q * d), 2.0 * d.dot(qo), o.dot(qo))
+    }
+
+    // ANCHOR: quadric_roots_textbook
+    /// The roots by the school formula t = (-b +- sqrt(b^2 - 4ac)) / 2a, with no
+    /// special case for a = 0.
+    ///
+    /// As a -> 0 (a ray nearly parallel to a paraboloid's axis) one root runs off to
+    /// infinity and the other, the one that matters, is -b + sqrt(b^2 - 4ac) with
+    /// b^2 >> 4ac: two nearly equal numbers subtracted, then divided by the tiny 2a.
+    /// In f32 it is tens of percent off at a ~ 1e-8, garbage or missing below, and at
+    /// a = 0 it is 0/0 and the hit is lost (STABILITY S9). Kept to show that failure.
+    pub fn roots_textbook(&self, ray: &Ray) -> Roots {
+        let (a, b, c) = self.coefficients(ray);
+        let disc = b * b - 4.0 * a * c;
+        if disc.is_nan() || disc < 0.0 {
+            return Roots::None;
+        }
+        let s = disc.sqrt();
+        Roots::finite((-b - s) / (2.0 * a), (-b + s) / (2.0 * a))
+    }
+    // ANCHOR_END: quadric_roots_textbook
+
+    // ANCHOR: quadric_roots_stable
+    /// The roots computed so that neither cancels, and a -> 0 needs no special case.
+    ///
+    /// Roots (Numerical Recipes 5.6): q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2 with
+    /// sign(0) = +1, then t = c/q and t = q/a. The sum b + sign(b) sqrt(..) adds two
+    /// numbers of the same sign, so nothing cancels. As a -> 0, q -> -b and
+    /// c/q -> -c/b, the root of the linear equation b t + c = 0; at a = 0 exactly,
+    /// q/a is infinite and dropped, leaving [`Roots::One`].
+    ///
+    /// The discriminant is formed as a difference of products with one fused
+    /// multiply-add correction (Kahan; pbrt-v4's `DifferenceOfProducts`), accurate to
+    /// a few ulps even when b^2 and 4ac nearly cancel (a grazing ray).
+    ///
+    /// q = 0 means b = 0 and disc = 0: a double root at 0 if a != 0; if a = 0 as well
+    /// the line is on the surface or off it everywhere, and there is no crossing.
+    pub fn roots_stable(&self, ray: &Ray) -> Roots {
+        let (a, b, c) = self.coefficients(ray);
+        let disc = difference_of_products(b, b, 4.0 * a, c);
+        if disc.is_nan() || disc < 0.0 {
+            return Roots::None;
+        }
+        let sign = if b >= 0.0 { 1.0 } else { -1.0 };
+        let q = -0.5 * (b + sign * disc.sqrt());
+        if q == 0.0 {
+            return if a != 0.0 {
+                Roots::Two(0.0, 0.0)
+            } else {
+                Roots::None
+            };
+        }
+        Roots::finite(c / q, q / a)
+    }
+    // ANCHOR_END: quadric_roots_stable
+
+    // ANCHOR: quadric_hit
+    /// The nearest crossing with `t_min < t < t_max`, using [`Quadric::roots_stable`].
+    ///
+    /// The normal is the normalised gradient, the xyz part of 2 Q x: it points to
+    /// where x^T Q x > 0 (outward for the named constructors). Where the gradient
+    /// vanishes (a cone's apex) there is no normal; `-d` stands in for it.
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let t = self.roots_stable(ray).first_in(t_min, t_max)?;
+        let point = ray.at(t);
+        let normal = self.gradient(point).normalize_or(-ray.direction());
+        Some(Hit::new(ray, t, point, normal))
+    }
+    // ANCHOR_END: quadric_hit
+}
+
+/// a b - c d with one rounding error instead of two: the product c d is rounded, its
+/// rounding error recovered exactly with a fused multiply-add and added back
+/// (Kahan, "Further analysis of Kahan's algorithm for the accurate computation of
+/// 2x2 determinants", Jeannerod, Louvet and Muller, Math. Comp. 2013).
+fn difference_of_products(a: f32, b: f32, c: f32, d: f32) -> f32 {
+    let cd = c * d;
+    let err = (-c).mul_add(d, cd);
+    let dop = a.mul_add(b, -cd);
+    dop + err
+}

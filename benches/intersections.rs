@@ -26,8 +26,12 @@ fn bench(c: &mut Criterion) {
     let sphere = Sphere::new(Vec3::ZERO, 1.0).expect("valid sphere");
     let plane = Plane::new(Vec3::ZERO, Vec3::new(0.2, 0.3, 1.0)).expect("valid plane");
     let aabb = Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0)).expect("valid box");
-    let triangle = Triangle::new(Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(0.0, 1.0, 0.2))
-        .expect("valid triangle");
+    let triangle = Triangle::new(
+        Vec3::new(-1.0, -1.0, 0.0),
+        Vec3::new(1.0, -1.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.2),
+    )
+    .expect("valid triangle");
     let quadric = Quadric::ellipsoid(Vec3::new(1.0, 0.8, 0.6)).expect("valid ellipsoid");
     let mut group = c.benchmark_group("intersection (1024 rays per iteration)");
     let n = f32::INFINITY;
@@ -44,18 +48,34 @@ fn bench(c: &mut Criterion) {
             });
         };
     }
-    case!("sphere textbook", |r: &Ray| sphere.roots_textbook(r).is_some());
-    case!("sphere stable (Hearn-Baker)", |r: &Ray| sphere.roots_stable(r).is_some());
+    case!("sphere textbook", |r: &Ray| sphere
+        .roots_textbook(r)
+        .is_some());
+    case!("sphere stable (Hearn-Baker)", |r: &Ray| sphere
+        .roots_stable(r)
+        .is_some());
     case!("sphere hit", |r: &Ray| sphere.hit(r, 0.0, n).is_some());
     case!("plane hit", |r: &Ray| plane.hit(r, 0.0, n).is_some());
     case!("box slab", |r: &Ray| aabb.slab(r, 0.0, n).is_some());
-    case!("box slab conservative", |r: &Ray| aabb.slab_conservative(r, 0.0, n).is_some());
+    case!("box slab conservative", |r: &Ray| aabb
+        .slab_conservative(r, 0.0, n)
+        .is_some());
     case!("box hit", |r: &Ray| aabb.hit(r, 0.0, n).is_some());
-    case!("triangle Moller-Trumbore", |r: &Ray| triangle.moller_trumbore(r, 0.0, n).is_some());
-    case!("triangle watertight", |r: &Ray| triangle.watertight(r, 0.0, n).is_some());
+    case!("triangle Moller-Trumbore", |r: &Ray| triangle
+        .moller_trumbore(r, 0.0, n)
+        .is_some());
+    case!("triangle watertight", |r: &Ray| triangle
+        .watertight(r, 0.0, n)
+        .is_some());
     case!("triangle hit", |r: &Ray| triangle.hit(r, 0.0, n).is_some());
-    case!("quadric textbook", |r: &Ray| quadric.roots_textbook(r).first_in(0.0, n).is_some());
-    case!("quadric stable", |r: &Ray| quadric.roots_stable(r).first_in(0.0, n).is_some());
+    case!("quadric textbook", |r: &Ray| quadric
+        .roots_textbook(r)
+        .first_in(0.0, n)
+        .is_some());
+    case!("quadric stable", |r: &Ray| quadric
+        .roots_stable(r)
+        .first_in(0.0, n)
+        .is_some());
     case!("quadric hit", |r: &Ray| quadric.hit(r, 0.0, n).is_some());
     group.finish();
 }

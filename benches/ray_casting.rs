@@ -26,6 +26,9 @@ fn bench(c: &mut Criterion) {
             b.iter(|| render(&pinhole, Some(threads), |r| shadowless(&scene, r)).expect("render"))
         });
     }
+    group.bench_function("camera rays only, 1 thread", |b| {
+        b.iter(|| render(&pinhole, Some(1), |r| r.direction()).expect("render"))
+    });
     group.finish();
 }
 

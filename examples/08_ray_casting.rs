@@ -210,7 +210,31 @@ pub fn numbers(args: &Args, images: &[(&str, Framebuffer)]) -> Result<String> {
             ]);
         }
     }
-    Ok(format!("{table}\n{acne}"))
+    let mut pixels = Table::new(
+        "A few pixels of the Lambert image (linear RGB), at fractions of the width and height",
+        &["where", "pixel", "colour"],
+    );
+    if let Some(lit) = image("08_lambert.png") {
+        let spots = [
+            ("red sphere, lit side", 0.30, 0.40),
+            ("floor in the red sphere's shadow", 0.16, 0.60),
+            ("floor, lit", 0.85, 0.85),
+            ("sky", 0.50, 0.02),
+        ];
+        for (name, fx, fy) in spots {
+            let (x, y) = (
+                (fx * args.width as f32) as u32,
+                (fy * args.height as f32) as u32,
+            );
+            let colour = lit.get(x, y).unwrap_or(Vec3::ZERO);
+            pixels.row(vec![
+                name.to_string(),
+                format!("({x}, {y})"),
+                vec3(colour, 4),
+            ]);
+        }
+    }
+    Ok(format!("{table}\n{acne}\n{pixels}"))
 }
 
 /// How many pixels differ between two images of the same size by more than `tolerance`

@@ -23,11 +23,7 @@ impl Framebuffer {
         height: u32,
         mut shade: impl FnMut(u32, u32) -> Vec3,
     ) -> Result<Self> {
-        for (param, value) in [("width", width), ("height", height)] {
-            if !(1..=MAX_RESOLUTION).contains(&value) {
-                return Err(Error::Resolution { param, value });
-            }
-        }
+        check_resolution(width, height)?;
         let pixels = (0..height)
             .flat_map(|y| (0..width).map(move |x| (x, y)))
             .map(|(x, y)| shade(x, y))
@@ -41,14 +37,18 @@ impl Framebuffer {
 
     /// A framebuffer from its pixels, row by row from the top.
     pub fn from_pixels(width: u32, height: u32, pixels: Vec<Vec3>) -> Result<Self> {
-        let fb = Framebuffer::from_fn(width, height, |_, _| Vec3::ZERO)?;
-        if pixels.len() != fb.pixels.len() {
+        check_resolution(width, height)?;
+        if pixels.len() != width as usize * height as usize {
             return Err(Error::Resolution {
                 param: "pixel count",
                 value: pixels.len().min(u32::MAX as usize) as u32,
             });
         }
-        Ok(Framebuffer { pixels, ..fb })
+        Ok(Framebuffer {
+            width,
+            height,
+            pixels,
+        })
     }
 
     /// Width in pixels.
@@ -88,6 +88,16 @@ impl Framebuffer {
     pub fn save_png(&self, path: &Path) -> Result<()> {
         write_png_rgba(path, self.width, self.height, &self.to_srgb8()?)
     }
+}
+
+/// `Ok` if both sides are between 1 and [`MAX_RESOLUTION`] pixels.
+fn check_resolution(width: u32, height: u32) -> Result<()> {
+    for (param, value) in [("width", width), ("height", height)] {
+        if !(1..=MAX_RESOLUTION).contains(&value) {
+            return Err(Error::Resolution { param, value });
+        }
+    }
+    Ok(())
 }
 
 /// A linear value in [0, 1] as an 8-bit sRGB code (IEC 61966-2-1 transfer curve).

@@ -26,14 +26,21 @@ pub fn render(
 ) -> Result<Framebuffer> {
     let (width, height) = (camera.film().width(), camera.film().height());
     let progress = progress_bar(u64::from(width) * u64::from(height), height);
-    let row = |y: u32| -> Vec<Vec3> {
-        let colours = (0..width).map(|x| shade(&camera.ray(x, y))).collect();
+    let mut pixels = vec![Vec3::ZERO; width as usize * height as usize];
+    let shade_row = |(y, row): (usize, &mut [Vec3])| {
+        for (x, pixel) in row.iter_mut().enumerate() {
+            *pixel = shade(&camera.ray(x as u32, y as u32));
+        }
         progress.inc(1);
-        colours
     };
-    let rows: Vec<Vec<Vec3>> = in_pool(threads, || (0..height).into_par_iter().map(row).collect())?;
+    in_pool(threads, || {
+        pixels
+            .par_chunks_mut(width as usize)
+            .enumerate()
+            .for_each(shade_row)
+    })?;
     progress.finish_and_clear();
-    Framebuffer::from_pixels(width, height, rows.concat())
+    Framebuffer::from_pixels(width, height, pixels)
 }
 // ANCHOR_END: render
 

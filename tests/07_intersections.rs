@@ -801,3 +801,46 @@ fn figures_draw() {
         );
     }
 }
+
+/// STABILITY S3: smallpt's left wall, a sphere of radius 1e5 centred at
+/// (1e5 + 1, 40.8, 81.6), against the same wall as the plane x = 1. Rays from inside
+/// the room hit the wall; cosine-distributed bounce rays leave the hit point with
+/// smallpt's t > 1e-4. No bounce can hit a flat wall again; how many do?
+fn s3_wall(wall: Shape) -> (u32, u32, f32) {
+    use render_lessons::basis::Basis;
+    use render_lessons::sampling::{cosine_hemisphere, grid};
+    let eye = Vec3::new(50.0, 40.0, 80.0);
+    let (mut self_hits, mut total, mut worst_off_plane) = (0, 0, 0.0f32);
+    for aim in grid(16) {
+        let target = Vec3::new(1.0, 10.0 + 60.0 * aim.x, 20.0 + 120.0 * aim.y);
+        let Some(hit) = wall.hit(&Ray::new(eye, target - eye).unwrap(), 1e-4, f32::INFINITY) else {
+            continue;
+        };
+        worst_off_plane = worst_off_plane.max((hit.point.x - 1.0).abs());
+        let frame = Basis::around(hit.normal);
+        for u in grid(8) {
+            let bounce = Ray::new(hit.point, frame.to_world(cosine_hemisphere(u))).unwrap();
+            total += 1;
+            self_hits += u32::from(wall.hit(&bounce, 1e-4, f32::INFINITY).is_some());
+        }
+    }
+    (self_hits, total, worst_off_plane)
+}
+
+#[test]
+fn s3_a_wall_modelled_as_a_huge_sphere_hits_itself_in_f32_a_plane_does_not() {
+    let sphere = Shape::Sphere(Sphere::new(Vec3::new(1e5 + 1.0, 40.8, 81.6), 1e5).unwrap());
+    let plane = Shape::Plane(Plane::new(Vec3::new(1.0, 0.0, 0.0), Vec3::X).unwrap());
+    let (sphere_hits, total, sphere_off) = s3_wall(sphere);
+    let (plane_hits, _, plane_off) = s3_wall(plane);
+    eprintln!(
+        "S3: sphere wall {sphere_hits}/{total} bounces hit their own wall, hit points up to {sphere_off:.1e} off x = 1; \
+         plane wall {plane_hits}/{total}, up to {plane_off:.1e} off"
+    );
+    assert!(
+        sphere_hits * 10 > total,
+        "more than 10% of bounces hit the sphere wall again"
+    );
+    assert_eq!(plane_hits, 0);
+    assert!(plane_off < 1e-4 && sphere_off > 100.0 * plane_off);
+}

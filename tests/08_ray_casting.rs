@@ -252,3 +252,18 @@ fn ray_casting_an_orthographic_disc() {
         "{covered} vs {expected}"
     );
 }
+
+#[test]
+fn a_point_in_shadow_gets_only_the_ambient_share() {
+    // Pixel (76, 162) of the default image lies in the red sphere's shadow on the floor
+    // (albedo 0.75, 0.75, 0.7): its colour is the albedo times AMBIENT, nothing more.
+    let args = lesson::Args::parse_from(["08_ray_casting"]);
+    let scene = lesson::scene(Vec3::ZERO).unwrap();
+    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let c = render_lessons::raycast::lambert(&scene, &pinhole.ray(76, 162), Offset::Scaled);
+    let expected = Vec3::new(0.75, 0.75, 0.7) * render_lessons::raycast::AMBIENT;
+    assert!(
+        (c - expected).abs().max_element() < 1e-7,
+        "{c} vs {expected}"
+    );
+}

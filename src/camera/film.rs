@@ -42,11 +42,13 @@ impl Film {
     /// `width` x `height` pixels over the plane extents `x` = (x_min, x_max) and
     /// `y` = (y_min, y_max).
     pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Film> {
+        let width = resolution("width", width)?;
+        let height = resolution("height", height)?;
         let (x_min, x_max) = range("x extent", x)?;
         let (y_min, y_max) = range("y extent", y)?;
         Ok(Film {
-            width: resolution("width", width)?,
-            height: resolution("height", height)?,
+            width,
+            height,
             x_min,
             x_max,
             y_min,

@@ -35,6 +35,25 @@ pub enum Error {
     NonFinitePixel { x: u32, y: u32 },
     /// Reading or writing a file failed.
     Io { path: String, message: String },
+    /// Triangle number `triangle` (0-based) refers to vertex `index`, but the mesh
+    /// has only `vertices` vertices.
+    VertexIndex {
+        triangle: usize,
+        index: u32,
+        vertices: usize,
+    },
+    /// A count such as a sphere's number of segments was below its minimum.
+    TooFew {
+        param: &'static str,
+        value: u32,
+        min: u32,
+    },
+    /// An OBJ file could not be turned into a mesh; `line` (1-based) when known.
+    Obj {
+        path: String,
+        line: Option<usize>,
+        message: String,
+    },
 }
 
 /// The crate's result type.
@@ -51,10 +70,12 @@ impl Error {
             | Error::EmptyRange { param, .. }
             | Error::NotOrthonormal { param, .. }
             | Error::NotSymmetric { param, .. }
-            | Error::Singular { param } => param,
+            | Error::Singular { param }
+            | Error::TooFew { param, .. } => param,
             Error::UpParallelToDirection => "up",
             Error::NonFinitePixel { .. } => "pixel",
-            Error::Io { path, .. } => path,
+            Error::Io { path, .. } | Error::Obj { path, .. } => path,
+            Error::VertexIndex { .. } => "triangle",
         }
     }
 }
@@ -96,6 +117,27 @@ impl fmt::Display for Error {
                 )
             }
             Error::Io { path, message } => write!(f, "{path}: {message}"),
+            Error::TooFew { param, value, min } => {
+                write!(f, "{param} must be at least {min} (got {value})")
+            }
+            Error::VertexIndex {
+                triangle,
+                index,
+                vertices,
+            } => write!(
+                f,
+                "triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices"
+            ),
+            Error::Obj {
+                path,
+                line: Some(line),
+                message,
+            } => write!(f, "{path}, line {line}: {message}"),
+            Error::Obj {
+                path,
+                line: None,
+                message,
+            } => write!(f, "{path}: {message}"),
         }
     }
 }

@@ -16,6 +16,7 @@ pub mod framebuffer;
 pub mod lesson;
 pub mod offset;
 pub mod output;
+pub mod raster;
 pub mod ray;
 pub mod raycast;
 pub mod render;

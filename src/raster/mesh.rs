@@ -1,0 +1,271 @@
+//! Modeling (Lecture 2, "Rasterization Pipeline: Modeling"): an object is a vertex
+//! list and a triangle list. Each triangle names three vertices by their index, so a
+//! vertex shared by several triangles is stored (and later transformed and lit) once.
+
+use std::f32::consts::PI;
+use std::path::Path;
+
+use glam::Vec3;
+
+use crate::error::{Error, Result, finite3, positive};
+
+/// The vertex list as the slide prints it (numbers 1 to 4; the slide cuts the list
+/// off after vertex 4 with "⋮").
+pub const LECTURE_VERTICES: [[f32; 3]; 4] = [
+    [5.0, 5.0, 5.0],
+    [5.0, 5.0, 1.0],
+    [9.0, 5.0, 1.0],
+    [9.0, 5.0, 5.0],
+];
+
+/// The triangle list as the slide prints it, with the slide's 1-based vertex numbers
+/// (triangles 1 to 4; the list is cut off with "⋮" too). Triangles 1 and 2 refer to
+/// vertices 5 and 8, which are not shown: they are kept here as data, not invented.
+pub const LECTURE_TRIANGLES: [[u32; 3]; 4] = [[1, 4, 5], [5, 4, 8], [2, 1, 4], [3, 2, 4]];
+
+/// A triangle mesh: positions, one normal per vertex, and triangles of 0-based
+/// vertex indices, counter-clockwise when seen from the outside.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mesh {
+    /// The vertex list.
+    pub positions: Vec<Vec3>,
+    /// One unit normal per vertex (zero where no triangle gives the vertex a direction).
+    pub normals: Vec<Vec3>,
+    /// The triangle list, three 0-based indices into `positions` each.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl Mesh {
+    /// A mesh whose vertex normals are the area-weighted average of the normals of
+    /// the triangles around each vertex.
+    pub fn new(positions: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<Mesh> {
+        check(&positions, &triangles)?;
+        let normals = vertex_normals(&positions, &triangles);
+        Ok(Mesh {
+            positions,
+            normals,
+            triangles,
+        })
+    }
+
+    /// A mesh with normals given per vertex (normalised here; a zero normal stays zero).
+    pub fn with_normals(
+        positions: Vec<Vec3>,
+        normals: Vec<Vec3>,
+        triangles: Vec<[u32; 3]>,
+    ) -> Result<Mesh> {
+        check(&positions, &triangles)?;
+        if normals.len() != positions.len() {
+            return Err(Error::TooFew {
+                param: "normals (one per vertex)",
+                value: normals.len().min(u32::MAX as usize) as u32,
+                min: positions.len().min(u32::MAX as usize) as u32,
+            });
+        }
+        for n in &normals {
+            finite3("normal", *n)?;
+        }
+        Ok(Mesh {
+            positions,
+            normals: normals.iter().map(|n| n.normalize_or_zero()).collect(),
+            triangles,
+        })
+    }
+
+    // ANCHOR: lecture_fixture
+    /// What of the slide's object can be built: its four vertices
+    /// ([`LECTURE_VERTICES`]) and the two triangles that use only them (slide
+    /// triangles 3 and 4, renumbered from 0). Together they are the square y = 5,
+    /// 5 <= x <= 9, 1 <= z <= 5, facing +Y. Triangles 1 and 2 need vertices 5 and 8,
+    /// which the slide does not show, so [`Mesh::new`] refuses the full table.
+    pub fn lecture_fixture() -> Mesh {
+        let positions = LECTURE_VERTICES.iter().map(|&p| Vec3::from(p)).collect();
+        let triangles = LECTURE_TRIANGLES[2..]
+            .iter()
+            .map(|t| t.map(|i| i - 1))
+            .collect();
+        Mesh::new(positions, triangles).unwrap_or_else(|_| unreachable!("fixed data"))
+    }
+    // ANCHOR_END: lecture_fixture
+
+    // ANCHOR: uv_sphere
+    /// A sphere tessellated along `rings` bands of latitude and `segments` slices of
+    /// longitude: a vertex at each pole and (rings - 1) x segments in between, at
+    /// p(theta, phi) = centre + radius (sin theta cos phi, cos theta, sin theta sin phi),
+    /// theta = pi i / rings, phi = 2 pi j / segments. Vertices are shared (the mesh is
+    /// closed) and every triangle winds counter-clockwise seen from outside.
+    pub fn uv_sphere(centre: Vec3, radius: f32, segments: u32, rings: u32) -> Result<Mesh> {
+        let centre = finite3("centre", centre)?;
+        let radius = positive("radius", radius)?;
+        let segments = at_least("segments", segments, 3)?;
+        let rings = at_least("rings", rings, 2)?;
+        let mut normals = vec![Vec3::Y];
+        for i in 1..rings {
+            let theta = PI * i as f32 / rings as f32;
+            for j in 0..segments {
+                let phi = 2.0 * PI * j as f32 / segments as f32;
+                let (st, ct) = theta.sin_cos();
+                let (sp, cp) = phi.sin_cos();
+                normals.push(Vec3::new(st * cp, ct, st * sp));
+            }
+        }
+        normals.push(Vec3::NEG_Y);
+        let positions: Vec<Vec3> = normals.iter().map(|&n| centre + radius * n).collect();
+        let triangles = sphere_triangles(segments, rings);
+        check(&positions, &triangles)?;
+        Ok(Mesh {
+            positions,
+            normals,
+            triangles,
+        })
+    }
+    // ANCHOR_END: uv_sphere
+
+    /// Reads a Wavefront OBJ file with tobj, without triangulating: every face must
+    /// be a triangle. Points and lines are skipped; all objects and groups are merged
+    /// into one mesh. Normals come from the file when every vertex has one, else they
+    /// are averaged from the triangles.
+    pub fn from_obj(path: &Path) -> Result<Mesh> {
+        let text =
+            std::fs::read_to_string(path).map_err(|e| obj_error(path, None, e.to_string()))?;
+        let options = tobj::LoadOptions {
+            triangulate: false,
+            single_index: true,
+            ignore_points: true,
+            ignore_lines: true,
+        };
+        let (models, _) =
+            tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))
+                .map_err(|e| obj_error(path, bad_index_line(&text), e.to_string()))?;
+        let mut positions = Vec::new();
+        let mut normals = Vec::new();
+        let mut triangles = Vec::new();
+        let mut faces_before = 0;
+        for model in &models {
+            let m = &model.mesh;
+            if let Some(face) = m.face_arities.iter().position(|&a| a != 3) {
+                let arity = m.face_arities[face];
+                let face = faces_before + face;
+                return Err(obj_error(
+                    path,
+                    face_line(&text, face),
+                    format!("face {face} has {arity} vertices; only triangles are supported"),
+                ));
+            }
+            let base = positions.len() as u32;
+            faces_before += m.indices.len() / 3;
+            positions.extend(m.positions.chunks_exact(3).map(Vec3::from_slice));
+            normals.extend(m.normals.chunks_exact(3).map(Vec3::from_slice));
+            triangles.extend(
+                m.indices
+                    .chunks_exact(3)
+                    .map(|t| [t[0] + base, t[1] + base, t[2] + base]),
+            );
+        }
+        let mesh = if normals.len() == positions.len() {
+            Mesh::with_normals(positions, normals, triangles)
+        } else {
+            Mesh::new(positions, triangles)
+        };
+        mesh.map_err(|e| obj_error(path, None, e.to_string()))
+    }
+}
+
+/// `value` if it is at least `min`.
+fn at_least(param: &'static str, value: u32, min: u32) -> Result<u32> {
+    if value >= min {
+        Ok(value)
+    } else {
+        Err(Error::TooFew { param, value, min })
+    }
+}
+
+/// The triangles of [`Mesh::uv_sphere`]: a fan round each pole, two triangles per
+/// quad in between. Vertex 0 is the north pole, then ring by ring, then the south pole.
+fn sphere_triangles(segments: u32, rings: u32) -> Vec<[u32; 3]> {
+    let ring = |i: u32, j: u32| 1 + (i - 1) * segments + j % segments;
+    let south = 1 + (rings - 1) * segments;
+    let mut triangles = Vec::new();
+    for j in 0..segments {
+        triangles.push([0, ring(1, j + 1), ring(1, j)]);
+        for i in 1..rings - 1 {
+            let (a, b) = (ring(i, j), ring(i, j + 1));
+            let (c, d) = (ring(i + 1, j), ring(i + 1, j + 1));
+            triangles.push([a, b, c]);
+            triangles.push([b, d, c]);
+        }
+        triangles.push([ring(rings - 1, j), ring(rings - 1, j + 1), south]);
+    }
+    triangles
+}
+
+/// Every position finite and every index in range; the error names the triangle.
+fn check(positions: &[Vec3], triangles: &[[u32; 3]]) -> Result<()> {
+    for p in positions {
+        finite3("position", *p)?;
+    }
+    for (triangle, t) in triangles.iter().enumerate() {
+        if let Some(&index) = t.iter().find(|&&i| i as usize >= positions.len()) {
+            return Err(Error::VertexIndex {
+                triangle,
+                index,
+                vertices: positions.len(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Area-weighted vertex normals: the cross product (b - a) x (c - a) of a triangle
+/// is its normal times twice its area, so summing them weights big triangles more.
+fn vertex_normals(positions: &[Vec3], triangles: &[[u32; 3]]) -> Vec<Vec3> {
+    let mut normals = vec![Vec3::ZERO; positions.len()];
+    for t in triangles {
+        let [a, b, c] = t.map(|i| positions[i as usize]);
+        let n = (b - a).cross(c - a);
+        for i in t {
+            normals[*i as usize] += n;
+        }
+    }
+    normals.iter().map(|n| n.normalize_or_zero()).collect()
+}
+
+fn obj_error(path: &Path, line: Option<usize>, message: String) -> Error {
+    Error::Obj {
+        path: path.display().to_string(),
+        line,
+        message,
+    }
+}
+
+/// The 1-based line of the `face`-th (0-based) face statement `f ...`.
+fn face_line(text: &str, face: usize) -> Option<usize> {
+    text.lines()
+        .enumerate()
+        .filter(|(_, l)| l.trim_start().starts_with("f "))
+        .nth(face)
+        .map(|(n, _)| n + 1)
+}
+
+/// The 1-based line of the first face whose vertex number is 0 or names a vertex
+/// not yet defined (OBJ numbers vertices from 1; negative numbers count back).
+fn bad_index_line(text: &str) -> Option<usize> {
+    let mut vertices = 0i64;
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => vertices += 1,
+            Some("f") => {
+                let bad = words.any(|w| {
+                    let index = w.split('/').next().and_then(|i| i.parse::<i64>().ok());
+                    index.is_none_or(|i| i == 0 || i > vertices || -i > vertices)
+                });
+                if bad {
+                    return Some(n + 1);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}

@@ -1,0 +1,227 @@
+//! Rasterization (Lecture 2, "Rasterization Pipeline"): modeling (a vertex list and
+//! a triangle list) -> transform -> lighting -> primitive rasterization with a
+//! z-buffer -> per-pixel shading. The same scenes as the ray caster of lesson 08,
+//! drawn triangle by triangle instead of ray by ray.
+//!
+//! The work runs in two parallel stages: vertices and triangles (transform, light,
+//! clip, project), then bands of rows, each band drawing every triangle in list
+//! order into its own rows. A pixel is only ever touched by one band, always in the
+//! same triangle order, so the image is the same bit for bit whatever the number of
+//! threads.
+
+pub mod clip;
+pub mod mesh;
+pub mod pipeline;
+pub mod rasterize;
+pub mod shade;
+pub mod vertex;
+
+pub use clip::clip_triangle;
+pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
+pub use pipeline::{DepthRange, Pipeline};
+pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
+pub use shade::{Shading, Viewer, lambert};
+pub use vertex::{ClipVertex, Varyings};
+
+use glam::Vec3;
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::error::{Result, finite3};
+use crate::framebuffer::Framebuffer;
+use crate::render::in_pool;
+use crate::scene::PointLight;
+use crate::transform::Transform;
+
+/// Rows per band of the parallel fragment stage.
+pub const BAND_ROWS: u32 = 16;
+
+/// A mesh placed in the world by a model transform, with one colour (linear RGB albedo).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instance {
+    /// The vertex and triangle lists.
+    pub mesh: Mesh,
+    /// Model space to world space.
+    pub model: Transform,
+    /// The albedo.
+    pub colour: Vec3,
+}
+
+impl Instance {
+    /// `mesh` as it is (model = identity), coloured `colour`.
+    pub fn new(mesh: Mesh, colour: Vec3) -> Instance {
+        Instance {
+            mesh,
+            model: Transform::IDENTITY,
+            colour,
+        }
+    }
+}
+
+/// Everything about a rasterization that is not the scene or the camera.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// Near and far planes.
+    pub depth: DepthRange,
+    /// Per vertex or per pixel.
+    pub shading: Shading,
+    /// Which faces to skip.
+    pub cull: Cull,
+    /// The colour where no triangle is drawn.
+    pub background: Vec3,
+}
+
+impl Default for Settings {
+    /// Near 0.1, far 1000, per-pixel shading, no culling, black background.
+    fn default() -> Settings {
+        Settings {
+            depth: DepthRange {
+                near: 0.1,
+                far: 1000.0,
+            },
+            shading: Shading::PerPixel,
+            cull: Cull::None,
+            background: Vec3::ZERO,
+        }
+    }
+}
+
+/// The viewer as lighting needs it.
+pub fn viewer(camera: &Camera) -> Viewer {
+    match camera {
+        Camera::Pinhole(c) => Viewer::Point(c.frame().position()),
+        Camera::Ortho(c) => Viewer::Direction(c.frame().basis().w()),
+    }
+}
+
+// ANCHOR: rasterize
+/// The image of `instances` seen by `camera` and lit by `light`: Lecture 2's
+/// pipeline. `threads` = `None` uses every core; the image does not depend on it.
+pub fn rasterize(
+    instances: &[Instance],
+    camera: &Camera,
+    light: &PointLight,
+    settings: &Settings,
+    threads: Option<usize>,
+) -> Result<Framebuffer> {
+    finite3("background", settings.background)?;
+    finite3("light position", light.position)?;
+    finite3("light intensity", light.intensity)?;
+    let pipeline = Pipeline::new(camera, settings.depth)?;
+    let (width, height) = (camera.film().width(), camera.film().height());
+    let mut colours = vec![settings.background; width as usize * height as usize];
+    in_pool(threads, || -> Result<()> {
+        let triangles = setup(instances, &pipeline, camera, light, settings)?;
+        let band = width as usize * BAND_ROWS as usize;
+        colours
+            .par_chunks_mut(band)
+            .enumerate()
+            .for_each(|(i, pixels)| {
+                let first_row = i as u32 * BAND_ROWS;
+                let rows = first_row..(first_row + BAND_ROWS).min(height);
+                draw_band(&triangles, rows, width, pixels, camera, light, settings);
+            });
+        Ok(())
+    })??;
+    Framebuffer::from_pixels(width, height, colours)
+}
+// ANCHOR_END: rasterize
+
+/// Vertex and triangle stage: every instance's vertices transformed (and lit, for
+/// Gouraud shading), its triangles clipped and projected to screen triangles, in order.
+fn setup(
+    instances: &[Instance],
+    pipeline: &Pipeline,
+    camera: &Camera,
+    light: &PointLight,
+    settings: &Settings,
+) -> Result<Vec<[ScreenVertex; 3]>> {
+    let mut screen = Vec::new();
+    for instance in instances {
+        let vertices = transform_vertices(instance, pipeline, camera, light, settings)?;
+        let triangles: Vec<_> = instance
+            .mesh
+            .triangles
+            .par_iter()
+            .flat_map_iter(|t| {
+                let t = t.map(|i| vertices[i as usize]);
+                clip_triangle(&t).into_iter().filter_map(|c| {
+                    let [a, b, c] = c.map(|v| ScreenVertex::from_clip(pipeline, &v));
+                    Some([a?, b?, c?])
+                })
+            })
+            .collect();
+        screen.extend(triangles);
+    }
+    Ok(screen)
+}
+
+// ANCHOR: vertex_stage
+/// The vertex stage: world position (model matrix), world normal (inverse transpose
+/// of the model matrix), clip position (projection x view), and the colour to
+/// interpolate: lit here for Gouraud shading, the albedo for per-pixel shading.
+fn transform_vertices(
+    instance: &Instance,
+    pipeline: &Pipeline,
+    camera: &Camera,
+    light: &PointLight,
+    settings: &Settings,
+) -> Result<Vec<ClipVertex>> {
+    let albedo = finite3("colour", instance.colour)?;
+    let normal_matrix = instance.model.inverse()?.matrix().transpose();
+    let viewer = viewer(camera);
+    let mesh = &instance.mesh;
+    Ok((0..mesh.positions.len())
+        .into_par_iter()
+        .map(|i| {
+            let world = instance.model.point(mesh.positions[i]);
+            let normal = normal_matrix
+                .transform_vector3(mesh.normals[i])
+                .normalize_or_zero();
+            let colour = match settings.shading {
+                Shading::PerVertex => lambert(world, normal, albedo, light, &viewer),
+                Shading::PerPixel => albedo,
+            };
+            ClipVertex {
+                clip: pipeline.to_clip(&Transform::IDENTITY, world),
+                varyings: Varyings {
+                    world,
+                    normal,
+                    colour,
+                },
+            }
+        })
+        .collect())
+}
+// ANCHOR_END: vertex_stage
+
+// ANCHOR: draw_band
+/// The fragment stage for one band of rows: every triangle in order, a z-buffer
+/// with the test "nearer than what is there" (depth less-than), and the shading.
+fn draw_band(
+    triangles: &[[ScreenVertex; 3]],
+    rows: std::ops::Range<u32>,
+    width: u32,
+    pixels: &mut [Vec3],
+    camera: &Camera,
+    light: &PointLight,
+    settings: &Settings,
+) {
+    let viewer = viewer(camera);
+    let mut depth = vec![f32::INFINITY; pixels.len()];
+    let first_row = rows.start;
+    for t in triangles {
+        rasterize_triangle(t, settings.cull, width, rows.clone(), |f| {
+            let i = ((f.y - first_row) * width + f.x) as usize;
+            if f.depth < depth[i] {
+                depth[i] = f.depth;
+                let v = f.varyings;
+                pixels[i] = match settings.shading {
+                    Shading::PerVertex => v.colour,
+                    Shading::PerPixel => lambert(v.world, v.normal, v.colour, light, &viewer),
+                };
+            }
+        });
+    }
+}
+// ANCHOR_END: draw_band

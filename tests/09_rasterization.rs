@@ -1,0 +1,606 @@
+//! Lesson 09: the rasterization pipeline of Lecture 2.
+
+use std::collections::HashMap;
+use std::fmt::Write;
+
+use glam::{Vec2, Vec3};
+use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+use render_lessons::error::Error;
+use render_lessons::raster::{
+    ClipVertex, Cull, DepthRange, Instance, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Pipeline,
+    ScreenVertex, Settings, Shading, Varyings, clip_triangle, rasterize, rasterize_triangle,
+};
+use render_lessons::scene::PointLight;
+use render_lessons::transform::Transform;
+
+/// Fixed precision, -0 written as 0.
+fn num(x: f32) -> String {
+    let s = format!("{x:.4}");
+    if s.trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+fn film() -> Film {
+    Film::new(16, 9, (-1.6, 1.6), (-0.9, 0.9)).unwrap()
+}
+
+fn pinhole() -> PinholeCamera {
+    let frame = Frame::look(
+        Vec3::new(1.0, 2.0, 6.0),
+        Vec3::new(-0.2, -0.3, -1.0),
+        Vec3::Y,
+    )
+    .unwrap();
+    PinholeCamera::new(film(), 1.5, frame).unwrap()
+}
+
+fn ortho() -> OrthoCamera {
+    let frame = Frame::look(
+        Vec3::new(1.0, 2.0, 6.0),
+        Vec3::new(-0.2, -0.3, -1.0),
+        Vec3::Y,
+    )
+    .unwrap();
+    OrthoCamera::new(film(), frame)
+}
+
+const DEPTH: DepthRange = DepthRange {
+    near: 0.5,
+    far: 50.0,
+};
+
+const LIGHT: PointLight = PointLight {
+    position: Vec3::new(4.0, 6.0, 4.0),
+    intensity: Vec3::splat(40.0),
+};
+
+#[test]
+fn lecture_tables() {
+    let mut out = String::from("vertex list (slide numbering)\n");
+    for (i, v) in LECTURE_VERTICES.iter().enumerate() {
+        writeln!(out, "{}\t{}\t{}\t{}", i + 1, v[0], v[1], v[2]).unwrap();
+    }
+    out.push_str("triangle list (slide numbering)\n");
+    for (i, t) in LECTURE_TRIANGLES.iter().enumerate() {
+        writeln!(out, "{}\t{}\t{}\t{}", i + 1, t[0], t[1], t[2]).unwrap();
+    }
+    insta::assert_snapshot!("lecture_tables", out);
+
+    // The full triangle list needs vertices the slide does not show.
+    let positions: Vec<Vec3> = LECTURE_VERTICES.iter().map(|&p| Vec3::from(p)).collect();
+    let triangles: Vec<[u32; 3]> = LECTURE_TRIANGLES.iter().map(|t| t.map(|i| i - 1)).collect();
+    let err = Mesh::new(positions.clone(), triangles).unwrap_err();
+    assert_eq!(
+        err,
+        Error::VertexIndex {
+            triangle: 0,
+            index: 4,
+            vertices: 4
+        }
+    );
+    assert!(err.to_string().contains("triangle 0 refers to vertex 4"));
+
+    // The fixture: the four vertices, slide triangles 3 and 4: the square y = 5, facing +Y.
+    let mesh = Mesh::lecture_fixture();
+    assert_eq!(mesh.positions, positions);
+    assert_eq!(mesh.triangles, vec![[1, 0, 3], [2, 1, 3]]);
+    for n in &mesh.normals {
+        assert!((*n - Vec3::Y).length() < 1e-6);
+    }
+}
+
+fn projection_table(camera: &Camera, points: &[Vec3]) -> String {
+    let pipeline = Pipeline::new(camera, DEPTH).unwrap();
+    let mut out = String::new();
+    for &p in points {
+        let clip = pipeline.to_clip(&Transform::IDENTITY, p);
+        let screen = pipeline.to_screen(clip).unwrap();
+        let expected = camera.project(p).unwrap();
+        assert!(
+            (screen.truncate() - expected).length() < 1e-4,
+            "{p}: {screen} vs {expected}"
+        );
+        assert!((0.0..=1.0).contains(&screen.z));
+        writeln!(
+            out,
+            "({}, {}, {}) -> clip ({}, {}, {}, {}) -> pixel ({}, {}) depth {}",
+            num(p.x),
+            num(p.y),
+            num(p.z),
+            num(clip.x),
+            num(clip.y),
+            num(clip.z),
+            num(clip.w),
+            num(screen.x),
+            num(screen.y),
+            num(screen.z)
+        )
+        .unwrap();
+    }
+    out
+}
+
+#[test]
+fn projection_matches_the_cameras() {
+    let points: Vec<Vec3> = LECTURE_VERTICES
+        .iter()
+        .map(|&p| Vec3::from(p) * 0.5 - Vec3::new(2.0, 2.0, 3.0))
+        .chain([Vec3::ZERO, Vec3::new(-1.0, 0.5, -2.0)])
+        .collect();
+    let mut out = String::from("pinhole\n");
+    out += &projection_table(&pinhole().into(), &points);
+    out += "orthographic\n";
+    out += &projection_table(&ortho().into(), &points);
+    insta::assert_snapshot!("projection", out);
+
+    // Many more points, both cameras, at the origin and placed.
+    for camera in [
+        Camera::from(pinhole()),
+        Camera::from(ortho()),
+        PinholeCamera::at_origin(film(), 1.0).unwrap().into(),
+        OrthoCamera::at_origin(film()).into(),
+    ] {
+        let pipeline = Pipeline::new(&camera, DEPTH).unwrap();
+        for i in 0..200 {
+            let f = i as f32;
+            let p = Vec3::new(
+                (f * 0.37).sin() * 3.0,
+                (f * 0.71).cos() * 2.0,
+                -(f * 0.13).sin().abs() * 8.0 - 1.0,
+            );
+            let Some(expected) = camera.project(p) else {
+                continue;
+            };
+            let camera_z = camera.frame().point_to_camera(p).z;
+            if -camera_z < DEPTH.near && matches!(camera, Camera::Pinhole(_)) {
+                continue;
+            }
+            let screen = pipeline
+                .to_screen(pipeline.to_clip(&Transform::IDENTITY, p))
+                .unwrap();
+            assert!((screen.truncate() - expected).length() < 1e-4 * expected.length().max(1.0));
+        }
+    }
+}
+
+fn screen_vertex(p: Vec2) -> ScreenVertex {
+    ScreenVertex {
+        pixel: p,
+        depth: 0.5,
+        inv_w: 1.0,
+        varyings: Varyings::default(),
+    }
+}
+
+/// Coverage counts of a closed fan of `n` triangles around `centre`.
+fn fan_coverage(centre: Vec2, corners: &[Vec2], size: u32) -> HashMap<(u32, u32), u32> {
+    let mut counts = HashMap::new();
+    for i in 0..corners.len() {
+        let t = [centre, corners[i], corners[(i + 1) % corners.len()]].map(screen_vertex);
+        rasterize_triangle(&t, Cull::None, size, 0..size, |f| {
+            *counts.entry((f.x, f.y)).or_insert(0) += 1;
+        });
+    }
+    counts
+}
+
+/// True if `p` is inside the convex polygon `corners` by at least `margin` pixels.
+fn inside_convex(p: Vec2, corners: &[Vec2], margin: f32) -> Option<bool> {
+    let mut min = f32::INFINITY;
+    let mut max = f32::NEG_INFINITY;
+    for i in 0..corners.len() {
+        let (a, b) = (corners[i], corners[(i + 1) % corners.len()]);
+        let d = (b - a).perp_dot(p - a) / (b - a).length();
+        min = min.min(d);
+        max = max.max(d);
+    }
+    // Corners wind one way: all signed distances share a sign inside.
+    let (lo, hi) = if max <= 0.0 || min >= 0.0 {
+        (min.abs().min(max.abs()), true)
+    } else {
+        (0.0, false)
+    };
+    if hi && lo > margin {
+        Some(true)
+    } else if !hi && (min < -margin && max > margin) {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+#[test]
+fn shared_edges_are_covered_exactly_once() {
+    let size = 40;
+    let cases: Vec<(Vec2, Vec<Vec2>)> = vec![
+        // Pixel-aligned: every vertex on a pixel centre, spokes through pixel centres.
+        (
+            Vec2::new(20.5, 20.5),
+            [
+                (10, 10),
+                (20, 6),
+                (30, 10),
+                (34, 20),
+                (30, 30),
+                (20, 34),
+                (10, 30),
+                (6, 20),
+            ]
+            .iter()
+            .map(|&(x, y)| Vec2::new(x as f32 + 0.5, y as f32 + 0.5))
+            .collect(),
+        ),
+        // Not aligned: a centre and corners off the grid, on a circle.
+        (
+            Vec2::new(19.3, 20.7),
+            (0..13)
+                .map(|i| {
+                    let a = i as f32 / 13.0 * std::f32::consts::TAU;
+                    Vec2::new(19.3 + 15.1 * a.cos(), 20.7 + 14.3 * a.sin())
+                })
+                .collect(),
+        ),
+        // Vertices on integer corners (pixel edges), axis-aligned spokes.
+        (
+            Vec2::new(20.0, 20.0),
+            [
+                (8, 8),
+                (20, 8),
+                (32, 8),
+                (32, 20),
+                (32, 32),
+                (20, 32),
+                (8, 32),
+                (8, 20),
+            ]
+            .iter()
+            .map(|&(x, y)| Vec2::new(x as f32, y as f32))
+            .collect(),
+        ),
+    ];
+    for (centre, corners) in cases {
+        let counts = fan_coverage(centre, &corners, size);
+        assert!(counts.values().all(|&c| c == 1), "a pixel drawn twice");
+        for y in 0..size {
+            for x in 0..size {
+                let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
+                let covered = counts.get(&(x, y)).copied().unwrap_or(0);
+                match inside_convex(p, &corners, 1e-3) {
+                    Some(true) => assert_eq!(covered, 1, "crack at ({x}, {y})"),
+                    Some(false) => assert_eq!(covered, 0, "outside drawn at ({x}, {y})"),
+                    None => {}
+                }
+            }
+        }
+    }
+    // A square split along its diagonal through pixel centres: area exactly once.
+    let [a, b, c, d] =
+        [(2.5, 2.5), (12.5, 2.5), (12.5, 12.5), (2.5, 12.5)].map(|(x, y)| Vec2::new(x, y));
+    let mut counts = HashMap::new();
+    for t in [[a, b, c], [a, c, d]] {
+        rasterize_triangle(&t.map(screen_vertex), Cull::None, 16, 0..16, |f| {
+            *counts.entry((f.x, f.y)).or_insert(0) += 1;
+        });
+    }
+    assert!(counts.values().all(|&c| c == 1));
+    // Top-left rule: of the border pixel centres, the top row and left column belong.
+    assert_eq!(counts.len(), 100);
+}
+
+fn quad(z: f32, half: f32) -> Mesh {
+    Mesh::new(
+        vec![
+            Vec3::new(-half, -half, z),
+            Vec3::new(half, -half, z),
+            Vec3::new(half, half, z),
+            Vec3::new(-half, half, z),
+        ],
+        vec![[0, 1, 2], [0, 2, 3]],
+    )
+    .unwrap()
+}
+
+#[test]
+fn z_buffer_order_does_not_matter() {
+    let camera: Camera = PinholeCamera::at_origin(film(), 1.0).unwrap().into();
+    let near = Instance::new(quad(-3.0, 1.0), Vec3::new(1.0, 0.2, 0.2));
+    let far = Instance::new(quad(-5.0, 6.0), Vec3::new(0.2, 0.2, 1.0));
+    let light = PointLight {
+        position: Vec3::new(0.0, 0.0, 2.0),
+        intensity: Vec3::splat(20.0),
+    };
+    for shading in [Shading::PerVertex, Shading::PerPixel] {
+        let settings = Settings {
+            shading,
+            ..Settings::default()
+        };
+        let a = rasterize(
+            &[near.clone(), far.clone()],
+            &camera,
+            &light,
+            &settings,
+            Some(1),
+        )
+        .unwrap();
+        let b = rasterize(
+            &[far.clone(), near.clone()],
+            &camera,
+            &light,
+            &settings,
+            Some(1),
+        )
+        .unwrap();
+        assert_eq!(a, b);
+        let centre = a.get(8, 4).unwrap();
+        assert!(
+            centre.x > centre.z,
+            "the near (red) quad is in front: {centre}"
+        );
+        let edge = a.get(12, 4).unwrap();
+        assert!(
+            edge.z > edge.x,
+            "the far (blue) quad shows around it: {edge}"
+        );
+    }
+}
+
+#[test]
+fn interpolation_is_perspective_correct() {
+    // A quad receding in depth; its texture coordinates (u, v) are interpolated.
+    let camera: Camera =
+        PinholeCamera::at_origin(Film::new(64, 64, (-1.0, 1.0), (-1.0, 1.0)).unwrap(), 1.0)
+            .unwrap()
+            .into();
+    let pipeline = Pipeline::new(&camera, DEPTH).unwrap();
+    let corners = [
+        Vec3::new(-1.0, -1.0, -1.5),
+        Vec3::new(1.0, -1.0, -1.5),
+        Vec3::new(1.0, 1.0, -8.0),
+        Vec3::new(-1.0, 1.0, -8.0),
+    ];
+    let uv = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::X,
+        Vec3::new(1.0, 1.0, 0.0),
+        Vec3::Y,
+    ];
+    let vertex = |i: usize| ClipVertex {
+        clip: pipeline.to_clip(&Transform::IDENTITY, corners[i]),
+        varyings: Varyings {
+            world: corners[i],
+            normal: Vec3::Z,
+            colour: uv[i],
+        },
+    };
+    let mut checked = 0;
+    let mut worst_affine = 0.0f32;
+    for t in [[0, 1, 2], [0, 2, 3]] {
+        let clip = [vertex(t[0]), vertex(t[1]), vertex(t[2])];
+        let screen = clip.map(|v| ScreenVertex::from_clip(&pipeline, &v).unwrap());
+        rasterize_triangle(&screen, Cull::None, 64, 0..64, |f| {
+            // The analytic value: this pixel's ray meets the quad's plane at p.
+            let ray = camera.ray(f.x, f.y);
+            let (a, e1, e2) = (corners[0], corners[1] - corners[0], corners[3] - corners[0]);
+            let n = e1.cross(e2);
+            let s = (a - ray.origin()).dot(n) / ray.direction().dot(n);
+            let p = ray.origin() + s * ray.direction();
+            let (u, v) = (
+                (p - a).dot(e1) / e1.length_squared(),
+                (p - a).dot(e2) / e2.length_squared(),
+            );
+            assert!(
+                (f.varyings.colour.x - u).abs() < 2e-3,
+                "u at ({}, {}): {} vs {u}",
+                f.x,
+                f.y,
+                f.varyings.colour.x
+            );
+            assert!(
+                (f.varyings.colour.y - v).abs() < 2e-3,
+                "v at ({}, {}): {} vs {v}",
+                f.x,
+                f.y,
+                f.varyings.colour.y
+            );
+            assert!((f.varyings.world - p).length() < 1e-2);
+            // Screen-space (affine) interpolation would be far off.
+            let screen_v =
+                (f.y as f32 + 0.5 - screen[0].pixel.y) / (screen[2].pixel.y - screen[0].pixel.y);
+            worst_affine = worst_affine.max((screen_v.clamp(0.0, 1.0) - v).abs());
+            checked += 1;
+        });
+    }
+    assert!(checked > 500, "{checked} fragments");
+    assert!(worst_affine > 0.1, "the test distinguishes: {worst_affine}");
+}
+
+#[test]
+fn near_plane_clipping() {
+    let camera: Camera = PinholeCamera::at_origin(film(), 1.0).unwrap().into();
+    let pipeline = Pipeline::new(&camera, DEPTH).unwrap();
+    let v = |p: Vec3| ClipVertex {
+        clip: pipeline.to_clip(&Transform::IDENTITY, p),
+        varyings: Varyings {
+            world: p,
+            ..Default::default()
+        },
+    };
+    let in_front = [Vec3::new(-1.0, -1.0, -3.0), Vec3::new(1.0, -1.0, -3.0)];
+    // One vertex behind the eye: a quadrilateral remains, two triangles.
+    let one_behind = clip_triangle(&[v(in_front[0]), v(in_front[1]), v(Vec3::new(0.0, 1.0, 2.0))]);
+    assert_eq!(one_behind.len(), 2);
+    // Two behind: one triangle.
+    let two_behind = clip_triangle(&[
+        v(in_front[0]),
+        v(Vec3::new(1.0, -1.0, 1.0)),
+        v(Vec3::new(0.0, 1.0, 2.0)),
+    ]);
+    assert_eq!(two_behind.len(), 1);
+    // All behind: nothing.
+    assert!(
+        clip_triangle(&[
+            v(Vec3::Z),
+            v(Vec3::new(1.0, 0.0, 1.0)),
+            v(Vec3::new(0.0, 1.0, 3.0))
+        ])
+        .is_empty()
+    );
+    for t in one_behind.iter().chain(&two_behind) {
+        for c in t {
+            assert!(c.clip.w >= DEPTH.near * 0.999, "w = {}", c.clip.w);
+            assert!(c.clip.z >= -c.clip.w * 1.0001);
+            let s = pipeline.to_screen(c.clip).unwrap();
+            assert!(s.is_finite() && s.abs().max_element() < 1e4, "{s}");
+        }
+    }
+    // Through the whole renderer: a big triangle through the camera, no NaN anywhere.
+    let mesh = Mesh::new(
+        vec![
+            Vec3::new(-5.0, -1.0, -4.0),
+            Vec3::new(5.0, -1.0, -4.0),
+            Vec3::new(0.0, -1.0, 5.0),
+        ],
+        vec![[0, 1, 2]],
+    )
+    .unwrap();
+    for shading in [Shading::PerVertex, Shading::PerPixel] {
+        let settings = Settings {
+            depth: DEPTH,
+            shading,
+            ..Settings::default()
+        };
+        let image = rasterize(
+            &[Instance::new(mesh.clone(), Vec3::ONE)],
+            &camera,
+            &LIGHT,
+            &settings,
+            None,
+        )
+        .unwrap();
+        image.to_srgb8().unwrap();
+        // The floor fills the bottom row.
+        assert!(image.get(8, 8).unwrap().length() > 0.0);
+    }
+}
+
+#[test]
+fn uv_sphere_is_closed_and_faces_out() {
+    let centre = Vec3::new(1.0, -2.0, 0.5);
+    let mesh = Mesh::uv_sphere(centre, 2.0, 12, 7).unwrap();
+    assert_eq!(mesh.positions.len(), 2 + 12 * 6);
+    assert_eq!(mesh.triangles.len(), 2 * 12 * 6);
+    let mut edges = HashMap::new();
+    for t in &mesh.triangles {
+        let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+        let n = (b - a).cross(c - a);
+        assert!(
+            n.dot((a + b + c) / 3.0 - centre) > 0.0,
+            "inward triangle {t:?}"
+        );
+        for k in 0..3 {
+            *edges.entry((t[k], t[(k + 1) % 3])).or_insert(0) += 1;
+        }
+    }
+    // Closed and consistently wound: every directed edge once, and its reverse once.
+    for (&(a, b), &count) in &edges {
+        assert_eq!(count, 1);
+        assert_eq!(edges.get(&(b, a)), Some(&1));
+    }
+    for (p, n) in mesh.positions.iter().zip(&mesh.normals) {
+        assert!(((*p - centre).length() - 2.0).abs() < 1e-5);
+        assert!((*n - (*p - centre) / 2.0).length() < 1e-5);
+    }
+    assert!(matches!(
+        Mesh::uv_sphere(centre, 1.0, 2, 5),
+        Err(Error::TooFew {
+            param: "segments",
+            ..
+        })
+    ));
+    assert!(matches!(
+        Mesh::uv_sphere(centre, 1.0, 5, 1),
+        Err(Error::TooFew { param: "rings", .. })
+    ));
+    assert!(matches!(
+        Mesh::uv_sphere(centre, 0.0, 5, 5),
+        Err(Error::NotPositive {
+            param: "radius",
+            ..
+        })
+    ));
+}
+
+#[test]
+fn obj_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let good = write(
+        "good.obj",
+        "# a triangle\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    );
+    let mesh = Mesh::from_obj(&good).unwrap();
+    assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
+    assert!((mesh.normals[0] - Vec3::Z).length() < 1e-6);
+
+    let missing = Mesh::from_obj(&dir.path().join("missing.obj")).unwrap_err();
+    assert!(matches!(missing, Error::Obj { line: None, .. }));
+    assert!(missing.to_string().contains("missing.obj"), "{missing}");
+
+    let out_of_range = write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
+    let err = Mesh::from_obj(&out_of_range).unwrap_err();
+    assert!(matches!(err, Error::Obj { line: Some(5), .. }), "{err:?}");
+    assert!(err.to_string().contains("line 5"), "{err}");
+
+    let quad = write(
+        "quad.obj",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\n\nf 1 2 3 4\n",
+    );
+    let err = Mesh::from_obj(&quad).unwrap_err();
+    assert!(matches!(err, Error::Obj { line: Some(7), .. }), "{err:?}");
+    assert!(err.to_string().contains("face 1 has 4 vertices"), "{err}");
+}
+
+#[test]
+fn same_image_for_any_thread_count() {
+    let instances = vec![
+        Instance::new(
+            Mesh::uv_sphere(Vec3::new(0.0, 0.0, -4.0), 1.0, 24, 12).unwrap(),
+            Vec3::new(0.9, 0.3, 0.2),
+        ),
+        Instance::new(
+            Mesh::uv_sphere(Vec3::new(1.5, 0.5, -6.0), 1.2, 24, 12).unwrap(),
+            Vec3::new(0.2, 0.8, 0.3),
+        ),
+        Instance::new(quad(-7.0, 4.0), Vec3::splat(0.7)),
+    ];
+    let camera: Camera = pinhole().into();
+    let film = Film::new(96, 54, (-1.6, 1.6), (-0.9, 0.9)).unwrap();
+    let camera2: Camera = PinholeCamera::at_origin(film, 1.0).unwrap().into();
+    for camera in [camera, camera2, ortho().into()] {
+        for shading in [Shading::PerVertex, Shading::PerPixel] {
+            let settings = Settings {
+                shading,
+                cull: Cull::Back,
+                ..Settings::default()
+            };
+            let one = rasterize(&instances, &camera, &LIGHT, &settings, Some(1)).unwrap();
+            for threads in [Some(2), Some(5), None] {
+                assert_eq!(
+                    one,
+                    rasterize(&instances, &camera, &LIGHT, &settings, threads).unwrap()
+                );
+            }
+            one.to_srgb8().unwrap();
+        }
+    }
+}

@@ -41,6 +41,10 @@ pub struct Args {
     /// Top edge of the projection plane.
     #[arg(long, default_value = "6", value_parser = parse_finite)]
     pub y_max: f32,
+    /// Also draw the origin image with your own `pixel_to_plane` (coding exercise 3.1):
+    /// `cargo run --features exercises --example 03_ortho_camera -- --mine`.
+    #[arg(long)]
+    pub mine: bool,
     #[command(flatten)]
     pub output: Output,
 }
@@ -202,13 +206,51 @@ pub fn origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer>
         (args.y_min, args.y_max),
     )?;
     let cam = OrthoCamera::at_origin(film);
+    colour_by_origin(&film, |x, y| cam.ray(x, y).origin().truncate())
+}
+
+/// Colours each pixel by where `origin(x, y)` lies on the film's plane.
+pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Result<Framebuffer> {
     let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
-    Framebuffer::from_fn(width, height, |x, y| {
-        let o = cam.ray(x, y).origin();
+    Framebuffer::from_fn(film.width(), film.height(), |x, y| {
+        let o = origin(x, y);
         Vec3::new((o.x - x0) / (x1 - x0), (o.y - y0) / (y1 - y0), 0.25)
     })
 }
 // ANCHOR_END: origin_image
+
+/// The origin image drawn with the student's own `pixel_to_plane`, once it passes its
+/// check (coding exercise 3.1, `src/exercises/ch03.rs`).
+pub fn my_origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer> {
+    let film = Film::new(
+        width,
+        height,
+        (args.x_min, args.x_max),
+        (args.y_min, args.y_max),
+    )?;
+    #[cfg(feature = "exercises")]
+    {
+        use render_lessons::exercises::{ch03, check};
+        let outcome = check::check_pixel_to_plane(ch03::pixel_to_plane);
+        if !matches!(outcome, check::Outcome::Pass) {
+            let report = check::PIXEL_TO_PLANE.report(&outcome);
+            return Err(render_lessons::Error::Exercise { report });
+        }
+        let (x, y) = (film.x_extent(), film.y_extent());
+        colour_by_origin(&film, |px, py| {
+            ch03::pixel_to_plane(x, y, width, height, px, py)
+        })
+    }
+    #[cfg(not(feature = "exercises"))]
+    {
+        let _ = film;
+        Err(render_lessons::Error::Exercise {
+            report: "--mine runs your code for coding exercise 3.1; turn the exercises on: \
+                     cargo run --features exercises --example 03_ortho_camera -- --mine"
+                .into(),
+        })
+    }
+}
 
 fn main() -> ExitCode {
     let args = Args::parse();
@@ -217,6 +259,11 @@ fn main() -> ExitCode {
         args.output.diagram("03_plane.png", &plane_figure(&args)?)?;
         args.output.diagram("03_rays.png", &rays_figure(&args)?)?;
         args.output
-            .image("03_origins.png", &origin_image(&args, 320, 240)?)
+            .image("03_origins.png", &origin_image(&args, 320, 240)?)?;
+        if args.mine {
+            args.output
+                .image("03_origins_mine.png", &my_origin_image(&args, 320, 240)?)?;
+        }
+        Ok(())
     })
 }

@@ -33,6 +33,8 @@ pub enum Error {
     Singular { param: &'static str },
     /// A pixel holds NaN or infinity and must not be written to an image.
     NonFinitePixel { x: u32, y: u32 },
+    /// A student's coding exercise did not pass its check (the report says why).
+    Exercise { report: String },
     /// Reading or writing a file failed.
     Io { path: String, message: String },
     /// Triangle number `triangle` (0-based) refers to vertex `index`, but the mesh
@@ -76,6 +78,7 @@ impl Error {
             Error::NonFinitePixel { .. } => "pixel",
             Error::Io { path, .. } | Error::Obj { path, .. } => path,
             Error::VertexIndex { .. } => "triangle",
+            Error::Exercise { .. } => "exercise",
         }
     }
 }
@@ -117,6 +120,7 @@ impl fmt::Display for Error {
                 )
             }
             Error::Io { path, message } => write!(f, "{path}: {message}"),
+            Error::Exercise { report } => write!(f, "{report}"),
             Error::TooFew { param, value, min } => {
                 write!(f, "{param} must be at least {min} (got {value})")
             }

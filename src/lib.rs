@@ -12,6 +12,7 @@ pub mod basis;
 pub mod camera;
 pub mod diagram;
 pub mod error;
+pub mod exercises;
 pub mod framebuffer;
 pub mod lesson;
 pub mod offset;

@@ -1,0 +1,23 @@
+//! Chapter 06, The pinhole camera: coding exercise 6.1.
+//!
+//! Check it with `cargo test --features exercises --test exercises ch06`.
+// The parameters are unused until you write the body.
+#![allow(unused_variables)]
+
+use glam::Vec3;
+
+use crate::camera::{Film, Frame};
+
+/// Coding exercise 6.1: the world-space ray (origin, unit direction) of pixel
+/// (`px`, `py`, row 0 at the top) of a pinhole camera whose screen lies at
+/// distance `s` in front of the eye.
+///
+/// In camera space the eye is at the origin and the screen is the film's rectangle
+/// on the plane z = -s; `film.pixel_to_plane(px, py)` gives the pixel centre's
+/// (x, y) on it. `frame` carries camera space to the world: see
+/// `Frame::point_to_world` and `Frame::vector_to_world`.
+pub fn pinhole_ray(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+    todo!(
+        "Coding exercise 6.1 (chapter 06, The pinhole camera): the ray from the eye through the screen point"
+    )
+}

@@ -1,0 +1,49 @@
+//! Coding exercises: one file per chapter, in which the student writes the function
+//! the lesson is about.
+//!
+//! The files `chNN.rs` hold the student's functions, each a `todo!()` to begin with;
+//! they are compiled only with the `exercises` feature. [`check`] holds the checks,
+//! which compare an implementation with the crate's reference code and are always
+//! compiled (the default tests run them against the reference). Check your work with
+//!
+//! ```text
+//! cargo test --features exercises --test exercises          # every exercise
+//! cargo test --features exercises --test exercises ch03     # chapter 03 only
+//! ```
+
+pub mod check;
+
+#[cfg(feature = "exercises")]
+pub mod ch02;
+#[cfg(feature = "exercises")]
+pub mod ch03;
+#[cfg(feature = "exercises")]
+pub mod ch04;
+#[cfg(feature = "exercises")]
+pub mod ch05;
+#[cfg(feature = "exercises")]
+pub mod ch06;
+#[cfg(feature = "exercises")]
+pub mod ch07;
+#[cfg(feature = "exercises")]
+pub mod ch08;
+
+/// Every exercise checked on the student's code, in book order.
+#[cfg(feature = "exercises")]
+pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
+    use check::*;
+    vec![
+        (POINT_AT, check_point_at(ch02::point_at)),
+        (PIXEL_TO_PLANE, check_pixel_to_plane(ch03::pixel_to_plane)),
+        (TO_WORLD, check_to_world(ch04::to_world)),
+        (TO_LOCAL, check_to_local(ch04::to_local)),
+        (CAMERA_BASIS, check_camera_basis(ch05::camera_basis)),
+        (PINHOLE_RAY, check_pinhole_ray(ch06::pinhole_ray)),
+        (RAY_PLANE_T, check_ray_plane_t(ch07::ray_plane_t)),
+        (
+            RAY_SPHERE_ROOTS,
+            check_ray_sphere_roots(ch07::ray_sphere_roots),
+        ),
+        (CLOSEST, check_closest(ch08::closest)),
+    ]
+}

@@ -1,0 +1,549 @@
+//! The coding exercises.
+//!
+//! For the student, with the `exercises` feature: one test per exercise runs its check
+//! on the student's function in `src/exercises/chNN.rs` and fails, naming the
+//! exercise, the case, the expected and the received answer and a hint, unless every
+//! case passes:
+//!
+//! ```text
+//! cargo test --features exercises --test exercises            # all exercises
+//! cargo test --features exercises --test exercises ch03       # one chapter
+//! cargo test --features exercises --test exercises summary -- --nocapture   # the table
+//! ```
+//!
+//! Always (module `checks`): every check must pass the crate's reference
+//! implementation and an independent one, and must fail a deliberately wrong one with
+//! the right hint, so that a wrong check fails CI.
+
+use glam::{Vec2, Vec3};
+use render_lessons::basis::Basis;
+use render_lessons::camera::{Film, Frame, PinholeCamera, camera_basis, camera_basis_as_on_slide};
+use render_lessons::exercises::check::*;
+use render_lessons::ray::Ray;
+use render_lessons::scene::{Object, PointLight, Scene};
+use render_lessons::shapes::{Plane, Shape, Sphere};
+
+mod checks {
+    use super::*;
+
+    /// Asserts a `Fail` whose hint contains `hint`.
+    #[track_caller]
+    fn fails_with(outcome: Outcome, hint: &str) {
+        match &outcome {
+            Outcome::Fail { hint: got, .. } => {
+                assert!(
+                    got.contains(hint),
+                    "hint {got:?} does not mention {hint:?}\n{outcome}"
+                );
+            }
+            other => panic!("expected a failure with hint {hint:?}, got {other}"),
+        }
+    }
+
+    // Chapter 02.
+
+    #[test]
+    fn point_at_accepts_the_reference() {
+        assert_eq!(
+            check_point_at(|o, d, t| Ray::new(o, d).unwrap().at(t)),
+            Outcome::Pass
+        );
+        assert_eq!(
+            check_point_at(|o, d: Vec3, t| o + t * d / d.length()),
+            Outcome::Pass
+        );
+    }
+
+    #[test]
+    fn point_at_rejects_mistakes() {
+        fails_with(check_point_at(|o, d, t| o + t * d), "unit direction");
+        fails_with(
+            check_point_at(|_, d: Vec3, t| t * d.normalize()),
+            "starts at o",
+        );
+        fails_with(
+            check_point_at(|o, d: Vec3, t| o - t * d.normalize()),
+            "forward",
+        );
+        fails_with(check_point_at(|o, _, _| o), "r(t) = o + t d/|d|");
+    }
+
+    // Chapter 03.
+
+    /// The slide's formula, written out independently of `Film`.
+    fn slide_pixel_to_plane(
+        x: (f32, f32),
+        y: (f32, f32),
+        w: u32,
+        h: u32,
+        px: u32,
+        py: u32,
+    ) -> Vec2 {
+        let y_pixel = (h - 1 - py) as f32;
+        Vec2::new(
+            (px as f32 + 0.5) / w as f32 * (x.1 - x.0) + x.0,
+            (y_pixel + 0.5) / h as f32 * (y.1 - y.0) + y.0,
+        )
+    }
+
+    #[test]
+    fn pixel_to_plane_accepts_the_reference() {
+        let reference = |x, y, w, h, px, py| Film::new(w, h, x, y).unwrap().pixel_to_plane(px, py);
+        assert_eq!(
+            reference((-8.0, 8.0), (-6.0, 6.0), 4, 3, 0, 0),
+            Vec2::new(-6.0, 4.0)
+        );
+        assert_eq!(check_pixel_to_plane(reference), Outcome::Pass);
+        assert_eq!(check_pixel_to_plane(slide_pixel_to_plane), Outcome::Pass);
+    }
+
+    #[test]
+    fn pixel_to_plane_rejects_mistakes() {
+        fails_with(
+            check_pixel_to_plane(|x, y, w, h, px, py| {
+                Vec2::new(
+                    (px as f32 + 0.5) / w as f32 * (x.1 - x.0) + x.0,
+                    (py as f32 + 0.5) / h as f32 * (y.1 - y.0) + y.0,
+                )
+            }),
+            "row flip",
+        );
+        fails_with(
+            check_pixel_to_plane(|x, y, w, h, px, py| {
+                Vec2::new(
+                    px as f32 / w as f32 * (x.1 - x.0) + x.0,
+                    (h - 1 - py) as f32 / h as f32 * (y.1 - y.0) + y.0,
+                )
+            }),
+            "centre",
+        );
+        fails_with(
+            check_pixel_to_plane(|x, y, w, h, px, py| {
+                Vec2::new(
+                    (px as f32 + 0.5) / w as f32 * (x.1 - x.0) + x.0,
+                    ((h - py) as f32 + 0.5) / h as f32 * (y.1 - y.0) + y.0,
+                )
+            }),
+            "off by one",
+        );
+    }
+
+    // Chapter 04.
+
+    #[test]
+    fn to_world_and_to_local_accept_the_reference() {
+        let basis = |u, v, w| Basis::new(u, v, w).unwrap();
+        assert_eq!(
+            check_to_world(|u, v, w, b| basis(u, v, w).to_world(b)),
+            Outcome::Pass
+        );
+        assert_eq!(
+            check_to_local(|u, v, w, a| basis(u, v, w).to_local(a)),
+            Outcome::Pass
+        );
+        let matrix = glam::Mat3::from_cols;
+        assert_eq!(
+            check_to_world(|u, v, w, b| matrix(u, v, w) * b),
+            Outcome::Pass
+        );
+        assert_eq!(
+            check_to_local(|u, v, w, a| matrix(u, v, w).transpose() * a),
+            Outcome::Pass
+        );
+    }
+
+    #[test]
+    fn to_world_and_to_local_reject_mistakes() {
+        let matrix = glam::Mat3::from_cols;
+        fails_with(
+            check_to_world(|u, v, w, b| matrix(u, v, w).transpose() * b),
+            "to_local",
+        );
+        fails_with(check_to_local(|u, v, w, a| matrix(u, v, w) * a), "to_world");
+        fails_with(check_to_world(|_, _, _, b| b), "columns of B");
+    }
+
+    // Chapter 05.
+
+    fn uvw(b: Basis) -> (Vec3, Vec3, Vec3) {
+        (b.u(), b.v(), b.w())
+    }
+
+    #[test]
+    fn camera_basis_accepts_the_reference() {
+        assert_eq!(
+            check_camera_basis(|d, k| uvw(camera_basis(d, k).unwrap())),
+            Outcome::Pass
+        );
+        // The formula as printed, without the crate's extra Gram-Schmidt step.
+        let plain = |d: Vec3, k: Vec3| {
+            let w = -d.normalize();
+            let u = k.cross(w).normalize();
+            (u, w.cross(u), w)
+        };
+        assert_eq!(check_camera_basis(plain), Outcome::Pass);
+    }
+
+    #[test]
+    fn camera_basis_rejects_mistakes() {
+        fails_with(
+            check_camera_basis(|d, k| uvw(camera_basis_as_on_slide(d, k).unwrap())),
+            "backwards",
+        );
+        fails_with(
+            check_camera_basis(|d: Vec3, k: Vec3| {
+                let w = -d.normalize();
+                (k.cross(w).normalize(), k.normalize(), w)
+            }),
+            "not the up vector",
+        );
+        fails_with(
+            check_camera_basis(|d: Vec3, k: Vec3| {
+                let w = -d.normalize();
+                let u = w.cross(k).normalize();
+                (u, w.cross(u), w)
+            }),
+            "order of a cross product",
+        );
+        fails_with(
+            check_camera_basis(|d: Vec3, k: Vec3| {
+                let w = -d;
+                let u = k.cross(w);
+                (u, w.cross(u), w)
+            }),
+            "length 1",
+        );
+    }
+
+    // Chapter 06.
+
+    #[test]
+    fn pinhole_ray_accepts_the_reference() {
+        let reference = |film: &Film, s, frame: &Frame, px, py| {
+            let ray = PinholeCamera::new(*film, s, *frame).unwrap().ray(px, py);
+            (ray.origin(), ray.direction())
+        };
+        assert_eq!(check_pinhole_ray(reference), Outcome::Pass);
+        let by_hand = |film: &Film, s: f32, frame: &Frame, px, py| {
+            let screen = film.pixel_to_plane(px, py).extend(-s);
+            (frame.position(), frame.basis().to_world(screen.normalize()))
+        };
+        assert_eq!(check_pinhole_ray(by_hand), Outcome::Pass);
+    }
+
+    #[test]
+    fn pinhole_ray_rejects_mistakes() {
+        fails_with(
+            check_pinhole_ray(|film: &Film, _, frame: &Frame, px, py| {
+                let p = film.pixel_to_plane(px, py).extend(0.0);
+                (frame.point_to_world(p), frame.vector_to_world(-Vec3::Z))
+            }),
+            "orthographic",
+        );
+        fails_with(
+            check_pinhole_ray(|film: &Film, s, frame: &Frame, px, py| {
+                let screen = film.pixel_to_plane(px, py).extend(-s);
+                (frame.position(), frame.vector_to_world(screen))
+            }),
+            "length 1",
+        );
+        fails_with(
+            check_pinhole_ray(|film: &Film, s, frame: &Frame, px, py| {
+                let screen = film.pixel_to_plane(px, py).extend(-s);
+                (frame.position(), screen.normalize())
+            }),
+            "with the basis",
+        );
+        fails_with(
+            check_pinhole_ray(|film: &Film, s, frame: &Frame, px, py| {
+                let screen = film.pixel_to_plane(px, py).extend(-s);
+                (Vec3::ZERO, frame.vector_to_world(screen.normalize()))
+            }),
+            "origin is not",
+        );
+        fails_with(
+            check_pinhole_ray(|film: &Film, s, frame: &Frame, px, py| {
+                let screen = film.pixel_to_plane(px, py).extend(s);
+                (frame.position(), frame.vector_to_world(screen.normalize()))
+            }),
+            "z = -s",
+        );
+    }
+
+    // Chapter 07.
+
+    #[test]
+    fn ray_plane_t_accepts_the_reference() {
+        let reference = |o, d, p0, n| Plane::new(p0, n).unwrap().t(&Ray::new(o, d).unwrap());
+        assert_eq!(check_ray_plane_t(reference), Outcome::Pass);
+        let by_hand = |o: Vec3, d: Vec3, p0: Vec3, n: Vec3| {
+            let denom = d.dot(n);
+            (denom != 0.0).then(|| (p0 - o).dot(n) / denom)
+        };
+        assert_eq!(check_ray_plane_t(by_hand), Outcome::Pass);
+    }
+
+    #[test]
+    fn ray_plane_t_rejects_mistakes() {
+        fails_with(
+            check_ray_plane_t(|o: Vec3, d: Vec3, p0: Vec3, n: Vec3| {
+                Some((p0 - o).dot(n) / d.dot(n))
+            }),
+            "parallel",
+        );
+        fails_with(
+            check_ray_plane_t(|o: Vec3, d: Vec3, p0: Vec3, n: Vec3| {
+                let denom = d.dot(n);
+                (denom != 0.0).then(|| (o - p0).dot(n) / denom)
+            }),
+            "sign",
+        );
+        fails_with(
+            check_ray_plane_t(|o: Vec3, d: Vec3, p0: Vec3, n: Vec3| {
+                let denom = d.dot(n);
+                (denom != 0.0)
+                    .then(|| (p0 - o).dot(n) / denom)
+                    .filter(|&t| t >= 0.0)
+            }),
+            "behind the origin",
+        );
+    }
+
+    fn sphere(c: Vec3, r: f32) -> Sphere {
+        Sphere::new(c, r).unwrap()
+    }
+
+    #[test]
+    fn ray_sphere_roots_accepts_the_reference() {
+        let ray = |o, d| Ray::new(o, d).unwrap();
+        assert_eq!(
+            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_stable(&ray(o, d))),
+            Outcome::Pass
+        );
+        // The school formula is good enough for these cases.
+        assert_eq!(
+            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_textbook(&ray(o, d))),
+            Outcome::Pass
+        );
+    }
+
+    #[test]
+    fn ray_sphere_roots_rejects_mistakes() {
+        let ray = |o, d| Ray::new(o, d).unwrap();
+        fails_with(
+            check_ray_sphere_roots(|o, d, c, r| {
+                sphere(c, r).roots_stable(&ray(o, d)).map(|(a, b)| (b, a))
+            }),
+            "ascending",
+        );
+        fails_with(
+            check_ray_sphere_roots(|o, d, c, r| {
+                sphere(c, r).roots_stable(&ray(o, d)).map(|(a, b)| (-b, -a))
+            }),
+            "f = o - c",
+        );
+        fails_with(
+            check_ray_sphere_roots(|o, d, c, r| {
+                sphere(c, r)
+                    .roots_stable(&ray(o, d))
+                    .filter(|&(t0, _)| t0 >= 0.0)
+            }),
+            "negative",
+        );
+    }
+
+    // Chapter 08.
+
+    #[test]
+    fn closest_accepts_the_reference() {
+        let reference = |ray: &Ray, shapes: &[Shape], t_min, t_max| {
+            let objects = shapes
+                .iter()
+                .map(|s| Object {
+                    shape: s.clone(),
+                    colour: Vec3::ONE,
+                })
+                .collect();
+            let light = PointLight {
+                position: Vec3::ZERO,
+                intensity: Vec3::ONE,
+            };
+            let scene = Scene::new(objects, Vec3::ZERO, light).unwrap();
+            let (hit, object) = scene.closest_hit(ray, t_min, t_max)?;
+            let index = scene
+                .objects()
+                .iter()
+                .position(|o| std::ptr::eq(o, object))?;
+            Some((index, hit.t))
+        };
+        assert_eq!(check_closest(reference), Outcome::Pass);
+        // Every hit, then the smallest t: no shrinking of t_max.
+        let min_of_all = |ray: &Ray, shapes: &[Shape], t_min, t_max| {
+            shapes
+                .iter()
+                .enumerate()
+                .filter_map(|(i, s)| s.hit(ray, t_min, t_max).map(|h| (i, h.t)))
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+        };
+        assert_eq!(check_closest(min_of_all), Outcome::Pass);
+    }
+
+    #[test]
+    fn closest_rejects_mistakes() {
+        fails_with(
+            check_closest(|ray: &Ray, shapes: &[Shape], t_min, t_max| {
+                shapes
+                    .iter()
+                    .enumerate()
+                    .find_map(|(i, s)| s.hit(ray, t_min, t_max).map(|h| (i, h.t)))
+            }),
+            "first hit",
+        );
+        fails_with(
+            check_closest(|ray: &Ray, shapes: &[Shape], t_min, t_max| {
+                shapes
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(i, s)| s.hit(ray, t_min, t_max).map(|h| (i, h.t)))
+                    .next_back()
+            }),
+            "shrink t_max",
+        );
+    }
+
+    // The machinery.
+
+    #[test]
+    fn a_todo_is_not_started_and_other_panics_fail() {
+        assert_eq!(
+            check_pixel_to_plane(|_, _, _, _, _, _| todo!("Coding exercise 3.1")),
+            Outcome::NotStarted
+        );
+        assert_eq!(check_closest(|_, _, _, _| todo!()), Outcome::NotStarted);
+        match check_point_at(|_, _, _| panic!("oops")) {
+            Outcome::Fail { got, .. } => assert!(got.contains("a panic: oops"), "{got}"),
+            other => panic!("expected a failure, got {other}"),
+        }
+    }
+
+    #[test]
+    fn a_failure_names_the_case_expected_got_and_hint() {
+        let outcome = check_pixel_to_plane(|_, _, _, _, _, _| Vec2::ZERO);
+        let report = PIXEL_TO_PLANE.report(&outcome);
+        for part in [
+            "Coding exercise 3.1",
+            "pixel_to_plane",
+            "src/exercises/ch03.rs",
+            "case:",
+            "pixel (0, 0)",
+            "expected: (-6, 4)",
+            "got:      (0, 0)",
+            "hint:",
+        ] {
+            assert!(report.contains(part), "{part:?} missing from\n{report}");
+        }
+        let report = PIXEL_TO_PLANE.report(&Outcome::NotStarted);
+        assert!(
+            report.contains("NOT STARTED") && report.contains("todo!()"),
+            "{report}"
+        );
+        assert!(PIXEL_TO_PLANE.row(&Outcome::Pass).contains("PASS"));
+    }
+
+    #[test]
+    fn every_exercise_is_listed_once_with_its_file() {
+        for (i, e) in ALL.iter().enumerate() {
+            assert!(
+                ALL[..i].iter().all(|o| o.number != e.number),
+                "{} twice",
+                e.number
+            );
+            assert_eq!(e.file, format!("src/exercises/ch{}.rs", e.chapter));
+            let stub = std::fs::read_to_string(e.file).unwrap();
+            // Only what stays true once the student has written the body: the
+            // function's name and the exercise's number in the file.
+            let number = format!("Coding exercise {}", e.number);
+            assert!(stub.contains(&number), "{number} not in {}", e.file);
+            assert!(
+                stub.contains(&format!("pub fn {}(", e.function)),
+                "{} not in {}",
+                e.function,
+                e.file
+            );
+        }
+    }
+}
+
+#[cfg(feature = "exercises")]
+mod student {
+    use render_lessons::exercises::{ch02, ch03, ch04, ch05, ch06, ch07, ch08, check_all};
+
+    use super::*;
+
+    #[track_caller]
+    fn expect_pass(exercise: Exercise, outcome: Outcome) {
+        let report = exercise.report(&outcome);
+        assert!(outcome == Outcome::Pass, "\n{report}\n");
+    }
+
+    #[test]
+    fn ch02_point_at() {
+        expect_pass(POINT_AT, check_point_at(ch02::point_at));
+    }
+
+    #[test]
+    fn ch03_pixel_to_plane() {
+        expect_pass(PIXEL_TO_PLANE, check_pixel_to_plane(ch03::pixel_to_plane));
+    }
+
+    #[test]
+    fn ch04_to_world() {
+        expect_pass(TO_WORLD, check_to_world(ch04::to_world));
+    }
+
+    #[test]
+    fn ch04_to_local() {
+        expect_pass(TO_LOCAL, check_to_local(ch04::to_local));
+    }
+
+    #[test]
+    fn ch05_camera_basis() {
+        expect_pass(CAMERA_BASIS, check_camera_basis(ch05::camera_basis));
+    }
+
+    #[test]
+    fn ch06_pinhole_ray() {
+        expect_pass(PINHOLE_RAY, check_pinhole_ray(ch06::pinhole_ray));
+    }
+
+    #[test]
+    fn ch07_ray_plane_t() {
+        expect_pass(RAY_PLANE_T, check_ray_plane_t(ch07::ray_plane_t));
+    }
+
+    #[test]
+    fn ch07_ray_sphere_roots() {
+        expect_pass(
+            RAY_SPHERE_ROOTS,
+            check_ray_sphere_roots(ch07::ray_sphere_roots),
+        );
+    }
+
+    #[test]
+    fn ch08_closest() {
+        expect_pass(CLOSEST, check_closest(ch08::closest));
+    }
+
+    /// The table of every exercise's status; never fails. See it with
+    /// `cargo test --features exercises --test exercises summary -- --nocapture`.
+    #[test]
+    fn summary() {
+        let results = check_all();
+        let passed = results.iter().filter(|(_, o)| *o == Outcome::Pass).count();
+        println!("\nCoding exercises: {passed} of {} pass", results.len());
+        for (exercise, outcome) in &results {
+            println!("  {}", exercise.row(outcome));
+        }
+        println!();
+    }
+}

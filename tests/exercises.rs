@@ -15,7 +15,7 @@
 //! implementation and an independent one, and must fail a deliberately wrong one with
 //! the right hint, so that a wrong check fails CI.
 
-use glam::{Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Film, Frame, PinholeCamera, camera_basis, camera_basis_as_on_slide};
 use render_lessons::exercises::check::*;
@@ -41,6 +41,38 @@ mod checks {
     }
 
     // Chapter 02.
+
+    #[test]
+    fn rotation_y_accepts_the_reference() {
+        use render_lessons::transform::Transform;
+        assert_eq!(
+            check_rotation_y(|theta| Transform::rotation_y(theta).unwrap().matrix()),
+            Outcome::Pass
+        );
+        assert_eq!(check_rotation_y(Mat4::from_rotation_y), Outcome::Pass);
+    }
+
+    #[test]
+    fn rotation_y_rejects_mistakes() {
+        // The slide's rows handed to glam as columns: the transpose, -sin top-right.
+        fails_with(
+            check_rotation_y(|theta| {
+                let (s, c) = theta.sin_cos();
+                Mat4::from_cols_array_2d(&[
+                    [c, 0.0, s, 0.0],
+                    [0.0, 1.0, 0.0, 0.0],
+                    [-s, 0.0, c, 0.0],
+                    [0.0, 0.0, 0.0, 1.0],
+                ])
+            }),
+            "bottom-left",
+        );
+        fails_with(
+            check_rotation_y(|theta| Mat4::from_rotation_y(theta.to_radians())),
+            "radians",
+        );
+        fails_with(check_rotation_y(|_| Mat4::IDENTITY), "x' = x cos + z sin");
+    }
 
     #[test]
     fn point_at_accepts_the_reference() {
@@ -476,7 +508,7 @@ mod checks {
 
 #[cfg(feature = "exercises")]
 mod student {
-    use render_lessons::exercises::{ch02, ch03, ch04, ch05, ch06, ch07, ch08, check_all};
+    use render_lessons::exercises::{ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, check_all};
 
     use super::*;
 
@@ -484,6 +516,11 @@ mod student {
     fn expect_pass(exercise: Exercise, outcome: Outcome) {
         let report = exercise.report(&outcome);
         assert!(outcome == Outcome::Pass, "\n{report}\n");
+    }
+
+    #[test]
+    fn ch01_rotation_y() {
+        expect_pass(ROTATION_Y, check_rotation_y(ch01::rotation_y));
     }
 
     #[test]

@@ -17,7 +17,7 @@ use std::fmt;
 use std::panic::{self, AssertUnwindSafe};
 use std::sync::Once;
 
-use glam::{Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 use crate::basis::Basis;
 use crate::camera::{Film, Frame, PinholeCamera, camera_basis};
@@ -127,6 +127,15 @@ pub const POINT_AT: Exercise = Exercise {
     file: "src/exercises/ch02.rs",
 };
 
+/// Coding exercise 1.1.
+pub const ROTATION_Y: Exercise = Exercise {
+    number: "1.1",
+    chapter: "01",
+    chapter_title: "Geometric transformations",
+    function: "rotation_y",
+    file: "src/exercises/ch01.rs",
+};
+
 /// Coding exercise 3.1.
 pub const PIXEL_TO_PLANE: Exercise = Exercise {
     number: "3.1",
@@ -200,7 +209,8 @@ pub const CLOSEST: Exercise = Exercise {
 };
 
 /// Every coding exercise, in book order.
-pub const ALL: [Exercise; 9] = [
+pub const ALL: [Exercise; 10] = [
+    ROTATION_Y,
     POINT_AT,
     PIXEL_TO_PLANE,
     TO_WORLD,
@@ -264,6 +274,28 @@ impl Answer for Vec3 {
     }
     fn show(&self) -> String {
         format!("({}, {}, {})", self.x.show(), self.y.show(), self.z.show())
+    }
+}
+
+impl Answer for Mat4 {
+    fn close(&self, other: &Mat4) -> bool {
+        let (a, b) = (self.to_cols_array(), other.to_cols_array());
+        a.iter().zip(&b).all(|(x, y)| x.close(y))
+    }
+    fn show(&self) -> String {
+        let rows: Vec<String> = (0..4)
+            .map(|i| {
+                let r = self.row(i);
+                format!(
+                    "[{}, {}, {}, {}]",
+                    r.x.show(),
+                    r.y.show(),
+                    r.z.show(),
+                    r.w.show()
+                )
+            })
+            .collect();
+        format!("rows {}", rows.join(" "))
     }
 }
 
@@ -396,6 +428,40 @@ fn run<A: Clone, R: Answer>(
 
 fn v(x: f32, y: f32, z: f32) -> Vec3 {
     Vec3::new(x, y, z)
+}
+
+// ---------------------------------------------------------------------------
+// Chapter 01.
+
+/// Checks `rotation_y(theta)`: the slide's 4x4 rotation about Y, `theta` in radians.
+pub fn check_rotation_y(f: impl Fn(f32) -> Mat4) -> Outcome {
+    let cases: Vec<Case<f32>> = [0.5f32, 1.0, -0.3, 2.0, std::f32::consts::FRAC_PI_2]
+        .into_iter()
+        .map(|theta| (format!("theta = {} rad", theta.show()), theta))
+        .collect();
+    let reference = |theta: f32| {
+        crate::transform::Transform::rotation_y(theta)
+            .map(|t| t.matrix())
+            .unwrap_or(Mat4::NAN)
+    };
+    run(
+        &cases,
+        |&theta| reference(theta),
+        f,
+        &[
+            Mistake {
+                looks_like: &gives(&|&theta: &f32| Some(reference(-theta))),
+                hint: "the -sin belongs in the bottom-left corner (row 3, column 1) for Y: the rotation \
+                       turns z towards x. If you passed the slide's rows to Mat4::from_cols_array_2d, \
+                       glam read them as columns: transpose, or use transform::from_rows",
+            },
+            Mistake {
+                looks_like: &gives(&|&theta: &f32| Some(reference(theta.to_radians()))),
+                hint: "theta is already in radians: do not convert it",
+            },
+        ],
+        "x' = x cos + z sin, y' = y, z' = -x sin + z cos, written as a 4x4 matrix with w untouched",
+    )
 }
 
 // ---------------------------------------------------------------------------

@@ -14,6 +14,8 @@
 pub mod check;
 
 #[cfg(feature = "exercises")]
+pub mod ch01;
+#[cfg(feature = "exercises")]
 pub mod ch02;
 #[cfg(feature = "exercises")]
 pub mod ch03;
@@ -33,6 +35,7 @@ pub mod ch08;
 pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
     use check::*;
     vec![
+        (ROTATION_Y, check_rotation_y(ch01::rotation_y)),
         (POINT_AT, check_point_at(ch02::point_at)),
         (PIXEL_TO_PLANE, check_pixel_to_plane(ch03::pixel_to_plane)),
         (TO_WORLD, check_to_world(ch04::to_world)),

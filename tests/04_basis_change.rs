@@ -104,3 +104,29 @@ fn figure_draws() {
     let rgba = lesson::bases_figure(&args).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 300);
 }
+
+#[test]
+fn s12_frisvad_breaks_near_minus_z_and_duff_does_not() {
+    // STABILITY S12: a unit normal just outside Frisvad's -Z guard.
+    let n = Vec3::new(0.000_385_273_16, 0.000_384_600_16, -0.999_999_880_79);
+    let frisvad = Basis::around_frisvad(n).orthonormality_error();
+    let duff = Basis::around(n).orthonormality_error();
+    eprintln!("S12: Frisvad error {frisvad:.1e}, Duff et al. {duff:.1e}");
+    assert!(
+        frisvad > 0.1,
+        "Frisvad's basis is far from orthonormal: {frisvad}"
+    );
+    assert!(duff < 1e-6, "Duff et al.'s stays orthonormal: {duff}");
+    assert!(Basis::around(n).is_right_handed());
+}
+
+proptest! {
+    #[test]
+    fn duff_basis_is_orthonormal_and_right_handed_for_any_normal(q in rotation()) {
+        let n = q * Vec3::Z;
+        let b = Basis::around(n);
+        prop_assert!(b.orthonormality_error() < 1e-5);
+        prop_assert!(b.is_right_handed());
+        prop_assert_eq!(b.w(), n);
+    }
+}

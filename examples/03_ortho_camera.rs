@@ -49,6 +49,16 @@ pub struct Args {
     pub output: Output,
 }
 
+/// The plane of the flags, cut into `width` x `height` pixels.
+pub fn film(args: &Args, width: u32, height: u32) -> Result<Film> {
+    Film::new(
+        width,
+        height,
+        (args.x_min, args.x_max),
+        (args.y_min, args.y_max),
+    )
+}
+
 // ANCHOR: camera
 /// The lesson's camera: at the origin, looking down -Z, over the given plane.
 pub fn camera(args: &Args) -> Result<OrthoCamera> {
@@ -199,12 +209,7 @@ pub fn rays_figure(args: &Args) -> Result<Diagram> {
 /// An image whose colour encodes each pixel's ray origin: red grows with x, green
 /// with y, across the plane. Row 0, at the top of the file, is the top of the plane.
 pub fn origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer> {
-    let film = Film::new(
-        width,
-        height,
-        (args.x_min, args.x_max),
-        (args.y_min, args.y_max),
-    )?;
+    let film = film(args, width, height)?;
     let cam = OrthoCamera::at_origin(film);
     colour_by_origin(&film, |x, y| cam.ray(x, y).origin().truncate())
 }
@@ -222,12 +227,7 @@ pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Resul
 /// The origin image drawn with the student's own `pixel_to_plane`, once it passes its
 /// check (coding exercise 3.1, `src/exercises/ch03.rs`).
 pub fn my_origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer> {
-    let film = Film::new(
-        width,
-        height,
-        (args.x_min, args.x_max),
-        (args.y_min, args.y_max),
-    )?;
+    let film = film(args, width, height)?;
     #[cfg(feature = "exercises")]
     {
         use render_lessons::exercises::{ch03, check};

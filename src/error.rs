@@ -14,6 +14,8 @@ pub enum Error {
     ZeroLength { param: &'static str },
     /// A value that must be strictly positive was not.
     NotPositive { param: &'static str, value: f32 },
+    /// A value that must be 0 or more was negative.
+    Negative { param: &'static str, value: f32 },
     /// The up vector is parallel to the view direction, so no camera frame exists
     /// (STABILITY S10).
     UpParallelToDirection,
@@ -68,6 +70,7 @@ impl Error {
             Error::NotFinite { param }
             | Error::ZeroLength { param }
             | Error::NotPositive { param, .. }
+            | Error::Negative { param, .. }
             | Error::Resolution { param, .. }
             | Error::EmptyRange { param, .. }
             | Error::NotOrthonormal { param, .. }
@@ -90,6 +93,9 @@ impl fmt::Display for Error {
             Error::ZeroLength { param } => write!(f, "{param} must not have zero length"),
             Error::NotPositive { param, value } => {
                 write!(f, "{param} must be greater than 0 (got {value})")
+            }
+            Error::Negative { param, value } => {
+                write!(f, "{param} must be 0 or more (got {value})")
             }
             Error::UpParallelToDirection => write!(
                 f,
@@ -185,5 +191,14 @@ pub fn positive(param: &'static str, value: f32) -> Result<f32> {
         Ok(value)
     } else {
         Err(Error::NotPositive { param, value })
+    }
+}
+
+/// `value` if it is finite and 0 or more, else an error naming `param`.
+pub fn non_negative(param: &'static str, value: f32) -> Result<f32> {
+    if finite(param, value)? >= 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::Negative { param, value })
     }
 }

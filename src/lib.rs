@@ -15,6 +15,7 @@ pub mod error;
 pub mod exercises;
 pub mod framebuffer;
 pub mod lesson;
+pub mod lighting;
 pub mod offset;
 pub mod output;
 pub mod raster;

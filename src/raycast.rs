@@ -2,9 +2,11 @@
 
 use glam::Vec3;
 
+use crate::lighting;
 use crate::offset::Offset;
 use crate::ray::Ray;
 use crate::scene::Scene;
+use crate::shapes::Hit;
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive
@@ -17,38 +19,51 @@ pub fn shadowless(scene: &Scene, ray: &Ray) -> Vec3 {
 }
 // ANCHOR_END: shadowless
 
-/// The share of light that reaches surfaces in shadow (a crude stand-in for the
-/// light bounced around the scene, which lesson 10 computes properly).
-pub const AMBIENT: f32 = 0.1;
+pub use crate::lighting::AMBIENT;
+
+/// The side of the surface a ray arrived from: the normal, flipped if the ray hit
+/// the back face.
+fn facing(hit: &Hit) -> Vec3 {
+    if hit.front_face {
+        hit.normal
+    } else {
+        -hit.normal
+    }
+}
 
 // ANCHOR: lambert
-/// One step past the slides: Lambert's cosine law from the point light, and a shadow
-/// ray towards it. Colour = albedo (ambient + I cos(theta) / distance^2 if the light
-/// is visible), theta the angle between the normal and the direction to the light.
+/// One step past the slides: Lambert's cosine law from the point light
+/// ([`lighting::lambert`]), with a shadow ray towards the light deciding whether it
+/// is visible.
 pub fn lambert(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
     let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
         return scene.background();
     };
-    // Shade the side the ray arrived from.
-    let n = if hit.front_face {
-        hit.normal
-    } else {
-        -hit.normal
-    };
+    let n = facing(&hit);
     let light = scene.light();
-    let to_light = light.position - hit.point;
-    let distance = to_light.length();
-    let l = to_light / distance;
-    let cos_theta = n.dot(l);
-    let mut colour = object.colour * AMBIENT;
-    if cos_theta > 0.0 && distance > 0.0 {
+    lighting::lambert(hit.point, n, object.colour, &light, || {
         let (origin, t_min) = offset.start(hit.point, n);
-        let shadow_ray = Ray::new(origin, light.position - origin);
-        let lit = shadow_ray.is_ok_and(|r| !scene.occluded(&r, t_min, distance));
-        if lit {
-            colour += object.colour * light.intensity * cos_theta / (distance * distance);
-        }
-    }
-    colour
+        let distance = (light.position - hit.point).length();
+        Ray::new(origin, light.position - origin)
+            .is_ok_and(|r| !scene.occluded(&r, t_min, distance))
+    })
 }
 // ANCHOR_END: lambert
+
+// ANCHOR: unshadowed
+/// The same light with no shadow ray: every surface facing the light is lit. This is
+/// what a rasterizer computes without a shadow trick, and the reference lesson 09
+/// compares its images against.
+pub fn lambert_unshadowed(scene: &Scene, ray: &Ray) -> Vec3 {
+    let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
+        return scene.background();
+    };
+    lighting::lambert(
+        hit.point,
+        facing(&hit),
+        object.colour,
+        &scene.light(),
+        || true,
+    )
+}
+// ANCHOR_END: unshadowed

@@ -14,6 +14,7 @@ pub mod mesh;
 pub mod pipeline;
 pub mod rasterize;
 pub mod shade;
+pub mod shadow_map;
 pub mod vertex;
 
 pub use clip::clip_triangle;
@@ -21,6 +22,7 @@ pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
 pub use pipeline::{DepthRange, Pipeline};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
 pub use shade::{Shading, Viewer, lambert};
+pub use shadow_map::{ShadowMap, Shadows};
 pub use vertex::{ClipVertex, Varyings};
 
 use glam::Vec3;
@@ -69,10 +71,13 @@ pub struct Settings {
     pub cull: Cull,
     /// The colour where no triangle is drawn.
     pub background: Vec3,
+    /// A shadow map to build and use, or none: every surface facing the light is lit.
+    pub shadows: Option<Shadows>,
 }
 
 impl Default for Settings {
-    /// Near 0.1, far 1000, per-pixel shading, no culling, black background.
+    /// Near 0.1, far 1000, per-pixel shading, no culling, black background, no
+    /// shadows.
     fn default() -> Settings {
         Settings {
             depth: DepthRange {
@@ -82,6 +87,7 @@ impl Default for Settings {
             shading: Shading::PerPixel,
             cull: Cull::None,
             background: Vec3::ZERO,
+            shadows: None,
         }
     }
 }
@@ -94,9 +100,27 @@ pub fn viewer(camera: &Camera) -> Viewer {
     }
 }
 
+/// What lighting needs besides the surface: the light, the viewer, and the shadow
+/// map if there is one.
+struct Lights<'a> {
+    light: &'a PointLight,
+    viewer: Viewer,
+    shadow_map: Option<&'a ShadowMap>,
+}
+
+impl Lights<'_> {
+    /// Lambert's law at `p`, the light visible unless the shadow map says otherwise.
+    fn shade(&self, p: Vec3, n: Vec3, albedo: Vec3) -> Vec3 {
+        lambert(p, n, albedo, self.light, &self.viewer, || {
+            self.shadow_map.is_none_or(|m| m.lit(p))
+        })
+    }
+}
+
 // ANCHOR: rasterize
 /// The image of `instances` seen by `camera` and lit by `light`: Lecture 2's
-/// pipeline. `threads` = `None` uses every core; the image does not depend on it.
+/// pipeline, with a shadow map first if `settings` asks for one. `threads` = `None`
+/// uses every core; the image does not depend on it.
 pub fn rasterize(
     instances: &[Instance],
     camera: &Camera,
@@ -111,7 +135,12 @@ pub fn rasterize(
     let (width, height) = (camera.film().width(), camera.film().height());
     let mut colours = vec![settings.background; width as usize * height as usize];
     in_pool(threads, || -> Result<()> {
-        let triangles = setup(instances, &pipeline, camera, light, settings)?;
+        let shadow_map = match &settings.shadows {
+            Some(shadows) => Some(ShadowMap::build(instances, light, shadows)?),
+            None => None,
+        };
+        let shadow_map = shadow_map.as_ref();
+        let triangles = setup(instances, &pipeline, camera, light, settings, shadow_map)?;
         let band = width as usize * BAND_ROWS as usize;
         colours
             .par_chunks_mut(band)
@@ -119,7 +148,12 @@ pub fn rasterize(
             .for_each(|(i, pixels)| {
                 let first_row = i as u32 * BAND_ROWS;
                 let rows = first_row..(first_row + BAND_ROWS).min(height);
-                draw_band(&triangles, rows, width, pixels, camera, light, settings);
+                let lights = Lights {
+                    light,
+                    viewer: viewer(camera),
+                    shadow_map,
+                };
+                draw_band(&triangles, rows, width, pixels, &lights, settings);
             });
         Ok(())
     })??;
@@ -135,10 +169,16 @@ fn setup(
     camera: &Camera,
     light: &PointLight,
     settings: &Settings,
+    shadow_map: Option<&ShadowMap>,
 ) -> Result<Vec<[ScreenVertex; 3]>> {
+    let lights = Lights {
+        light,
+        viewer: viewer(camera),
+        shadow_map,
+    };
     let mut screen = Vec::new();
     for instance in instances {
-        let vertices = transform_vertices(instance, pipeline, camera, light, settings)?;
+        let vertices = transform_vertices(instance, pipeline, &lights, settings.shading)?;
         let triangles: Vec<_> = instance
             .mesh
             .triangles
@@ -163,13 +203,11 @@ fn setup(
 fn transform_vertices(
     instance: &Instance,
     pipeline: &Pipeline,
-    camera: &Camera,
-    light: &PointLight,
-    settings: &Settings,
+    lights: &Lights,
+    shading: Shading,
 ) -> Result<Vec<ClipVertex>> {
     let albedo = finite3("colour", instance.colour)?;
     let normal_matrix = instance.model.inverse()?.matrix().transpose();
-    let viewer = viewer(camera);
     let mesh = &instance.mesh;
     Ok((0..mesh.positions.len())
         .into_par_iter()
@@ -178,8 +216,8 @@ fn transform_vertices(
             let normal = normal_matrix
                 .transform_vector3(mesh.normals[i])
                 .normalize_or_zero();
-            let colour = match settings.shading {
-                Shading::PerVertex => lambert(world, normal, albedo, light, &viewer),
+            let colour = match shading {
+                Shading::PerVertex => lights.shade(world, normal, albedo),
                 Shading::PerPixel => albedo,
             };
             ClipVertex {
@@ -203,11 +241,9 @@ fn draw_band(
     rows: std::ops::Range<u32>,
     width: u32,
     pixels: &mut [Vec3],
-    camera: &Camera,
-    light: &PointLight,
+    lights: &Lights,
     settings: &Settings,
 ) {
-    let viewer = viewer(camera);
     let mut depth = vec![f32::INFINITY; pixels.len()];
     let first_row = rows.start;
     for t in triangles {
@@ -218,7 +254,7 @@ fn draw_band(
                 let v = f.varyings;
                 pixels[i] = match settings.shading {
                     Shading::PerVertex => v.colour,
-                    Shading::PerPixel => lambert(v.world, v.normal, v.colour, light, &viewer),
+                    Shading::PerPixel => lights.shade(v.world, v.normal, v.colour),
                 };
             }
         });

@@ -1,10 +1,11 @@
 //! Lighting (Lecture 2, "Rasterization Pipeline: Lighting"): Lambert's cosine law
-//! from one point light, the formula of `raycast::lambert` without the shadow ray
-//! (a rasterizer sees one triangle at a time and cannot ask what lies in between).
+//! from one point light, the formula of `raycast::lambert`, but with no shadow ray:
+//! a rasterizer sees one triangle at a time and cannot ask what lies in between.
+//! Whether the light is visible comes from elsewhere (a shadow map) or is assumed.
 
 use glam::Vec3;
 
-use crate::raycast::AMBIENT;
+use crate::lighting;
 use crate::scene::PointLight;
 
 /// Where lighting is computed.
@@ -38,23 +39,20 @@ impl Viewer {
 }
 
 // ANCHOR: lambert
-/// The colour of a surface point `p` with normal `n` and colour `albedo`:
-/// albedo (AMBIENT + I cos(theta) / d^2), theta the angle between the normal and the
-/// direction to the light, d the distance to it, and no direct term when cos <= 0.
-/// The normal is turned to face the viewer first (two-sided lighting), as ray casting
-/// shades the side the ray arrived from. Always finite.
-pub fn lambert(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, viewer: &Viewer) -> Vec3 {
+/// The colour of a surface point `p` with normal `n` and colour `albedo`, lit by
+/// `light` as [`lighting::lambert`] computes it, the light visible if `visible()`
+/// says so. The normal is turned to face the viewer first (two-sided lighting), as
+/// ray casting shades the side the ray arrived from.
+pub fn lambert(
+    p: Vec3,
+    n: Vec3,
+    albedo: Vec3,
+    light: &PointLight,
+    viewer: &Viewer,
+    visible: impl FnOnce() -> bool,
+) -> Vec3 {
     let n = n.normalize_or_zero();
     let n = if n.dot(viewer.toward(p)) < 0.0 { -n } else { n };
-    let to_light = light.position - p;
-    let d2 = to_light.length_squared();
-    let mut colour = albedo * AMBIENT;
-    if d2 > f32::MIN_POSITIVE && d2.is_finite() {
-        let cos_theta = n.dot(to_light / d2.sqrt());
-        if cos_theta > 0.0 {
-            colour += albedo * light.intensity * cos_theta / d2;
-        }
-    }
-    colour.clamp(Vec3::splat(-f32::MAX), Vec3::splat(f32::MAX))
+    lighting::lambert(p, n, albedo, light, visible)
 }
 // ANCHOR_END: lambert

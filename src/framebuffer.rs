@@ -51,6 +51,31 @@ impl Framebuffer {
         })
     }
 
+    /// `images` in a row, left to right, `gap` white pixels apart, on a white
+    /// background where one is shorter than the tallest.
+    pub fn beside(images: &[&Framebuffer], gap: u32) -> Result<Self> {
+        let height = images.iter().map(|i| i.height).max().unwrap_or(0);
+        let width = images
+            .iter()
+            .map(|i| i.width + gap)
+            .sum::<u32>()
+            .saturating_sub(gap);
+        let mut lefts = Vec::new();
+        let mut left = 0;
+        for image in images {
+            lefts.push(left);
+            left += image.width + gap;
+        }
+        Framebuffer::from_fn(width, height, |x, y| {
+            images
+                .iter()
+                .zip(&lefts)
+                .find(|(i, l)| (**l..**l + i.width).contains(&x))
+                .and_then(|(i, l)| i.get(x - l, y))
+                .unwrap_or(Vec3::ONE)
+        })
+    }
+
     /// Width in pixels.
     pub fn width(&self) -> u32 {
         self.width

@@ -1,14 +1,21 @@
-//! Lesson 09: the rasterization pipeline of Lecture 2.
+//! Lesson 09: the rasterization pipeline of Lecture 2; the lesson's comparison with
+//! ray casting; the shadow map.
+
+#[path = "../examples/09_rasterization.rs"]
+#[allow(dead_code)]
+mod lesson;
 
 use std::collections::HashMap;
 use std::fmt::Write;
 
+use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Error;
 use render_lessons::raster::{
     ClipVertex, Cull, DepthRange, Instance, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Pipeline,
-    ScreenVertex, Settings, Shading, Varyings, clip_triangle, rasterize, rasterize_triangle,
+    ScreenVertex, Settings, Shading, ShadowMap, Shadows, Varyings, clip_triangle, rasterize,
+    rasterize_triangle,
 };
 use render_lessons::scene::PointLight;
 use render_lessons::transform::Transform;
@@ -603,4 +610,212 @@ fn same_image_for_any_thread_count() {
             one.to_srgb8().unwrap();
         }
     }
+}
+
+#[test]
+fn numbers() {
+    let args = lesson::Args::parse_from(["09_rasterization"]);
+    let images = lesson::images(&args).unwrap();
+    insta::assert_snapshot!("numbers", lesson::numbers(&args, &images).unwrap());
+
+    // The target: the rasterized image and the ray-cast one agree on at least
+    // 99% of the pixels away from silhouettes, for the tessellated scene and the mesh.
+    let [mask, mesh_mask] = &images.silhouettes;
+    let image = |name| images.get(name).unwrap();
+    let compare = |a, b, m| lesson::agreement(image(a), image(b), m);
+    let per_pixel = compare("09_per_pixel.png", "09_ray_cast.png", mask);
+    assert!(per_pixel.percent_agreeing() >= 99.0, "{per_pixel:?}");
+    let mesh = compare("09_mesh_raster.png", "09_mesh_ray_cast.png", mesh_mask);
+    assert!(mesh.percent_agreeing() >= 99.0, "{mesh:?}");
+    // Silhouettes are a thin minority of the image.
+    assert!(per_pixel.silhouette * 20 < per_pixel.compared);
+    // Gouraud shading of a floor made of two huge triangles is far off.
+    let gouraud = compare("09_per_vertex.png", "09_ray_cast.png", mask);
+    assert!(
+        gouraud.differing > 100 * per_pixel.differing.max(1),
+        "{gouraud:?}"
+    );
+    // Too small a bias gives acne, too large detaches shadows: both worse than 1 texel.
+    let shadow = |name| compare(name, "09_shadow_ray.png", mask).differing;
+    let good = shadow("09_shadow_map.png");
+    assert!(shadow("09_shadow_map_acne.png") > 10 * good);
+    assert!(shadow("09_shadow_map_peter_pan.png") > 5 * good);
+}
+
+#[test]
+fn unshadowed_lambert_is_lambert_where_nothing_blocks_the_light() {
+    use render_lessons::offset::Offset;
+    use render_lessons::raycast::{lambert, lambert_unshadowed};
+    let args = lesson::Args::parse_from(["09_rasterization", "--width", "96", "--height", "54"]);
+    let scene = lesson::scene().unwrap();
+    let camera = lesson::camera(&args).unwrap();
+    let (mut same, mut shadowed) = (0, 0);
+    for y in 0..54 {
+        for x in 0..96 {
+            let ray = camera.ray(x, y);
+            let lit = lambert_unshadowed(&scene, &ray);
+            let traced = lambert(&scene, &ray, Offset::Scaled);
+            if lit == traced {
+                same += 1;
+            } else {
+                // A shadow only ever removes light.
+                assert!(traced.cmple(lit).all(), "({x}, {y}): {traced} > {lit}");
+                shadowed += 1;
+            }
+        }
+    }
+    assert!(same > 4 * shadowed && shadowed > 0, "{same} {shadowed}");
+}
+
+fn floor_and_blocker() -> Vec<Instance> {
+    vec![
+        Instance::new(Mesh::floor(Vec3::ZERO, 20.0).unwrap(), Vec3::ONE),
+        Instance::new(
+            Mesh::cuboid(Vec3::new(-1.0, 2.0, -1.0), Vec3::new(1.0, 2.5, 1.0)).unwrap(),
+            Vec3::ONE,
+        ),
+    ]
+}
+
+const OVERHEAD: PointLight = PointLight {
+    position: Vec3::new(0.0, 8.0, 0.5),
+    intensity: Vec3::splat(50.0),
+};
+
+fn shadows(bias: f32) -> Shadows {
+    Shadows {
+        size: 256,
+        bias,
+        centre: Vec3::ZERO,
+        radius: 6.0,
+    }
+}
+
+#[test]
+fn shadow_map_shadows_what_is_under_an_occluder() {
+    let map = ShadowMap::build(&floor_and_blocker(), &OVERHEAD, &shadows(1.0)).unwrap();
+    // The light is straight above: under the slab is dark, beside it is lit.
+    assert!(!map.lit(Vec3::new(0.0, 0.0, 0.0), Vec3::Y));
+    assert!(!map.lit(Vec3::new(0.6, 0.0, -0.6), Vec3::Y));
+    assert!(map.lit(Vec3::new(3.0, 0.0, 0.0), Vec3::Y));
+    assert!(map.lit(Vec3::new(-2.5, 0.0, 3.0), Vec3::Y));
+    // The slab's own top is lit, and so is a point outside the map.
+    assert!(map.lit(Vec3::new(0.2, 2.5, 0.2), Vec3::Y));
+    assert!(map.lit(Vec3::new(50.0, 0.0, 0.0), Vec3::Y));
+    // The map recorded the slab's top straight below the light: 8 - 2.5 = 5.5 away.
+    let centre = map.size() / 2;
+    let d = map.distance(centre, centre).unwrap();
+    assert!((d - 5.5).abs() < 0.05, "{d}");
+}
+
+#[test]
+fn shadow_map_bias_trades_acne_for_detached_shadows() {
+    // A floor lit at a slant, nothing above it: every point should be lit.
+    let light = PointLight {
+        position: Vec3::new(6.0, 3.0, 0.0),
+        intensity: Vec3::splat(50.0),
+    };
+    let floor = [Instance::new(
+        Mesh::floor(Vec3::ZERO, 20.0).unwrap(),
+        Vec3::ONE,
+    )];
+    let dark = |bias| {
+        let map = ShadowMap::build(&floor, &light, &shadows(bias)).unwrap();
+        let points = (0..40).flat_map(|i| (0..40).map(move |j| (i, j)));
+        points
+            .filter(|&(i, j)| {
+                let p = Vec3::new(-4.0 + 0.2 * i as f32, 0.0, -4.0 + 0.2 * j as f32);
+                !map.lit(p, Vec3::Y)
+            })
+            .count()
+    };
+    // No bias: the floor shadows itself in a pattern of stripes (acne).
+    assert!(dark(0.0) > 100, "{}", dark(0.0));
+    // One texel footprint, scaled by the slope: none.
+    assert_eq!(dark(1.0), 0);
+}
+
+#[test]
+fn shadow_map_bad_input_names_the_parameter() {
+    let instances = floor_and_blocker();
+    let build = |s: Shadows| ShadowMap::build(&instances, &OVERHEAD, &s).unwrap_err();
+    assert_eq!(build(shadows(-1.0)).param(), "shadow bias");
+    assert_eq!(build(shadows(f32::NAN)).param(), "shadow bias");
+    assert_eq!(
+        build(Shadows {
+            radius: 0.0,
+            ..shadows(1.0)
+        })
+        .param(),
+        "shadow radius"
+    );
+    assert_eq!(
+        build(Shadows {
+            size: 0,
+            ..shadows(1.0)
+        })
+        .param(),
+        "shadow map size"
+    );
+    let too_close = Shadows {
+        radius: 9.0,
+        ..shadows(1.0)
+    };
+    assert!(build(too_close).to_string().contains("shadow radius"));
+}
+
+#[test]
+fn shadowed_rasterization_is_the_same_on_any_number_of_threads() {
+    let camera: Camera = pinhole().into();
+    let settings = Settings {
+        depth: DEPTH,
+        shadows: Some(shadows(1.0)),
+        ..Settings::default()
+    };
+    let draw = |threads| rasterize(&floor_and_blocker(), &camera, &OVERHEAD, &settings, threads);
+    assert_eq!(draw(Some(1)).unwrap(), draw(Some(2)).unwrap());
+}
+
+#[test]
+fn cuboid_and_floor_face_outwards() {
+    let cuboid = Mesh::cuboid(Vec3::new(-1.0, 0.0, 2.0), Vec3::new(0.5, 3.0, 2.5)).unwrap();
+    assert_eq!((cuboid.positions.len(), cuboid.triangles.len()), (24, 12));
+    let centre = Vec3::new(-0.25, 1.5, 2.25);
+    let floor = Mesh::floor(Vec3::new(1.0, -2.0, 3.0), 4.0).unwrap();
+    for mesh in [&cuboid, &floor] {
+        for t in &mesh.triangles {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            let geometric = (b - a).cross(c - a).normalize();
+            for &i in t {
+                assert!((mesh.normals[i as usize] - geometric).length() < 1e-6);
+            }
+            if std::ptr::eq(mesh, &cuboid) {
+                // Outward: away from the box's centre.
+                assert!(geometric.dot(a - centre) > 0.0);
+            }
+        }
+    }
+    assert!(floor.normals.iter().all(|&n| n == Vec3::Y));
+    let flat = Mesh::uv_sphere(Vec3::ZERO, 1.0, 8, 4)
+        .unwrap()
+        .flat_shaded()
+        .unwrap();
+    assert_eq!(flat.positions.len(), 3 * flat.triangles.len());
+}
+
+#[test]
+fn images_side_by_side() {
+    use render_lessons::framebuffer::Framebuffer;
+    let a = Framebuffer::from_fn(3, 2, |_, _| Vec3::X).unwrap();
+    let b = Framebuffer::from_fn(2, 1, |_, _| Vec3::Z).unwrap();
+    let both = Framebuffer::beside(&[&a, &b], 1).unwrap();
+    assert_eq!((both.width(), both.height()), (6, 2));
+    assert_eq!(both.get(2, 1), Some(Vec3::X));
+    assert_eq!(both.get(3, 0), Some(Vec3::ONE), "the gap is white");
+    assert_eq!(both.get(4, 0), Some(Vec3::Z));
+    assert_eq!(
+        both.get(5, 1),
+        Some(Vec3::ONE),
+        "below the shorter image: white"
+    );
 }

@@ -121,6 +121,76 @@ impl Mesh {
     }
     // ANCHOR_END: uv_sphere
 
+    /// The box `min`..`max` as 12 triangles: four vertices per face, each carrying
+    /// the face's normal, so the box shades flat as the ray caster's box does.
+    pub fn cuboid(min: Vec3, max: Vec3) -> Result<Mesh> {
+        let (min, max) = (finite3("min", min)?, finite3("max", max)?);
+        let mut positions = Vec::new();
+        let mut normals = Vec::new();
+        let mut triangles = Vec::new();
+        for axis in 0..3 {
+            for side in [-1.0f32, 1.0] {
+                let n = Vec3::AXES[axis] * side;
+                let (u, v) = (Vec3::AXES[(axis + 1) % 3], Vec3::AXES[(axis + 2) % 3]);
+                let corner = |a: f32, b: f32| {
+                    let pick = |k: usize| {
+                        let t = if k == axis {
+                            (side + 1.0) / 2.0
+                        } else {
+                            a * u[k] + b * v[k]
+                        };
+                        min[k] + t * (max[k] - min[k])
+                    };
+                    Vec3::new(pick(0), pick(1), pick(2))
+                };
+                let first = positions.len() as u32;
+                positions.extend([
+                    corner(0., 0.),
+                    corner(1., 0.),
+                    corner(1., 1.),
+                    corner(0., 1.),
+                ]);
+                normals.extend([n; 4]);
+                // u x v = n on the + side: counter-clockwise seen from outside.
+                if side > 0.0 {
+                    triangles
+                        .extend([[first, first + 1, first + 2], [first, first + 2, first + 3]]);
+                } else {
+                    triangles
+                        .extend([[first, first + 2, first + 1], [first, first + 3, first + 2]]);
+                }
+            }
+        }
+        Mesh::with_normals(positions, normals, triangles)
+    }
+
+    /// The same triangles with no shared vertices, each corner carrying its
+    /// triangle's normal: flat shading, as a ray caster sees a triangle.
+    pub fn flat_shaded(&self) -> Result<Mesh> {
+        let mut positions = Vec::new();
+        let mut normals = Vec::new();
+        for t in &self.triangles {
+            let [a, b, c] = t.map(|i| self.positions[i as usize]);
+            positions.extend([a, b, c]);
+            normals.extend([(b - a).cross(c - a).normalize_or_zero(); 3]);
+        }
+        let triangles = (0..self.triangles.len() as u32)
+            .map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
+            .collect();
+        Mesh::with_normals(positions, normals, triangles)
+    }
+
+    /// The square of side `size` centred on `centre` in the plane y = centre.y,
+    /// facing +Y: two triangles standing in for lesson 08's infinite floor.
+    pub fn floor(centre: Vec3, size: f32) -> Result<Mesh> {
+        let centre = finite3("centre", centre)?;
+        let h = positive("size", size)? / 2.0;
+        let positions = [(-h, -h), (-h, h), (h, h), (h, -h)]
+            .map(|(x, z)| centre + Vec3::new(x, 0.0, z))
+            .to_vec();
+        Mesh::with_normals(positions, vec![Vec3::Y; 4], vec![[0, 1, 2], [0, 2, 3]])
+    }
+
     /// Reads a Wavefront OBJ file with tobj, without triangulating: every face must
     /// be a triangle. Points and lines are skipped; all objects and groups are merged
     /// into one mesh. Normals come from the file when every vertex has one, else they

@@ -112,7 +112,7 @@ impl Lights<'_> {
     /// Lambert's law at `p`, the light visible unless the shadow map says otherwise.
     fn shade(&self, p: Vec3, n: Vec3, albedo: Vec3) -> Vec3 {
         lambert(p, n, albedo, self.light, &self.viewer, || {
-            self.shadow_map.is_none_or(|m| m.lit(p))
+            self.shadow_map.is_none_or(|m| m.lit(p, n))
         })
     }
 }

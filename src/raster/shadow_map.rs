@@ -14,7 +14,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::{BAND_ROWS, Cull, DepthRange, Instance, Pipeline, Settings, rasterize_triangle};
-use crate::camera::{Camera, Film, Frame, PinholeCamera};
+use crate::camera::{Camera, Film, Frame, MAX_RESOLUTION, PinholeCamera};
 use crate::error::{Error, Result, finite3, non_negative, positive};
 use crate::scene::PointLight;
 use crate::transform::Transform;
@@ -26,7 +26,7 @@ pub struct Shadows {
     /// Texels along each side of the square map.
     pub size: u32,
     /// How much farther than the recorded distance a point must be to count as
-    /// shadowed, in world units.
+    /// shadowed, in texel footprints (see [`ShadowMap::lit`]).
     pub bias: f32,
     /// Where the light's camera looks.
     pub centre: Vec3,
@@ -42,6 +42,7 @@ pub struct ShadowMap {
     light: Vec3,
     size: u32,
     bias: f32,
+    texel_angle: f32,
     distance: Vec<f32>,
 }
 
@@ -51,6 +52,8 @@ impl ShadowMap {
     /// |x - light| per texel (a z-buffer that stores distance instead of depth).
     pub fn build(instances: &[Instance], light: &PointLight, shadows: &Shadows) -> Result<Self> {
         let camera = light_camera(light.position, shadows)?;
+        let (lo, hi) = camera.film().x_extent();
+        let texel_angle = (hi - lo) / shadows.size as f32;
         let depth = DepthRange {
             near: 1e-3 * shadows.radius,
             far: 1e3 * shadows.radius + (shadows.centre - light.position).length(),
@@ -84,16 +87,21 @@ impl ShadowMap {
             light: light.position,
             size,
             bias: shadows.bias,
+            texel_angle,
             distance,
         })
     }
     // ANCHOR_END: build
 
     // ANCHOR: lit
-    /// Pass 2, for each shaded point: is the light visible from `p`? Project `p` into
-    /// the map and compare its distance to the light, minus the bias, with the
-    /// distance recorded there. Points outside the map are lit.
-    pub fn lit(&self, p: Vec3) -> bool {
+    /// Pass 2, for each shaded point: is the light visible from `p` (normal `n`)?
+    /// Project `p` into the map and compare its distance d to the light with the
+    /// distance recorded there. One texel stands for a patch of surface of width
+    /// about s = d (texel angle); tilted by theta from the light, that patch spans
+    /// s tan(theta) in distance, so the map can be off by that much. The comparison
+    /// forgives bias x s (1 + tan theta) (tan capped at 10): a slope-scaled bias in
+    /// texels. Points outside the map are lit.
+    pub fn lit(&self, p: Vec3, n: Vec3) -> bool {
         let clip = self.pipeline.to_clip(&Transform::IDENTITY, p);
         let Some(texel) = self.pipeline.to_screen(clip) else {
             return true;
@@ -104,7 +112,11 @@ impl ShadowMap {
             return true;
         }
         let recorded = self.distance[y as usize * self.size as usize + x as usize];
-        (p - self.light).length() - self.bias <= recorded
+        let d = (p - self.light).length();
+        let cos = (n.dot(self.light - p) / d).abs().clamp(0.0, 1.0);
+        let tan = ((1.0 - cos * cos).sqrt() / cos).min(10.0);
+        let footprint = self.texel_angle * d;
+        d - self.bias * footprint * (1.0 + tan) <= recorded
     }
     // ANCHOR_END: lit
 
@@ -124,6 +136,12 @@ impl ShadowMap {
 /// frames the sphere of `shadows.radius` around it.
 fn light_camera(light: Vec3, shadows: &Shadows) -> Result<Camera> {
     let size = shadows.size;
+    if size == 0 || size > MAX_RESOLUTION {
+        return Err(Error::Resolution {
+            param: "shadow map size",
+            value: size,
+        });
+    }
     non_negative("shadow bias", shadows.bias)?;
     let radius = positive("shadow radius", shadows.radius)?;
     let direction = finite3("shadow centre", shadows.centre)? - light;

@@ -17,6 +17,7 @@ pub mod framebuffer;
 pub mod lesson;
 pub mod offset;
 pub mod output;
+pub mod pathtrace;
 pub mod raster;
 pub mod ray;
 pub mod raycast;

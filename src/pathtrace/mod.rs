@@ -1,0 +1,30 @@
+//! Lesson 10: Monte Carlo path tracing, an estimator of Kajiya's rendering equation
+//! (Lecture 2), one idea per file:
+//!
+//! - [`rng`]: one deterministic random stream per pixel;
+//! - [`material`]: Lambert, mirror, glass;
+//! - [`scene`]: objects with emission, the lights among them, an environment;
+//! - [`light`]: choosing points on lights (area, cone);
+//! - [`estimator`]: the path loop, with four sampling strategies and Russian roulette;
+//! - [`lens`]: the thin-lens camera;
+//! - [`progressive`]: sample passes accumulated into an image;
+//! - [`pfm`]: the floating-point image file;
+//! - [`scenes`]: the Cornell box, the furnaces, the two-light scene.
+
+pub mod estimator;
+pub mod lens;
+pub mod light;
+pub mod material;
+pub mod pfm;
+pub mod progressive;
+pub mod rng;
+pub mod scene;
+pub mod scenes;
+
+pub use estimator::{Sampling, Settings, radiance};
+pub use lens::LensCamera;
+pub use light::SphereSampling;
+pub use material::Material;
+pub use progressive::{Accumulator, PixelSampling};
+pub use rng::Rng;
+pub use scene::{Object, Scene};

@@ -1,5 +1,11 @@
 //! Lesson 10: Monte Carlo path tracing; STABILITY S16 to S19; determinism; no NaN.
 
+#[path = "../examples/10_path_tracing.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use clap::Parser;
+
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use render_lessons::camera::{Film, PinholeCamera};
@@ -16,6 +22,67 @@ use render_lessons::pathtrace::{
 };
 use render_lessons::ray::Ray;
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
+
+/// The lesson's flags at a test-sized resolution and sample count; `extra` flags
+/// replace the defaults of the same name.
+fn small_args(extra: &[&str]) -> lesson::Args {
+    let defaults = [
+        ("--width", "32"),
+        ("--height", "24"),
+        ("--spp", "16"),
+        ("--reference-spp", "64"),
+        ("--out", "target/test-out/10"),
+    ];
+    let mut argv = vec!["10_path_tracing"];
+    for (flag, value) in defaults {
+        if !extra.contains(&flag) {
+            argv.extend([flag, value]);
+        }
+    }
+    argv.extend(extra);
+    lesson::Args::parse_from(argv)
+}
+
+#[test]
+fn numbers() {
+    let args = small_args(&[]);
+    let renders = lesson::render_all(&args, &indicatif::ProgressBar::hidden()).unwrap();
+    assert_eq!(renders.non_finite, 0);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args, &renders).unwrap());
+}
+
+#[test]
+fn the_lesson_refuses_bad_flags_naming_them() {
+    let hidden = indicatif::ProgressBar::hidden();
+    let cases: [(&[&str], &str); 5] = [
+        (&["--spp", "0"], "spp"),
+        (&["--reference-spp", "0"], "reference-spp"),
+        (&["--aperture", "-1"], "aperture"),
+        (&["--aperture", "0.5", "--focus", "0"], "focus distance"),
+        (&["--jitter", "--spp", "8"], "spp"),
+    ];
+    for (extra, name) in cases {
+        let err = lesson::render_all(&small_args(extra), &hidden)
+            .err()
+            .unwrap();
+        assert_eq!(err.param(), name, "{extra:?}: {err}");
+    }
+    assert!(lesson::Args::try_parse_from(["x", "--sampling", "best"]).is_err());
+}
+
+#[test]
+fn the_lesson_is_the_same_with_jitter_on_any_thread_count() {
+    let hidden = indicatif::ProgressBar::hidden();
+    let a = lesson::render_all(&small_args(&["--jitter", "--threads", "1"]), &hidden).unwrap();
+    let b = lesson::render_all(&small_args(&["--jitter", "--threads", "2"]), &hidden).unwrap();
+    for ((n, x), (m, y)) in a.ladder.iter().zip(&b.ladder) {
+        assert_eq!((n, x), (m, y));
+    }
+    assert_eq!(
+        a.ladder.iter().map(|(n, _)| *n).collect::<Vec<_>>(),
+        [1, 4, 16]
+    );
+}
 
 fn settings(sampling: Sampling, max_depth: Option<u32>, rr: bool) -> Settings {
     Settings {

@@ -48,6 +48,12 @@ impl LensCamera {
         }
     }
 
+    /// The same camera with a lens of radius `aperture` focused at `focus_distance`
+    /// (validated as in [`LensCamera::new`]).
+    pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<LensCamera> {
+        LensCamera::new(self.pinhole, aperture, focus_distance)
+    }
+
     /// The film: resolution and screen rectangle.
     pub fn film(&self) -> &Film {
         self.pinhole.film()

@@ -328,6 +328,64 @@ fn s19_direct_lighting_estimators_are_unbiased() {
     }
 }
 
+/// The S19 check for a quad light: a white floor point under the centre of a square
+/// light of side `side` at height `h`, radiance 1, reflects the form factor
+/// F = 4 F_corner(X, Y), X = Y = side / 2h, with the corner-rectangle form factor
+/// F_corner = (1 / 2 pi) [X / sqrt(1 + X^2) atan(Y / sqrt(1 + X^2)) + (X <-> Y)]
+/// (Howell's catalogue of configuration factors, case B-3).
+fn square_light_exact(side: f64, h: f64) -> f64 {
+    let x = side / (2.0 * h);
+    let a = (1.0 + x * x).sqrt();
+    let corner = 2.0 * (x / a) * (x / a).atan() / (2.0 * std::f64::consts::PI);
+    4.0 * corner
+}
+
+#[test]
+fn s19_for_a_quad_light_every_estimator_is_unbiased() {
+    let floor = Object::new(
+        Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap()),
+        Material::diffuse(Vec3::ONE).unwrap(),
+    );
+    let quad = Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).unwrap();
+    let light = Object::emitting(Shape::Quad(quad), Material::BLACK, Vec3::ONE);
+    let scene = Scene::new(vec![floor, light], Vec3::ZERO).unwrap();
+    let exact = square_light_exact(1.0, 1.0);
+    let ray = Ray::new(Vec3::new(0.0, 0.5, 0.0), -Vec3::Y).unwrap();
+    let n = 50_000;
+    for (label, s) in s19_estimators() {
+        let mut rng = Rng::for_pixel(8, 0, 0);
+        let st = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
+        eprintln!(
+            "S19 quad {label}: mean {:.6} sigma {:.4} exact {exact:.6}",
+            st.0, st.1
+        );
+        assert_within_4_sigma(&format!("quad, {label}"), st, n, exact);
+    }
+}
+
+#[test]
+fn strategies_agree_on_the_two_light_scene_with_indirect_light() {
+    let (scene, camera) = two_lights(8, 6).unwrap();
+    let n = 30_000;
+    let estimates: Vec<(Sampling, (f64, f64))> =
+        [Sampling::Cosine, Sampling::NextEvent, Sampling::Mis]
+            .into_iter()
+            .map(|sampling| {
+                let s = settings(sampling, Some(4), true);
+                (sampling, pixel_samples(&scene, &camera, &s, n, 9))
+            })
+            .collect();
+    for (a, (ma, sa)) in &estimates {
+        for (b, (mb, sb)) in &estimates {
+            let bound = 4.0 * (sa * sa + sb * sb).sqrt() / f64::from(n).sqrt();
+            assert!(
+                (ma - mb).abs() <= bound,
+                "{a:?} {ma} vs {b:?} {mb} (bound {bound})"
+            );
+        }
+    }
+}
+
 // ---------------------------------------------------------------- determinism
 
 fn cornell_image(threads: usize, passes: &[u32], pixels: PixelSampling) -> Vec<Vec3> {
@@ -477,6 +535,27 @@ proptest! {
         assert_finite(&lights, tangent, &s, seed);
         let graze = Ray::new(Vec3::new(x - 50.0, 1e-5, z - 85.0), Vec3::new(t, -1e-6, 1.0)).unwrap();
         assert_finite(&lights, graze, &s, seed);
+    }
+}
+
+#[test]
+fn radiance_is_finite_for_rays_far_out_and_nearly_parallel_to_the_floor() {
+    let rays = [
+        Ray::new(Vec3::new(3e38, 1e28, 0.0), Vec3::new(1.0, -1e-10, 0.0)).unwrap(),
+        Ray::new(Vec3::new(-3e38, 1e-30, 3e38), Vec3::new(-1.0, -1e-38, 1.0)).unwrap(),
+        Ray::new(Vec3::new(0.0, 1e-30, 0.0), Vec3::new(1.0, -1e-38, 0.0)).unwrap(),
+    ];
+    for scene in all_scenes() {
+        for sampling in [
+            Sampling::UniformHemisphere,
+            Sampling::Cosine,
+            Sampling::NextEvent,
+            Sampling::Mis,
+        ] {
+            for ray in rays {
+                assert_finite(&scene, ray, &settings(sampling, Some(4), true), 3);
+            }
+        }
     }
 }
 

@@ -14,6 +14,10 @@
 //!   after a diffuse vertex is then not counted, or it would be counted twice;
 //! - `Mis`: both, each weighted by Veach's power heuristic with beta = 2 (Veach and
 //!   Guibas 1995; Veach's thesis 1997, section 9.2).
+//!
+//! Mirror and glass reflect into a single direction, which a light sample cannot
+//! hit: after a specular bounce emission always counts fully. The environment is not
+//! a light that can be sampled, so every strategy counts it fully when a ray escapes.
 
 use glam::Vec3;
 
@@ -166,7 +170,9 @@ pub fn radiance(scene: &Scene, ray: Ray, rng: &mut Rng, settings: &Settings) -> 
             let weight = emission_weight(scene, index, &hit, previous, settings);
             sum += beta * object.emission * weight;
         }
-        if settings.max_depth.is_some_and(|m| bounce >= m) {
+        // A hit so far away that its point overflowed (an infinite plane met at a
+        // grazing angle) gives no finite place to continue from: the path ends.
+        if settings.max_depth.is_some_and(|m| bounce >= m) || !hit.point.is_finite() {
             break;
         }
         let Some(next) = scatter(scene, object.material, &ray, &hit, rng, settings) else {

@@ -65,7 +65,6 @@ impl Rng {
     pub fn next_f32(&mut self) -> f32 {
         (self.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0)
     }
-    // ANCHOR_END: rng
 
     /// Two uniform numbers in [0, 1), for 2D sampling.
     pub fn next_vec2(&mut self) -> glam::Vec2 {
@@ -73,3 +72,4 @@ impl Rng {
         glam::Vec2::new(u, self.next_f32())
     }
 }
+// ANCHOR_END: rng

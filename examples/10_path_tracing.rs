@@ -116,9 +116,12 @@ pub struct Args {
     /// The most bounces a path may take.
     #[arg(long, default_value_t = 8)]
     pub max_depth: u32,
-    /// Turn Russian roulette off (it is on by default).
-    #[arg(long = "no-rr", action = clap::ArgAction::SetFalse)]
+    /// Russian roulette on (the default; the last of --rr and --no-rr wins).
+    #[arg(long = "rr", overrides_with = "no_rr")]
     pub rr: bool,
+    /// Russian roulette off: every path runs to --max-depth unless it escapes.
+    #[arg(long = "no-rr", overrides_with = "rr")]
+    pub no_rr: bool,
     /// Jittered (stratified) pixel samples instead of independent ones; every
     /// sample count of the ladder is then a square, as it must be.
     #[arg(long)]
@@ -126,8 +129,9 @@ pub struct Args {
     /// Lens radius of the thin-lens camera (0: pinhole).
     #[arg(long, default_value = "0", value_parser = parse_finite)]
     pub aperture: f32,
-    /// Distance of the plane in focus (only used with an aperture).
-    #[arg(long, default_value = "200", value_parser = parse_finite)]
+    /// Distance of the plane in focus (only used with an aperture); the default is
+    /// about the distance of the Cornell box's glass sphere from the camera.
+    #[arg(long, default_value = "220", value_parser = parse_finite)]
     pub focus: f32,
     #[command(flatten)]
     pub output: Output,
@@ -157,7 +161,7 @@ pub fn settings(args: &Args, sampling: SamplingArg) -> Settings {
         sampling: sampling.sampling(),
         sphere_lights: SphereSampling::Cone,
         max_depth: Some(args.max_depth),
-        russian_roulette: args.rr,
+        russian_roulette: !args.no_rr,
         ..Settings::default()
     }
 }

@@ -11,6 +11,7 @@ use proptest::prelude::*;
 use render_lessons::camera::{Film, PinholeCamera};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
+use render_lessons::pathtrace::light;
 use render_lessons::pathtrace::material::{Material, fresnel};
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::{
@@ -68,6 +69,14 @@ fn the_lesson_refuses_bad_flags_naming_them() {
         assert_eq!(err.param(), name, "{extra:?}: {err}");
     }
     assert!(lesson::Args::try_parse_from(["x", "--sampling", "best"]).is_err());
+}
+
+#[test]
+fn rr_flags_the_last_one_wins() {
+    assert!(!small_args(&[]).no_rr);
+    assert!(small_args(&["--no-rr"]).no_rr);
+    assert!(!small_args(&["--no-rr", "--rr"]).no_rr);
+    assert!(small_args(&["--rr", "--no-rr"]).no_rr);
 }
 
 #[test]
@@ -484,6 +493,49 @@ fn assert_finite(scene: &Scene, ray: Ray, s: &Settings, seed: u64) {
             "{l} for {ray:?}, {s:?}"
         );
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// MIS needs the density a light sample reports and the density recomputed for
+    /// the same point (as when a BRDF sample hits it) to agree.
+    #[test]
+    fn light_sample_pdf_matches_light_pdf(
+        p in (-3.0f32..3.0, -3.0f32..3.0, -3.0f32..3.0),
+        u in (0.0f32..1.0, 0.0f32..1.0),
+        area in any::<bool>(),
+        quad in any::<bool>(),
+    ) {
+        let strategy = if area { SphereSampling::Area } else { SphereSampling::Cone };
+        let shape = if quad {
+            Shape::Quad(Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).unwrap())
+        } else {
+            Shape::Sphere(Sphere::new(Vec3::new(0.2, 0.5, -0.1), 0.7).unwrap())
+        };
+        let p = Vec3::from(p);
+        if let Some(y) = light::sample(&shape, p, Vec2::from(u), strategy) {
+            let again = light::pdf(&shape, p, y.point, y.normal, strategy);
+            prop_assert!(y.pdf.is_finite() && y.pdf > 0.0);
+            prop_assert!((again - y.pdf).abs() <= 1e-3 * y.pdf, "{} vs {}", again, y.pdf);
+        }
+    }
+}
+
+#[test]
+fn cone_samples_almost_never_miss_the_sphere() {
+    // A cone direction that misses by rounding at the rim gives no sample (a tiny
+    // bias); count how often.
+    let sphere = Shape::Sphere(Sphere::new(Vec3::new(0.0, 5.0, 0.0), 0.01).unwrap());
+    let mut rng = Rng::for_pixel(1, 2, 3);
+    let n = 200_000;
+    let misses = (0..n)
+        .filter(|_| {
+            light::sample(&sphere, Vec3::ZERO, rng.next_vec2(), SphereSampling::Cone).is_none()
+        })
+        .count();
+    eprintln!("cone misses: {misses} of {n}");
+    assert!(misses * 10_000 < n, "{misses} of {n}");
 }
 
 proptest! {

@@ -257,7 +257,7 @@ fn log_log_slope(points: &[(f64, f64)]) -> f64 {
 }
 
 fn convergence(pixels: PixelSampling) -> Vec<(f64, f64)> {
-    let reference = edge_image(PixelSampling::Jittered, 128 * 128, 99);
+    let reference = edge_image(PixelSampling::Jittered, 96 * 96, 99);
     [4u32, 16, 64, 256]
         .iter()
         .map(|&spp| {

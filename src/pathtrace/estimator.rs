@@ -22,102 +22,18 @@
 use glam::Vec3;
 
 use crate::basis::Basis;
-use crate::error::{Error, Result};
 use crate::offset::Offset;
-use crate::pathtrace::light::{self, SphereSampling};
-use crate::pathtrace::material::{Material, lambert};
+use crate::pathtrace::light;
+use crate::pathtrace::material::Material;
+use crate::pathtrace::mis::power_heuristic;
+use crate::pathtrace::next_event::direct_light;
 use crate::pathtrace::rng::Rng;
+use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::scene::Scene;
+use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
 use crate::shapes::Hit;
-
-/// How directions at diffuse vertices are chosen.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Sampling {
-    /// Uniform over the hemisphere (BRDF-blind).
-    UniformHemisphere,
-    /// Cosine-weighted (importance sampling of Lambert's f_r cos).
-    Cosine,
-    /// Cosine-weighted bounces plus one light sample per diffuse vertex.
-    NextEvent,
-    /// Both strategies combined by the power heuristic.
-    Mis,
-}
-
-/// Everything that chooses how a path is traced.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Settings {
-    /// How directions are chosen at diffuse vertices.
-    pub sampling: Sampling,
-    /// How spherical lights are sampled (NextEvent and Mis).
-    pub sphere_lights: SphereSampling,
-    /// The most bounces a path may take (`None`: no limit; then Russian roulette
-    /// must be on).
-    pub max_depth: Option<u32>,
-    /// Ends paths at random from bounce [`RR_START`] on, unbiased.
-    pub russian_roulette: bool,
-    /// How bounce and shadow rays leave their surface (STABILITY S13, S17).
-    pub offset: Offset,
-}
-
-/// Russian roulette starts after this many bounces.
-pub const RR_START: u32 = 3;
-
-/// The largest survival probability of Russian roulette: a white furnace (albedo 1)
-/// would otherwise never end a path.
-pub const RR_MAX_SURVIVAL: f32 = 0.95;
-
-impl Default for Settings {
-    /// MIS, cone-sampled spheres, depth 8, Russian roulette, scaled offset.
-    fn default() -> Settings {
-        Settings {
-            sampling: Sampling::Mis,
-            sphere_lights: SphereSampling::Cone,
-            max_depth: Some(8),
-            russian_roulette: true,
-            offset: Offset::Scaled,
-        }
-    }
-}
-
-impl Settings {
-    /// `Ok` if paths are certain to end and the offset is a usable number.
-    pub fn check(&self) -> Result<()> {
-        if self.max_depth.is_none() && !self.russian_roulette {
-            return Err(Error::Invalid {
-                param: "max_depth",
-                reason: "must be set when Russian roulette is off (paths would never end)",
-            });
-        }
-        if let Offset::Fixed(e) = self.offset
-            && !(e.is_finite() && e >= 0.0)
-        {
-            return Err(Error::Invalid {
-                param: "offset",
-                reason: "must be a finite distance >= 0",
-            });
-        }
-        Ok(())
-    }
-}
-
-// ANCHOR: power_heuristic
-/// Veach's power heuristic with beta = 2: the weight p_a^2 / (p_a^2 + p_b^2) of a
-/// sample drawn by strategy a, written as 1 / (1 + (p_b / p_a)^2) so that large
-/// densities cannot overflow. 0 when p_a is 0 (a could not have drawn the sample).
-pub fn power_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
-    if pdf_a.is_nan() || pdf_a <= 0.0 {
-        return 0.0;
-    }
-    let r = pdf_b / pdf_a;
-    if r.is_finite() {
-        1.0 / (1.0 + r * r)
-    } else {
-        0.0
-    }
-}
-// ANCHOR_END: power_heuristic
 
 /// Where the rays leaving a diffuse vertex start (the hit point moved off the
 /// surface by the offset) and the t they must exceed. Light samples are drawn from
@@ -126,9 +42,9 @@ pub fn power_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
 /// point itself, grazing rays inside a sphere disagree enough to bias the interior
 /// furnace by 2e-5.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Start {
-    point: Vec3,
-    t_min: f32,
+pub(super) struct Start {
+    pub(super) point: Vec3,
+    pub(super) t_min: f32,
 }
 
 impl Start {
@@ -309,85 +225,3 @@ fn diffuse_bounce(n: Vec3, albedo: Vec3, rng: &mut Rng, s: &Settings) -> (Vec3, 
 fn to_unit(frame: Basis, local: Vec3, n: Vec3) -> Vec3 {
     frame.to_world(local).normalize_or(n)
 }
-
-// ANCHOR: direct_light
-/// Next event estimation at a Lambertian vertex: one light chosen uniformly, one
-/// point on it, one shadow ray. Returns f_r L_e cos / pdf (times the MIS weight).
-fn direct_light(
-    scene: &Scene,
-    from: Start,
-    n: Vec3,
-    albedo: Vec3,
-    rng: &mut Rng,
-    s: &Settings,
-) -> Vec3 {
-    if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.lights().is_empty() {
-        return Vec3::ZERO;
-    }
-    let count = scene.lights().len();
-    let pick = ((rng.next_f32() * count as f32) as usize).min(count - 1);
-    let light = &scene.objects()[scene.lights()[pick]];
-    let u = rng.next_vec2();
-    let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
-        return Vec3::ZERO;
-    };
-    let Some(cos) = unoccluded(scene, from, n, y.point, y.normal, s.offset) else {
-        return Vec3::ZERO;
-    };
-    let pdf = y.pdf / count as f32;
-    let weight = match s.sampling {
-        Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
-        _ => 1.0,
-    };
-    lambert(albedo) * light.emission * (cos * weight / pdf)
-}
-// ANCHOR_END: direct_light
-
-/// The cosine (with the unit normal `n`) of the direction from `from` to the light
-/// point `y` (normal `n_l`), if y is above the surface and no object lies between:
-/// a shadow ray from `from` to y moved off the light towards it by `offset`.
-fn unoccluded(
-    scene: &Scene,
-    from: Start,
-    n: Vec3,
-    y: Vec3,
-    n_l: Vec3,
-    offset: Offset,
-) -> Option<f32> {
-    let direction = (y - from.point).try_normalize()?;
-    let cos = n.dot(direction);
-    if cos.is_nan() || cos <= 0.0 {
-        return None;
-    }
-    let n_l = if n_l.dot(from.point - y) >= 0.0 {
-        n_l
-    } else {
-        -n_l
-    };
-    let (to, t_end) = offset.start(y, n_l);
-    let gap = to - from.point;
-    let ray = Ray::new(from.point, gap).ok()?;
-    let t_max = gap.length() - t_end;
-    (!scene.occluded(&ray, from.t_min, t_max)).then_some(cos)
-}
-
-// ANCHOR: roulette
-/// Russian roulette: from bounce [`RR_START`] on, the path survives with probability
-/// q = min(max channel of beta, 0.95) and beta is divided by q, so the expected
-/// value is unchanged (Arvo and Kirk 1990). `false` when the path ends, also when
-/// beta has become zero.
-fn survives_roulette(beta: &mut Vec3, bounce: u32, rng: &mut Rng, s: &Settings) -> bool {
-    if beta.max_element() <= 0.0 {
-        return false;
-    }
-    if !s.russian_roulette || bounce < RR_START {
-        return true;
-    }
-    let q = beta.max_element().min(RR_MAX_SURVIVAL);
-    if rng.next_f32() >= q {
-        return false;
-    }
-    *beta /= q;
-    true
-}
-// ANCHOR_END: roulette

@@ -14,10 +14,11 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
-use crate::pathtrace::estimator::{Settings, radiance};
+use crate::pathtrace::estimator::radiance;
 use crate::pathtrace::lens::LensCamera;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::scene::Scene;
+use crate::pathtrace::settings::Settings;
 use crate::render::in_pool;
 
 /// Where in its pixel each sample's camera ray passes.

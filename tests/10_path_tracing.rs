@@ -819,6 +819,21 @@ fn bad_input_is_an_error_naming_the_parameter() {
         "reflectance"
     );
     assert_eq!(param(Material::glass(0.0).unwrap_err()), "ior");
+    let hand_made = Object::new(
+        sphere(),
+        Material::Diffuse {
+            albedo: Vec3::splat(f32::NAN),
+        },
+    );
+    assert_eq!(
+        param(Scene::new(vec![hand_made], Vec3::ZERO).unwrap_err()),
+        "albedo"
+    );
+    let hand_made = Object::new(sphere(), Material::Glass { ior: -1.5 });
+    assert_eq!(
+        param(Scene::new(vec![hand_made], Vec3::ZERO).unwrap_err()),
+        "ior"
+    );
     assert_eq!(
         param(Quad::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0).unwrap_err()),
         "edges (a x b)"

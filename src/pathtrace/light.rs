@@ -41,8 +41,9 @@ pub struct LightPoint {
     pub pdf: f32,
 }
 
-/// Below this distance ratio the cone around a sphere is treated as undefined (p is
-/// inside or on the sphere): sin^2 theta_max = r^2 / d^2 above 0.999.
+/// From sin^2 theta_max = r^2 / d^2 = 0.999 on (p inside the sphere, on it, or within
+/// 0.05 % of its radius outside) no usable cone exists, and spheres are sampled by
+/// area instead.
 const MAX_CONE_SIN2: f32 = 0.999;
 
 // ANCHOR: area_pdf

@@ -61,6 +61,16 @@ impl Material {
         })
     }
 
+    /// `Ok` if the material's numbers are usable (the enum's fields are public, so a
+    /// material may have been built without the constructors above).
+    pub fn check(&self) -> Result<()> {
+        match *self {
+            Material::Diffuse { albedo } => fraction3("albedo", albedo).map(|_| ()),
+            Material::Mirror { reflectance } => fraction3("reflectance", reflectance).map(|_| ()),
+            Material::Glass { ior } => positive("ior", ior).map(|_| ()),
+        }
+    }
+
     /// A black surface: absorbs everything (the back of a light, for instance).
     pub const BLACK: Material = Material::Diffuse { albedo: Vec3::ZERO };
 }

@@ -74,13 +74,15 @@ fn radiance(param: &'static str, v: Vec3) -> Result<Vec3> {
 impl Scene {
     /// A scene of `objects` under a uniform `environment` radiance.
     ///
-    /// Rejects NaN, infinite or negative emission and environment, and emission on
+    /// Rejects NaN, infinite or negative emission and environment, materials that
+    /// fail [`Material::check`], and emission on
     /// any shape but a sphere or a quad: every emitter must be a light that next
     /// event estimation can sample, or its light would be missed.
     pub fn new(objects: Vec<Object>, environment: Vec3) -> Result<Scene> {
         let mut lights = Vec::new();
         for (i, o) in objects.iter().enumerate() {
             radiance("emission", o.emission)?;
+            o.material.check()?;
             if o.is_emissive() {
                 if !matches!(o.shape, Shape::Sphere(_) | Shape::Quad(_)) {
                     return Err(Error::Invalid {

@@ -52,6 +52,11 @@ pub enum Error {
         value: u32,
         min: u32,
     },
+    /// A parameter's value is outside what it may be; `reason` says what is allowed.
+    Invalid {
+        param: &'static str,
+        reason: &'static str,
+    },
     /// An OBJ file could not be turned into a mesh; `line` (1-based) when known.
     Obj {
         path: String,
@@ -76,7 +81,8 @@ impl Error {
             | Error::NotOrthonormal { param, .. }
             | Error::NotSymmetric { param, .. }
             | Error::Singular { param }
-            | Error::TooFew { param, .. } => param,
+            | Error::TooFew { param, .. }
+            | Error::Invalid { param, .. } => param,
             Error::UpParallelToDirection => "up",
             Error::NonFinitePixel { .. } => "pixel",
             Error::Io { path, .. } | Error::Obj { path, .. } => path,
@@ -130,6 +136,7 @@ impl fmt::Display for Error {
             Error::TooFew { param, value, min } => {
                 write!(f, "{param} must be at least {min} (got {value})")
             }
+            Error::Invalid { param, reason } => write!(f, "{param} {reason}"),
             Error::VertexIndex {
                 triangle,
                 index,

@@ -18,6 +18,7 @@ pub mod lesson;
 pub mod lighting;
 pub mod offset;
 pub mod output;
+pub mod pathtrace;
 pub mod raster;
 pub mod ray;
 pub mod raycast;

@@ -13,6 +13,7 @@ use crate::ray::Ray;
 pub mod aabb;
 pub mod instance;
 pub mod plane;
+pub mod quad;
 pub mod quadric;
 pub mod sphere;
 pub mod triangle;
@@ -20,6 +21,7 @@ pub mod triangle;
 pub use aabb::Aabb;
 pub use instance::Instance;
 pub use plane::Plane;
+pub use quad::Quad;
 pub use quadric::Quadric;
 pub use sphere::Sphere;
 pub use triangle::Triangle;
@@ -65,6 +67,7 @@ pub enum Shape {
     Aabb(Aabb),
     Triangle(Triangle),
     Quadric(Quadric),
+    Quad(Quad),
     Instance(Box<Instance>),
 }
 
@@ -77,6 +80,7 @@ impl Shape {
             Shape::Aabb(b) => b.hit(ray, t_min, t_max),
             Shape::Triangle(tri) => tri.hit(ray, t_min, t_max),
             Shape::Quadric(q) => q.hit(ray, t_min, t_max),
+            Shape::Quad(q) => q.hit(ray, t_min, t_max),
             Shape::Instance(i) => i.hit(ray, t_min, t_max),
         }
     }

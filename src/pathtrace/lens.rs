@@ -1,0 +1,101 @@
+//! The thin-lens camera: depth of field on top of the pinhole camera of Lecture 4.
+//!
+//! A pinhole lets through one ray per screen point; a lens of radius `aperture` lets
+//! through a bundle, all of which meet again on the plane in focus, at distance
+//! `focus_distance` in front of the lens (pbrt-v3 section 6.2.3). Points on that plane
+//! are sharp; points nearer or farther blur into discs. With aperture 0 the bundle is
+//! the pinhole ray itself, bit for bit.
+
+use glam::{Vec2, Vec3};
+
+use crate::camera::{Film, PinholeCamera};
+use crate::error::{Error, Result, finite, positive};
+use crate::ray::Ray;
+use crate::sampling::uniform_disc;
+
+/// A pinhole camera's frame and film, with a lens of radius `aperture` focused at
+/// `focus_distance`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LensCamera {
+    pinhole: PinholeCamera,
+    aperture: f32,
+    focus_distance: f32,
+}
+
+impl LensCamera {
+    /// A thin lens on `pinhole`'s frame and film. Rejects a negative or non-finite
+    /// aperture and a focus distance that is not finite and positive.
+    pub fn new(pinhole: PinholeCamera, aperture: f32, focus_distance: f32) -> Result<LensCamera> {
+        if finite("aperture", aperture)? < 0.0 {
+            return Err(Error::Invalid {
+                param: "aperture",
+                reason: "must be >= 0 (0 is a pinhole)",
+            });
+        }
+        Ok(LensCamera {
+            pinhole,
+            aperture,
+            focus_distance: positive("focus distance", focus_distance)?,
+        })
+    }
+
+    /// The pinhole camera itself (aperture 0; focus distance irrelevant, set to 1).
+    pub fn pinhole(pinhole: PinholeCamera) -> LensCamera {
+        LensCamera {
+            pinhole,
+            aperture: 0.0,
+            focus_distance: 1.0,
+        }
+    }
+
+    /// The same camera with a lens of radius `aperture` focused at `focus_distance`
+    /// (validated as in [`LensCamera::new`]).
+    pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<LensCamera> {
+        LensCamera::new(self.pinhole, aperture, focus_distance)
+    }
+
+    /// The film: resolution and screen rectangle.
+    pub fn film(&self) -> &Film {
+        self.pinhole.film()
+    }
+
+    // ANCHOR: ray
+    /// The ray through the continuous pixel position `pixel` (column, row from the
+    /// top; pixel (x, y)'s centre is (x + 0.5, y + 0.5)) and the lens point chosen by
+    /// `u` in the unit square.
+    ///
+    /// In camera space the pinhole ray goes from the eye through the screen point
+    /// s = (x, y, -screen distance); it meets the plane in focus at
+    /// f = s focus_distance / screen_distance. The lens ray starts at a uniform point
+    /// l of the lens disc (z = 0) and goes towards f.
+    pub fn ray(&self, pixel: Vec2, u: Vec2) -> Ray {
+        let s = screen_point(self.pinhole.film(), pixel).extend(-self.pinhole.screen_distance());
+        let (origin, direction) = if self.aperture == 0.0 {
+            (Vec3::ZERO, s.normalize())
+        } else {
+            let lens = (self.aperture * uniform_disc(u)).extend(0.0);
+            let focus = s * (self.focus_distance / self.pinhole.screen_distance());
+            (lens, (focus - lens).normalize())
+        };
+        let frame = self.pinhole.frame();
+        Ray::from_checked(
+            frame.point_to_world(origin),
+            frame.vector_to_world(direction),
+        )
+    }
+    // ANCHOR_END: ray
+}
+
+/// The screen-plane point of a continuous pixel position, the inverse of
+/// [`Film::plane_to_pixel`]; at a pixel centre it is bit for bit
+/// [`Film::pixel_to_plane`], rows flipped the same way (counted from the bottom on the
+/// plane, from the top in the image).
+fn screen_point(film: &Film, pixel: Vec2) -> Vec2 {
+    let (x_min, x_max) = film.x_extent();
+    let (y_min, y_max) = film.y_extent();
+    let from_bottom = film.height() as f32 - pixel.y;
+    Vec2::new(
+        pixel.x / film.width() as f32 * (x_max - x_min) + x_min,
+        from_bottom / film.height() as f32 * (y_max - y_min) + y_min,
+    )
+}

@@ -1,0 +1,170 @@
+//! How a surface scatters light: the f_r of the rendering equation (Lecture 2,
+//! Kajiya 1986) for the three materials the path tracer's scenes need.
+//!
+//! - `Diffuse`: Lambert's law, f_r = albedo / pi, the same in every direction.
+//! - `Mirror`: a perfect mirror; f_r is a Dirac delta around the reflected direction.
+//! - `Glass`: a smooth dielectric (no absorption): reflects with the exact Fresnel
+//!   probability F, refracts (Snell's law) with probability 1 - F.
+//!
+//! The two specular materials cannot be evaluated for a given pair of directions,
+//! only sampled; the estimator therefore never aims light samples at them.
+
+use std::f32::consts::PI;
+
+use glam::Vec3;
+
+use crate::error::{Error, Result, finite3, positive};
+
+/// A surface's scattering.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Material {
+    /// Lambertian: f_r = albedo / pi.
+    Diffuse { albedo: Vec3 },
+    /// A perfect mirror reflecting the fraction `reflectance` of the light.
+    Mirror { reflectance: Vec3 },
+    /// A smooth dielectric with index of refraction `ior` (outside: 1, vacuum/air).
+    Glass { ior: f32 },
+}
+
+/// `v` if every component lies in [0, 1]: more would create energy.
+fn fraction3(param: &'static str, v: Vec3) -> Result<Vec3> {
+    let v = finite3(param, v)?;
+    if v.min_element() >= 0.0 && v.max_element() <= 1.0 {
+        Ok(v)
+    } else {
+        Err(Error::Invalid {
+            param,
+            reason: "must lie between 0 and 1 in every channel",
+        })
+    }
+}
+
+impl Material {
+    /// A Lambertian surface; rejects an albedo outside [0, 1].
+    pub fn diffuse(albedo: Vec3) -> Result<Material> {
+        Ok(Material::Diffuse {
+            albedo: fraction3("albedo", albedo)?,
+        })
+    }
+
+    /// A mirror; rejects a reflectance outside [0, 1].
+    pub fn mirror(reflectance: Vec3) -> Result<Material> {
+        Ok(Material::Mirror {
+            reflectance: fraction3("reflectance", reflectance)?,
+        })
+    }
+
+    /// Glass; rejects an index of refraction that is not finite and positive.
+    pub fn glass(ior: f32) -> Result<Material> {
+        Ok(Material::Glass {
+            ior: positive("ior", ior)?,
+        })
+    }
+
+    /// `Ok` if the material's numbers are usable (the enum's fields are public, so a
+    /// material may have been built without the constructors above).
+    pub fn check(&self) -> Result<()> {
+        match *self {
+            Material::Diffuse { albedo } => fraction3("albedo", albedo).map(|_| ()),
+            Material::Mirror { reflectance } => fraction3("reflectance", reflectance).map(|_| ()),
+            Material::Glass { ior } => positive("ior", ior).map(|_| ()),
+        }
+    }
+
+    /// A black surface: absorbs everything (the back of a light, for instance).
+    pub const BLACK: Material = Material::Diffuse { albedo: Vec3::ZERO };
+}
+
+// ANCHOR: lambert
+/// Lambert's BRDF, f_r = albedo / pi: with it a white surface (albedo 1) under
+/// uniform radiance L reflects exactly L, since the cosine integrates to pi.
+pub fn lambert(albedo: Vec3) -> Vec3 {
+    albedo / PI
+}
+// ANCHOR_END: lambert
+
+/// A direction a specular surface sends the path on, and the factor the path's
+/// throughput is multiplied by.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Specular {
+    /// The new unit direction.
+    pub direction: Vec3,
+    /// f_r cos / pdf for the chosen direction.
+    pub weight: Vec3,
+    /// `true` if the path went through the surface (refraction).
+    pub transmitted: bool,
+}
+
+// ANCHOR: reflect
+/// The mirror direction of `d` about the unit normal `n`: d - 2 (d . n) n.
+pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
+    d - 2.0 * d.dot(n) * n
+}
+// ANCHOR_END: reflect
+
+// ANCHOR: fresnel
+/// The exact Fresnel reflectance of a smooth dielectric for unpolarised light (the
+/// mean of the s and p polarisations; Born and Wolf, pbrt-v3 section 8.2.1):
+///
+/// r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),
+/// r_p = (cos_i - eta cos_t) / (cos_i + eta cos_t),  F = (r_s^2 + r_p^2) / 2,
+///
+/// where eta = n_i / n_t and `cos_i` > 0 is the cosine of the incident angle. Returns
+/// 1 (total internal reflection) when sin_t = eta sin_i reaches 1, and at grazing
+/// incidence, cos_i = 0. Schlick's approximation is not used.
+pub fn fresnel(cos_i: f32, eta: f32) -> (f32, f32) {
+    let cos_i = cos_i.clamp(0.0, 1.0);
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if sin2_t >= 1.0 || cos_i == 0.0 {
+        return (1.0, 0.0);
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    let r_p = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    (0.5 * (r_s * r_s + r_p * r_p), cos_t)
+}
+// ANCHOR_END: fresnel
+
+impl Material {
+    /// `true` for mirror and glass, whose f_r is a delta function.
+    pub fn is_specular(&self) -> bool {
+        !matches!(self, Material::Diffuse { .. })
+    }
+
+    // ANCHOR: specular
+    /// Where a specular surface sends a path arriving along the unit direction `d`.
+    /// `n` is the unit normal on the side the path arrives from (d . n <= 0),
+    /// `entering` says whether that side is the outside, and `u` in [0, 1) chooses
+    /// between reflection and refraction for glass (reflect if u < F).
+    ///
+    /// Refraction: t = eta d + (eta cos_i - cos_t) n (pbrt-v3 eq. 8.8 rearranged), with
+    /// weight 1: choosing with probability F cancels the factor F of f_r. Radiance is
+    /// not scaled by eta^2: the scenes' paths enter and leave the glass, and the two
+    /// factors cancel (smallpt does the same). `None` for a diffuse material.
+    pub fn scatter_specular(&self, d: Vec3, n: Vec3, entering: bool, u: f32) -> Option<Specular> {
+        let mirror = |weight| Specular {
+            direction: reflect(d, n).normalize_or(n),
+            weight,
+            transmitted: false,
+        };
+        match *self {
+            Material::Diffuse { .. } => None,
+            Material::Mirror { reflectance } => Some(mirror(reflectance)),
+            Material::Glass { ior } => {
+                let eta = if entering { 1.0 / ior } else { ior };
+                let cos_i = -d.dot(n);
+                let (f, cos_t) = fresnel(cos_i, eta);
+                if u < f {
+                    return Some(mirror(Vec3::ONE));
+                }
+                let t = eta * d + (eta * cos_i - cos_t) * n;
+                Some(Specular {
+                    direction: t.normalize_or(-n),
+                    weight: Vec3::ONE,
+                    transmitted: true,
+                })
+            }
+        }
+    }
+    // ANCHOR_END: specular
+}

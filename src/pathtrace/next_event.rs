@@ -1,0 +1,76 @@
+//! Next event estimation: at a diffuse vertex, one sample aimed at a light and a
+//! shadow ray to check that nothing blocks it (the direct-lighting estimator of
+//! pbrt-v3 section 14.3, with the MIS weight of Veach 1997 section 9.2).
+
+use glam::Vec3;
+
+use crate::offset::Offset;
+use crate::pathtrace::estimator::Start;
+use crate::pathtrace::light;
+use crate::pathtrace::material::lambert;
+use crate::pathtrace::mis::power_heuristic;
+use crate::pathtrace::rng::Rng;
+use crate::pathtrace::scene::Scene;
+use crate::pathtrace::settings::{Sampling, Settings};
+use crate::ray::Ray;
+
+// ANCHOR: direct_light
+/// Next event estimation at a Lambertian vertex: one light chosen uniformly, one
+/// point on it, one shadow ray. Returns f_r L_e cos / pdf (times the MIS weight).
+pub(super) fn direct_light(
+    scene: &Scene,
+    from: Start,
+    n: Vec3,
+    albedo: Vec3,
+    rng: &mut Rng,
+    s: &Settings,
+) -> Vec3 {
+    if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.lights().is_empty() {
+        return Vec3::ZERO;
+    }
+    let count = scene.lights().len();
+    let pick = ((rng.next_f32() * count as f32) as usize).min(count - 1);
+    let light = &scene.objects()[scene.lights()[pick]];
+    let u = rng.next_vec2();
+    let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
+        return Vec3::ZERO;
+    };
+    let Some(cos) = unoccluded(scene, from, n, y.point, y.normal, s.offset) else {
+        return Vec3::ZERO;
+    };
+    let pdf = y.pdf / count as f32;
+    let weight = match s.sampling {
+        Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
+        _ => 1.0,
+    };
+    lambert(albedo) * light.emission * (cos * weight / pdf)
+}
+// ANCHOR_END: direct_light
+
+/// The cosine (with the unit normal `n`) of the direction from `from` to the light
+/// point `y` (normal `n_l`), if y is above the surface and no object lies between:
+/// a shadow ray from `from` to y moved off the light towards it by `offset`.
+fn unoccluded(
+    scene: &Scene,
+    from: Start,
+    n: Vec3,
+    y: Vec3,
+    n_l: Vec3,
+    offset: Offset,
+) -> Option<f32> {
+    let direction = (y - from.point).try_normalize()?;
+    let cos = n.dot(direction);
+    if cos.is_nan() || cos <= 0.0 {
+        return None;
+    }
+    let n_l = if n_l.dot(from.point - y) >= 0.0 {
+        n_l
+    } else {
+        -n_l
+    };
+    let (to, t_end) = offset.start(y, n_l);
+    let gap = to - from.point;
+    let ray = Ray::new(from.point, gap).ok()?;
+    let t_max = gap.length() - t_end;
+    (!scene.occluded(&ray, from.t_min, t_max)).then_some(cos)
+}

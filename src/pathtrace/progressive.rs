@@ -1,0 +1,205 @@
+//! Progressive rendering: passes of samples added to per-pixel sums, the image being
+//! their mean at any time.
+//!
+//! Every pixel keeps its own random stream ([`Rng::for_pixel`]) from pass to pass,
+//! so its samples are drawn in the same order whatever the number of threads and
+//! however the samples are split into passes: with independent pixel samples, one
+//! pass of 4 samples and two passes of 2 give the same image bit for bit. (Jittered
+//! samples are stratified within a pass, so the split changes which strata are used;
+//! a fixed split is still bit for bit repeatable.) Sums are f64: after many samples
+//! an f32 sum would stop growing by small samples.
+
+use glam::{DVec3, Vec2, Vec3};
+use rayon::prelude::*;
+
+use crate::error::{Error, Result};
+use crate::framebuffer::Framebuffer;
+use crate::pathtrace::estimator::radiance;
+use crate::pathtrace::lens::LensCamera;
+use crate::pathtrace::rng::Rng;
+use crate::pathtrace::scene::Scene;
+use crate::pathtrace::settings::Settings;
+use crate::render::in_pool;
+
+/// Where in its pixel each sample's camera ray passes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelSampling {
+    /// Uniformly anywhere in the pixel, each sample on its own.
+    Independent,
+    /// Jittered (stratified): the pixel cut into sqrt(spp) x sqrt(spp) cells, one
+    /// uniform sample in each; spp must be a square number.
+    Jittered,
+}
+
+/// Per-pixel sums of radiance samples, and the random streams that continue them.
+#[derive(Clone, Debug)]
+pub struct Accumulator {
+    width: u32,
+    height: u32,
+    sums: Vec<DVec3>,
+    rngs: Vec<Rng>,
+    samples: u32,
+    non_finite: u64,
+}
+
+impl Accumulator {
+    /// Empty sums for `camera`'s film, streams seeded from (`seed`, x, y).
+    pub fn new(camera: &LensCamera, seed: u64) -> Accumulator {
+        let (width, height) = (camera.film().width(), camera.film().height());
+        let rngs = (0..height)
+            .flat_map(|y| (0..width).map(move |x| Rng::for_pixel(seed, x, y)))
+            .collect();
+        Accumulator {
+            width,
+            height,
+            sums: vec![DVec3::ZERO; width as usize * height as usize],
+            rngs,
+            samples: 0,
+            non_finite: 0,
+        }
+    }
+
+    /// Samples per pixel so far.
+    pub fn samples(&self) -> u32 {
+        self.samples
+    }
+
+    /// How many samples were NaN or infinite and counted as 0 instead. The estimator
+    /// guards every division, so this should stay 0; the tests check that it does.
+    pub fn non_finite(&self) -> u64 {
+        self.non_finite
+    }
+
+    // ANCHOR: render_pass
+    /// Adds `spp` samples to every pixel, rows in parallel on `threads` threads
+    /// (`None`: all cores), and returns the mean image so far.
+    pub fn render_pass(
+        &mut self,
+        scene: &Scene,
+        camera: &LensCamera,
+        settings: &Settings,
+        pixels: PixelSampling,
+        spp: u32,
+        threads: Option<usize>,
+    ) -> Result<Framebuffer> {
+        check_pass(self, camera, settings, pixels, spp)?;
+        let width = self.width as usize;
+        let row = |(y, (sums, rngs)): (usize, (&mut [DVec3], &mut [Rng]))| -> u64 {
+            let mut bad = 0;
+            for (x, (sum, rng)) in sums.iter_mut().zip(rngs).enumerate() {
+                for i in 0..spp {
+                    let offset = pixel_offset(pixels, spp, i, rng);
+                    let position = Vec2::new(x as f32, y as f32) + offset;
+                    let ray = camera.ray(position, rng.next_vec2());
+                    let sample = radiance(scene, ray, rng, settings);
+                    // A documented guard, not a fix: counted, and tested to stay 0.
+                    if sample.is_finite() {
+                        *sum += sample.as_dvec3();
+                    } else {
+                        bad += 1;
+                    }
+                }
+            }
+            bad
+        };
+        let (sums, rngs) = (&mut self.sums, &mut self.rngs);
+        let bad: u64 = in_pool(threads, || {
+            sums.par_chunks_mut(width)
+                .zip(rngs.par_chunks_mut(width))
+                .enumerate()
+                .map(row)
+                .sum()
+        })?;
+        self.non_finite += bad;
+        self.samples += spp;
+        self.image()
+    }
+    // ANCHOR_END: render_pass
+
+    /// The mean of the samples so far (black before the first pass).
+    pub fn image(&self) -> Result<Framebuffer> {
+        let n = f64::from(self.samples.max(1));
+        let pixels = self.sums.iter().map(|s| (*s / n).as_vec3()).collect();
+        Framebuffer::from_pixels(self.width, self.height, pixels)
+    }
+}
+
+fn check_pass(
+    acc: &Accumulator,
+    camera: &LensCamera,
+    settings: &Settings,
+    pixels: PixelSampling,
+    spp: u32,
+) -> Result<()> {
+    settings.check()?;
+    if spp == 0 {
+        return Err(Error::TooFew {
+            param: "spp",
+            value: spp,
+            min: 1,
+        });
+    }
+    if pixels == PixelSampling::Jittered && strata(spp) * strata(spp) != spp {
+        return Err(Error::Invalid {
+            param: "spp",
+            reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
+        });
+    }
+    if (camera.film().width(), camera.film().height()) != (acc.width, acc.height) {
+        return Err(Error::Invalid {
+            param: "camera",
+            reason: "must have the film size the accumulator was made for",
+        });
+    }
+    if acc.samples.checked_add(spp).is_none() {
+        return Err(Error::Invalid {
+            param: "spp",
+            reason: "would overflow the sample count",
+        });
+    }
+    Ok(())
+}
+
+/// The number of strata per side, floor(sqrt(spp)).
+fn strata(spp: u32) -> u32 {
+    let mut n = (f64::from(spp).sqrt()) as u32;
+    while n * n > spp {
+        n -= 1;
+    }
+    while (n + 1) * (n + 1) <= spp {
+        n += 1;
+    }
+    n
+}
+
+// ANCHOR: pixel_offset
+/// Where sample `i` of `spp` falls in its pixel, in [0, 1)^2.
+fn pixel_offset(pixels: PixelSampling, spp: u32, i: u32, rng: &mut Rng) -> Vec2 {
+    let u = rng.next_vec2();
+    match pixels {
+        PixelSampling::Independent => u,
+        PixelSampling::Jittered => {
+            let n = strata(spp);
+            let cell = Vec2::new((i % n) as f32, (i / n) as f32);
+            // (cell + u) / n stays below 1: u < 1 - 2^-24 rounds down at most to it.
+            ((cell + u) / n as f32).min(Vec2::splat(1.0 - f32::EPSILON / 2.0))
+        }
+    }
+}
+// ANCHOR_END: pixel_offset
+
+/// The root mean square difference between two images of the same size, over all
+/// channels, in f64.
+pub fn rmse(a: &Framebuffer, b: &Framebuffer) -> f64 {
+    let mut sum = 0.0;
+    let mut n = 0.0f64;
+    for y in 0..a.height().min(b.height()) {
+        for x in 0..a.width().min(b.width()) {
+            let d = a.get(x, y).unwrap_or(Vec3::ZERO).as_dvec3()
+                - b.get(x, y).unwrap_or(Vec3::ZERO).as_dvec3();
+            sum += d.length_squared();
+            n += 3.0;
+        }
+    }
+    (sum / n.max(1.0)).sqrt()
+}

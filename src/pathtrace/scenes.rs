@@ -1,0 +1,154 @@
+//! The lesson's scenes: smallpt's Cornell box, the two furnaces of STABILITY S16 and
+//! S17, and a floor under a small and a large light (where MIS earns its keep).
+
+use glam::Vec3;
+
+use crate::camera::{Film, Frame, PinholeCamera};
+use crate::error::Result;
+use crate::pathtrace::lens::LensCamera;
+use crate::pathtrace::material::Material;
+use crate::pathtrace::scene::{Object, Scene};
+use crate::shapes::{Plane, Quad, Shape, Sphere};
+
+/// A pinhole camera at `eye` looking at `target` (up +Y), its screen at distance 1
+/// spanning `half_height` above and below the centre, width by the aspect ratio.
+pub fn look_camera(
+    width: u32,
+    height: u32,
+    eye: Vec3,
+    direction: Vec3,
+    half_height: f32,
+) -> Result<LensCamera> {
+    let half_width = half_height * width as f32 / height as f32;
+    let film = Film::new(
+        width,
+        height,
+        (-half_width, half_width),
+        (-half_height, half_height),
+    )?;
+    let frame = Frame::look(eye, direction, Vec3::Y)?;
+    Ok(LensCamera::pinhole(PinholeCamera::new(film, 1.0, frame)?))
+}
+
+/// The side of the Cornell box's square light: its area equals the disc smallpt's
+/// light sphere (radius 600, centre 0.27 above 600 over the ceiling) cuts out of the
+/// ceiling, pi (2 * 600 * 0.27 - 0.27^2) = 1017.6, so with smallpt's radiance 12 it
+/// emits the same power downwards, pi * 12 * 1017.6 = 38 362 (flux of a Lambertian
+/// emitter: pi L A).
+pub const CORNELL_LIGHT_SIDE: f32 = 31.900_2;
+
+/// How far below the ceiling the light hangs: emission is two-sided, and its back,
+/// facing the ceiling this closely, lights nothing a camera ray can reach.
+pub const CORNELL_LIGHT_GAP: f32 = 0.05;
+
+// ANCHOR: cornell
+/// smallpt's Cornell box (Kevin Beason, 2008) with planes for walls instead of
+/// spheres of radius 1e5, and a square ceiling light instead of the radius-600
+/// sphere that pokes through the ceiling (see [`CORNELL_LIGHT_SIDE`]).
+///
+/// smallpt's front wall is black (albedo 0, no emission): a ray that hits it gets
+/// the same radiance, 0, as a ray that escapes, so it is left out.
+pub fn cornell(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+    let grey = Material::diffuse(Vec3::splat(0.75))?;
+    let wall = |point: (f32, f32, f32), normal: Vec3, material| -> Result<Object> {
+        let plane = Plane::new(Vec3::from(point), normal)?;
+        Ok(Object::new(Shape::Plane(plane), material))
+    };
+    let ball = |centre: Vec3, material| -> Result<Object> {
+        Ok(Object::new(
+            Shape::Sphere(Sphere::new(centre, 16.5)?),
+            material,
+        ))
+    };
+    let s = CORNELL_LIGHT_SIDE;
+    let light = Quad::new(
+        Vec3::new(50.0 - s / 2.0, 81.6 - CORNELL_LIGHT_GAP, 81.6 - s / 2.0),
+        Vec3::new(s, 0.0, 0.0),
+        Vec3::new(0.0, 0.0, s),
+    )?;
+    let objects = vec![
+        wall(
+            (1.0, 0.0, 0.0),
+            Vec3::X,
+            Material::diffuse(Vec3::new(0.75, 0.25, 0.25))?,
+        )?,
+        wall(
+            (99.0, 0.0, 0.0),
+            -Vec3::X,
+            Material::diffuse(Vec3::new(0.25, 0.25, 0.75))?,
+        )?,
+        wall((0.0, 0.0, 0.0), Vec3::Z, grey)?,
+        wall((0.0, 0.0, 0.0), Vec3::Y, grey)?,
+        wall((0.0, 81.6, 0.0), -Vec3::Y, grey)?,
+        ball(
+            Vec3::new(27.0, 16.5, 47.0),
+            Material::mirror(Vec3::splat(0.999))?,
+        )?,
+        ball(Vec3::new(73.0, 16.5, 78.0), Material::glass(1.5)?)?,
+        Object::emitting(Shape::Quad(light), Material::BLACK, Vec3::splat(12.0)),
+    ];
+    let scene = Scene::new(objects, Vec3::ZERO)?;
+    // smallpt: cy has length 0.5135 and spans [-0.5, 0.5] of it, so the screen at
+    // distance 1 is 0.5135 high in all; cx = w * 0.5135 / h wide.
+    let camera = look_camera(
+        width,
+        height,
+        Vec3::new(50.0, 52.0, 295.6),
+        Vec3::new(0.0, -0.042_612, -1.0),
+        0.5135 / 2.0,
+    )?;
+    Ok((scene, camera))
+}
+// ANCHOR_END: cornell
+
+// ANCHOR: furnaces
+/// STABILITY S16 (pbrt-v4's interior furnace): a unit sphere of albedo 0.5 that
+/// emits 0.5, seen from its centre. Every path sees 0.5 + 0.5 * 0.5 + ...: depth d
+/// gives 0.5 (1 - 0.5^(d+1)) / (1 - 0.5), infinite depth exactly 1.
+pub fn interior_furnace(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+    let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)?);
+    let objects = vec![Object::emitting(
+        sphere,
+        Material::diffuse(Vec3::splat(0.5))?,
+        Vec3::splat(0.5),
+    )];
+    let camera = look_camera(width, height, Vec3::ZERO, -Vec3::Z, 0.5)?;
+    Ok((Scene::new(objects, Vec3::ZERO)?, camera))
+}
+
+/// STABILITY S17: a unit sphere of albedo 0.5 centred at `centre`, in an environment
+/// of radiance 1. A ray that hits it sees exactly 0.5 (one bounce, then the
+/// environment); each wrong self-hit multiplies by 0.5 again. The camera, 3 units in
+/// front along +Z, sees only the sphere.
+pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, LensCamera)> {
+    let sphere = Shape::Sphere(Sphere::new(centre, 1.0)?);
+    let objects = vec![Object::new(sphere, Material::diffuse(Vec3::splat(0.5))?)];
+    let camera = look_camera(width, height, centre + 3.0 * Vec3::Z, -Vec3::Z, 0.2)?;
+    Ok((Scene::new(objects, Vec3::ONE)?, camera))
+}
+// ANCHOR_END: furnaces
+
+// ANCHOR: two_lights
+/// A grey floor under two spherical lights of equal power (L r^2 = 1): a small hot
+/// one (radius 0.05, radiance 400) on the left, a large dim one (radius 1, radiance 1)
+/// on the right: Veach's (1997, fig. 9.2) lesson with a Lambertian floor.
+///
+/// Direct light only, 100 000 samples, standard deviation of one sample (measured):
+/// under the small light cosine sampling gives 9.9, area light sampling 1.08; under
+/// the large light area light sampling gives 1.24 (points on the sphere seen at wide
+/// angles), cosine 1.69, and MIS of the two 0.25. Cone sampling of the spheres (0.48
+/// and 0.21) leaves MIS little to add on a Lambertian floor.
+pub fn two_lights(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+    let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
+    let small = Sphere::new(Vec3::new(-1.5, 1.0, 0.0), 0.05)?;
+    let large = Sphere::new(Vec3::new(1.5, 1.5, 0.0), 1.0)?;
+    let objects = vec![
+        Object::new(Shape::Plane(floor), Material::diffuse(Vec3::splat(0.5))?),
+        Object::emitting(Shape::Sphere(small), Material::BLACK, Vec3::splat(400.0)),
+        Object::emitting(Shape::Sphere(large), Material::BLACK, Vec3::splat(1.0)),
+    ];
+    let eye = Vec3::new(0.0, 4.0, 6.0);
+    let camera = look_camera(width, height, eye, Vec3::new(0.0, 0.5, 0.0) - eye, 0.5)?;
+    Ok((Scene::new(objects, Vec3::ZERO)?, camera))
+}
+// ANCHOR_END: two_lights

@@ -1,0 +1,71 @@
+//! What the path tracer's estimator can be asked to do: the sampling strategy, the
+//! path length, Russian roulette, and how rays leave surfaces.
+
+use crate::error::{Error, Result};
+use crate::offset::Offset;
+use crate::pathtrace::light::SphereSampling;
+
+/// How directions at diffuse vertices are chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sampling {
+    /// Uniform over the hemisphere (BRDF-blind).
+    UniformHemisphere,
+    /// Cosine-weighted (importance sampling of Lambert's f_r cos).
+    Cosine,
+    /// Cosine-weighted bounces plus one light sample per diffuse vertex.
+    NextEvent,
+    /// Both strategies combined by the power heuristic.
+    Mis,
+}
+
+/// Everything that chooses how a path is traced.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// How directions are chosen at diffuse vertices.
+    pub sampling: Sampling,
+    /// How spherical lights are sampled (NextEvent and Mis).
+    pub sphere_lights: SphereSampling,
+    /// The most bounces a path may take. With d bounces emission is gathered from
+    /// at most d + 1 surfaces (d = 0: only the emission the camera ray meets), so the
+    /// interior furnace at d = 8 gives 0.5 (1 - 0.5^9) / (1 - 0.5) (STABILITY S16).
+    /// `None`: no limit; then Russian roulette must be on.
+    pub max_depth: Option<u32>,
+    /// Ends paths at random from bounce [`RR_START`](crate::pathtrace::roulette::RR_START) on, unbiased.
+    pub russian_roulette: bool,
+    /// How bounce and shadow rays leave their surface (STABILITY S13, S17).
+    pub offset: Offset,
+}
+
+impl Default for Settings {
+    /// MIS, cone-sampled spheres, depth 8, Russian roulette, scaled offset.
+    fn default() -> Settings {
+        Settings {
+            sampling: Sampling::Mis,
+            sphere_lights: SphereSampling::Cone,
+            max_depth: Some(8),
+            russian_roulette: true,
+            offset: Offset::Scaled,
+        }
+    }
+}
+
+impl Settings {
+    /// `Ok` if paths are certain to end and the offset is a usable number.
+    pub fn check(&self) -> Result<()> {
+        if self.max_depth.is_none() && !self.russian_roulette {
+            return Err(Error::Invalid {
+                param: "max_depth",
+                reason: "must be set when Russian roulette is off (paths would never end)",
+            });
+        }
+        if let Offset::Fixed(e) = self.offset
+            && !(e.is_finite() && e >= 0.0)
+        {
+            return Err(Error::Invalid {
+                param: "offset",
+                reason: "must be a finite distance >= 0",
+            });
+        }
+        Ok(())
+    }
+}

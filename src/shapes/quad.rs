@@ -1,0 +1,83 @@
+//! Ray / parallelogram ("quad"): a corner q and two edge vectors a and b span the
+//! points q + u a + v b with 0 <= u, v <= 1. The path tracer's area lights are quads.
+
+use glam::Vec3;
+
+use crate::error::{Result, finite3, unit};
+use crate::ray::Ray;
+use crate::shapes::{Hit, in_open_range};
+
+/// The parallelogram with corner `corner` and edges `a`, `b`; its normal is
+/// (a x b)/|a x b|.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quad {
+    corner: Vec3,
+    a: Vec3,
+    b: Vec3,
+    normal: Vec3,
+    area: f32,
+}
+
+impl Quad {
+    /// The quad q + u a + v b, 0 <= u, v <= 1. Rejects non-finite input and parallel
+    /// (or zero) edges, which span no area.
+    pub fn new(corner: Vec3, a: Vec3, b: Vec3) -> Result<Quad> {
+        let (corner, a, b) = (
+            finite3("corner", corner)?,
+            finite3("edge a", a)?,
+            finite3("edge b", b)?,
+        );
+        let cross = a.cross(b);
+        let normal = unit("edges (a x b)", cross)?;
+        Ok(Quad {
+            corner,
+            a,
+            b,
+            normal,
+            area: cross.length(),
+        })
+    }
+
+    /// The corner q.
+    pub fn corner(&self) -> Vec3 {
+        self.corner
+    }
+
+    /// The point q + u a + v b.
+    pub fn point(&self, u: f32, v: f32) -> Vec3 {
+        self.corner + u * self.a + v * self.b
+    }
+
+    /// The unit normal (a x b)/|a x b|.
+    pub fn normal(&self) -> Vec3 {
+        self.normal
+    }
+
+    /// The area |a x b|.
+    pub fn area(&self) -> f32 {
+        self.area
+    }
+
+    // ANCHOR: quad_hit
+    /// The crossing with `t_min < t < t_max`, if any: the plane through q first, then
+    /// the hit's coordinates (u, v) in the edges, from the dual vectors
+    /// w = n / |a x b| with u = w . (p' x b) and v = w . (a x p'), p' = p - q.
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let denom = ray.direction().dot(self.normal);
+        if denom == 0.0 {
+            return None;
+        }
+        let t = (self.corner - ray.origin()).dot(self.normal) / denom;
+        if !in_open_range(t, t_min, t_max) {
+            return None;
+        }
+        let point = ray.at(t);
+        let rel = point - self.corner;
+        let w = self.normal / self.area;
+        let u = w.dot(rel.cross(self.b));
+        let v = w.dot(self.a.cross(rel));
+        let inside = (0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v);
+        inside.then(|| Hit::new(ray, t, point, self.normal))
+    }
+    // ANCHOR_END: quad_hit
+}

@@ -1,0 +1,841 @@
+//! Lesson 10: Monte Carlo path tracing; STABILITY S16 to S19; determinism; no NaN.
+
+#[path = "../examples/10_path_tracing.rs"]
+#[allow(dead_code)]
+mod lesson;
+
+use clap::Parser;
+
+use glam::{Vec2, Vec3};
+use proptest::prelude::*;
+use render_lessons::camera::{Film, PinholeCamera};
+use render_lessons::error::Error;
+use render_lessons::offset::Offset;
+use render_lessons::pathtrace::light;
+use render_lessons::pathtrace::material::{Material, fresnel};
+use render_lessons::pathtrace::progressive::rmse;
+use render_lessons::pathtrace::scenes::{
+    cornell, grey_furnace, interior_furnace, look_camera, two_lights,
+};
+use render_lessons::pathtrace::{
+    Accumulator, LensCamera, Object, PixelSampling, Rng, Sampling, Scene, Settings, SphereSampling,
+    radiance,
+};
+use render_lessons::ray::Ray;
+use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
+
+/// The lesson's flags at a test-sized resolution and sample count; `extra` flags
+/// replace the defaults of the same name.
+fn small_args(extra: &[&str]) -> lesson::Args {
+    let defaults = [
+        ("--width", "32"),
+        ("--height", "24"),
+        ("--spp", "16"),
+        ("--reference-spp", "64"),
+        ("--out", "target/test-out/10"),
+    ];
+    let mut argv = vec!["10_path_tracing"];
+    for (flag, value) in defaults {
+        if !extra.contains(&flag) {
+            argv.extend([flag, value]);
+        }
+    }
+    argv.extend(extra);
+    lesson::Args::parse_from(argv)
+}
+
+#[test]
+fn numbers() {
+    let args = small_args(&[]);
+    let renders = lesson::render_all(&args, &indicatif::ProgressBar::hidden()).unwrap();
+    assert_eq!(renders.non_finite, 0);
+    insta::assert_snapshot!("numbers", lesson::numbers(&args, &renders).unwrap());
+}
+
+#[test]
+fn the_lesson_refuses_bad_flags_naming_them() {
+    let hidden = indicatif::ProgressBar::hidden();
+    let cases: [(&[&str], &str); 5] = [
+        (&["--spp", "0"], "spp"),
+        (&["--reference-spp", "0"], "reference-spp"),
+        (&["--aperture", "-1"], "aperture"),
+        (&["--aperture", "0.5", "--focus", "0"], "focus distance"),
+        (&["--jitter", "--spp", "8"], "spp"),
+    ];
+    for (extra, name) in cases {
+        let err = lesson::render_all(&small_args(extra), &hidden)
+            .err()
+            .unwrap();
+        assert_eq!(err.param(), name, "{extra:?}: {err}");
+    }
+    assert!(lesson::Args::try_parse_from(["x", "--sampling", "best"]).is_err());
+}
+
+#[test]
+fn rr_flags_the_last_one_wins() {
+    assert!(!small_args(&[]).no_rr);
+    assert!(small_args(&["--no-rr"]).no_rr);
+    assert!(!small_args(&["--no-rr", "--rr"]).no_rr);
+    assert!(small_args(&["--rr", "--no-rr"]).no_rr);
+}
+
+#[test]
+fn the_lesson_is_the_same_with_jitter_on_any_thread_count() {
+    let hidden = indicatif::ProgressBar::hidden();
+    let a = lesson::render_all(&small_args(&["--jitter", "--threads", "1"]), &hidden).unwrap();
+    let b = lesson::render_all(&small_args(&["--jitter", "--threads", "2"]), &hidden).unwrap();
+    for ((n, x), (m, y)) in a.ladder.iter().zip(&b.ladder) {
+        assert_eq!((n, x), (m, y));
+    }
+    assert_eq!(
+        a.ladder.iter().map(|(n, _)| *n).collect::<Vec<_>>(),
+        [1, 4, 16]
+    );
+}
+
+fn settings(sampling: Sampling, max_depth: Option<u32>, rr: bool) -> Settings {
+    Settings {
+        sampling,
+        max_depth,
+        russian_roulette: rr,
+        ..Settings::default()
+    }
+}
+
+/// Mean and standard deviation (of one sample) of `n` samples of `f`, in f64.
+fn stats(n: u32, mut f: impl FnMut(u32) -> f32) -> (f64, f64) {
+    let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+    for i in 0..n {
+        let x = f64::from(f(i));
+        sum += x;
+        sum2 += x * x;
+    }
+    let mean = sum / f64::from(n);
+    let var = (sum2 / f64::from(n) - mean * mean).max(0.0);
+    (mean, var.sqrt())
+}
+
+/// `|mean - exact| <= 4 sigma / sqrt(n)`, with a floor for zero-variance estimators.
+fn assert_within_4_sigma(label: &str, (mean, sigma): (f64, f64), n: u32, exact: f64) {
+    let bound = 4.0 * sigma / f64::from(n).sqrt() + 1e-6;
+    assert!(
+        (mean - exact).abs() <= bound,
+        "{label}: mean {mean} vs exact {exact}, 4 sigma/sqrt(N) = {bound}"
+    );
+}
+
+/// `n` samples of the radiance along pixel rays of `camera`, cycling over pixels.
+fn pixel_samples(
+    scene: &Scene,
+    camera: &LensCamera,
+    s: &Settings,
+    n: u32,
+    seed: u64,
+) -> (f64, f64) {
+    let (w, h) = (camera.film().width(), camera.film().height());
+    let mut rng = Rng::for_pixel(seed, 0, 0);
+    stats(n, |i| {
+        let (x, y) = (i % w, (i / w) % h);
+        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), Vec2::ZERO);
+        radiance(scene, ray, &mut rng, s).x
+    })
+}
+
+// ---------------------------------------------------------------- S16
+
+const S16_DEPTH_8: f64 = 0.998_046_875;
+
+#[test]
+fn s16_interior_furnace_cosine_depth_8_is_exact_with_zero_variance() {
+    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let s = settings(Sampling::Cosine, Some(8), false);
+    let (mean, sigma) = pixel_samples(&scene, &camera, &s, 4096, 1);
+    assert!((mean - S16_DEPTH_8).abs() < 1e-6, "mean {mean}");
+    assert!(sigma < 1e-6, "sigma {sigma}");
+}
+
+#[test]
+fn s16_interior_furnace_uniform_hemisphere_within_4_sigma() {
+    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let s = settings(Sampling::UniformHemisphere, Some(8), false);
+    let n = 40_000;
+    let st = pixel_samples(&scene, &camera, &s, n, 2);
+    assert!(st.1 > 0.01, "uniform sampling is not zero-variance here");
+    assert_within_4_sigma("uniform hemisphere", st, n, S16_DEPTH_8);
+}
+
+#[test]
+fn s16_interior_furnace_russian_roulette_infinite_depth_gives_1() {
+    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let n = 40_000;
+    for sampling in [Sampling::Cosine, Sampling::NextEvent, Sampling::Mis] {
+        let s = settings(sampling, None, true);
+        let st = pixel_samples(&scene, &camera, &s, n, 3);
+        assert_within_4_sigma(&format!("{sampling:?} + RR"), st, n, 1.0);
+    }
+}
+
+#[test]
+fn s16_next_event_and_mis_agree_with_the_depth_8_value() {
+    // The sphere is its own light: light samples from inside use area sampling.
+    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let n = 20_000;
+    for sampling in [Sampling::NextEvent, Sampling::Mis] {
+        for sphere_lights in [SphereSampling::Area, SphereSampling::Cone] {
+            let s = Settings {
+                sphere_lights,
+                ..settings(sampling, Some(8), false)
+            };
+            let st = pixel_samples(&scene, &camera, &s, n, 4);
+            assert_within_4_sigma(
+                &format!("{sampling:?} {sphere_lights:?}"),
+                st,
+                n,
+                S16_DEPTH_8,
+            );
+        }
+    }
+}
+
+// ---------------------------------------------------------------- S17
+
+fn grey_furnace_mean(offset: Offset, centre: Vec3) -> (f64, f64) {
+    let (scene, camera) = grey_furnace(16, 16, centre).unwrap();
+    let s = Settings {
+        offset,
+        ..settings(Sampling::Cosine, Some(8), false)
+    };
+    pixel_samples(&scene, &camera, &s, 16_384, 5)
+}
+
+#[test]
+fn s17_grey_furnace_with_scaled_offset_is_exactly_one_half() {
+    for centre in [Vec3::ZERO, Vec3::new(1e4, 5e3, 2.5e3)] {
+        let (mean, sigma) = grey_furnace_mean(Offset::Scaled, centre);
+        assert!((mean - 0.5).abs() < 1e-6, "centre {centre}: mean {mean}");
+        assert!(sigma < 1e-6, "centre {centre}: sigma {sigma}");
+    }
+}
+
+#[test]
+fn s17_grey_furnace_without_offset_darkens_the_failure_case() {
+    let (mean, _) = grey_furnace_mean(Offset::Fixed(0.0), Vec3::ZERO);
+    eprintln!("S17 no offset: mean {mean}");
+    assert!(mean < 0.45, "mean {mean}");
+    let (far, _) = grey_furnace_mean(Offset::Fixed(1e-4), Vec3::new(1e4, 5e3, 2.5e3));
+    eprintln!("S17 t > 1e-4 at X = 1e4: mean {far}");
+    assert!(far < 0.45, "mean {far}");
+}
+
+// ---------------------------------------------------------------- S18
+
+/// The grey furnace sphere seen whole: with cosine sampling a sample is 0.5 on the
+/// sphere and 1 off it, so the only noise is where in the pixel the ray passes, and
+/// only the silhouette's pixels are noisy.
+fn edge_image(
+    pixels: PixelSampling,
+    spp: u32,
+    seed: u64,
+) -> render_lessons::framebuffer::Framebuffer {
+    let (scene, _) = grey_furnace(4, 4, Vec3::ZERO).unwrap();
+    let camera = look_camera(24, 24, 3.0 * Vec3::Z, -Vec3::Z, 0.45).unwrap();
+    let s = settings(Sampling::Cosine, Some(1), false);
+    let mut acc = Accumulator::new(&camera, seed);
+    acc.render_pass(&scene, &camera, &s, pixels, spp, Some(1))
+        .unwrap()
+}
+
+/// Least-squares slope of log(rmse) against log(n).
+fn log_log_slope(points: &[(f64, f64)]) -> f64 {
+    let n = points.len() as f64;
+    let xs: Vec<f64> = points.iter().map(|p| p.0.ln()).collect();
+    let ys: Vec<f64> = points.iter().map(|p| p.1.ln()).collect();
+    let (mx, my) = (xs.iter().sum::<f64>() / n, ys.iter().sum::<f64>() / n);
+    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
+    sxy / sxx
+}
+
+fn convergence(pixels: PixelSampling) -> Vec<(f64, f64)> {
+    let reference = edge_image(PixelSampling::Jittered, 96 * 96, 99);
+    [4u32, 16, 64, 256]
+        .iter()
+        .map(|&spp| {
+            let mse: f64 = (0..6)
+                .map(|seed| rmse(&edge_image(pixels, spp, seed), &reference).powi(2))
+                .sum::<f64>()
+                / 6.0;
+            (f64::from(spp), mse.sqrt())
+        })
+        .collect()
+}
+
+#[test]
+fn s18_rmse_slope_independent_is_minus_one_half_jittered_steeper() {
+    let independent = convergence(PixelSampling::Independent);
+    let jittered = convergence(PixelSampling::Jittered);
+    let (a, b) = (log_log_slope(&independent), log_log_slope(&jittered));
+    eprintln!("S18 independent {independent:?} slope {a}");
+    eprintln!("S18 jittered {jittered:?} slope {b}");
+    assert!((a + 0.5).abs() <= 0.05, "independent slope {a}");
+    assert!(b < -0.55, "jittered slope {b}");
+}
+
+// ---------------------------------------------------------------- S19
+
+/// A white Lambertian floor under a sphere light of radius `r` and radiance 1 whose
+/// centre is at height 1: the floor point below it reflects exactly r^2.
+fn s19_scene(r: f32) -> Scene {
+    let floor = Object::new(
+        Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap()),
+        Material::diffuse(Vec3::ONE).unwrap(),
+    );
+    let light = Object::emitting(
+        Shape::Sphere(Sphere::new(Vec3::Y, r).unwrap()),
+        Material::BLACK,
+        Vec3::ONE,
+    );
+    Scene::new(vec![floor, light], Vec3::ZERO).unwrap()
+}
+
+fn s19_estimators() -> Vec<(&'static str, Settings)> {
+    let with = |sampling, sphere_lights| Settings {
+        sphere_lights,
+        ..settings(sampling, Some(1), false)
+    };
+    vec![
+        (
+            "uniform hemisphere",
+            with(Sampling::UniformHemisphere, SphereSampling::Cone),
+        ),
+        ("cosine", with(Sampling::Cosine, SphereSampling::Cone)),
+        (
+            "light area",
+            with(Sampling::NextEvent, SphereSampling::Area),
+        ),
+        (
+            "light cone",
+            with(Sampling::NextEvent, SphereSampling::Cone),
+        ),
+        ("MIS (area)", with(Sampling::Mis, SphereSampling::Area)),
+        ("MIS (cone)", with(Sampling::Mis, SphereSampling::Cone)),
+    ]
+}
+
+#[test]
+fn s19_direct_lighting_estimators_are_unbiased() {
+    let n = 50_000;
+    for r in [0.5f32, 0.1] {
+        let scene = s19_scene(r);
+        let ray = Ray::new(Vec3::new(0.0, 0.5 * (1.0 - r), 0.0), -Vec3::Y).unwrap();
+        for (label, s) in s19_estimators() {
+            let mut rng = Rng::for_pixel(7, 0, 0);
+            let st = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
+            eprintln!("S19 R = {r} {label}: mean {:.6} sigma {:.4}", st.0, st.1);
+            assert_within_4_sigma(&format!("R = {r}, {label}"), st, n, f64::from(r * r));
+        }
+    }
+}
+
+/// The S19 check for a quad light: a white floor point under the centre of a square
+/// light of side `side` at height `h`, radiance 1, reflects the form factor
+/// F = 4 F_corner(X, Y), X = Y = side / 2h, with the corner-rectangle form factor
+/// F_corner = (1 / 2 pi) [X / sqrt(1 + X^2) atan(Y / sqrt(1 + X^2)) + (X <-> Y)]
+/// (Howell's catalogue of configuration factors, case B-3).
+fn square_light_exact(side: f64, h: f64) -> f64 {
+    let x = side / (2.0 * h);
+    let a = (1.0 + x * x).sqrt();
+    let corner = 2.0 * (x / a) * (x / a).atan() / (2.0 * std::f64::consts::PI);
+    4.0 * corner
+}
+
+#[test]
+fn s19_for_a_quad_light_every_estimator_is_unbiased() {
+    let floor = Object::new(
+        Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap()),
+        Material::diffuse(Vec3::ONE).unwrap(),
+    );
+    let quad = Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).unwrap();
+    let light = Object::emitting(Shape::Quad(quad), Material::BLACK, Vec3::ONE);
+    let scene = Scene::new(vec![floor, light], Vec3::ZERO).unwrap();
+    let exact = square_light_exact(1.0, 1.0);
+    let ray = Ray::new(Vec3::new(0.0, 0.5, 0.0), -Vec3::Y).unwrap();
+    let n = 50_000;
+    for (label, s) in s19_estimators() {
+        let mut rng = Rng::for_pixel(8, 0, 0);
+        let st = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
+        eprintln!(
+            "S19 quad {label}: mean {:.6} sigma {:.4} exact {exact:.6}",
+            st.0, st.1
+        );
+        assert_within_4_sigma(&format!("quad, {label}"), st, n, exact);
+    }
+}
+
+#[test]
+fn strategies_agree_on_the_two_light_scene_with_indirect_light() {
+    let (scene, camera) = two_lights(8, 6).unwrap();
+    let n = 30_000;
+    let estimates: Vec<(Sampling, (f64, f64))> =
+        [Sampling::Cosine, Sampling::NextEvent, Sampling::Mis]
+            .into_iter()
+            .map(|sampling| {
+                let s = settings(sampling, Some(4), true);
+                (sampling, pixel_samples(&scene, &camera, &s, n, 9))
+            })
+            .collect();
+    for (a, (ma, sa)) in &estimates {
+        for (b, (mb, sb)) in &estimates {
+            let bound = 4.0 * (sa * sa + sb * sb).sqrt() / f64::from(n).sqrt();
+            assert!(
+                (ma - mb).abs() <= bound,
+                "{a:?} {ma} vs {b:?} {mb} (bound {bound})"
+            );
+        }
+    }
+}
+
+// ---------------------------------------------------------------- determinism
+
+fn cornell_image(threads: usize, passes: &[u32], pixels: PixelSampling) -> Vec<Vec3> {
+    let (scene, camera) = cornell(16, 12).unwrap();
+    let mut acc = Accumulator::new(&camera, 42);
+    let s = Settings::default();
+    let mut last = None;
+    for &spp in passes {
+        last = Some(
+            acc.render_pass(&scene, &camera, &s, pixels, spp, Some(threads))
+                .unwrap(),
+        );
+    }
+    assert_eq!(acc.non_finite(), 0);
+    let img = last.unwrap();
+    (0..12)
+        .flat_map(|y| (0..16).map(move |x| (x, y)))
+        .map(|(x, y)| img.get(x, y).unwrap())
+        .collect()
+}
+
+fn bits(v: &[Vec3]) -> Vec<[u32; 3]> {
+    v.iter().map(|c| c.to_array().map(f32::to_bits)).collect()
+}
+
+#[test]
+fn same_image_bit_for_bit_with_1_and_2_threads() {
+    for pixels in [PixelSampling::Independent, PixelSampling::Jittered] {
+        let one = cornell_image(1, &[4], pixels);
+        let two = cornell_image(2, &[4], pixels);
+        assert_eq!(bits(&one), bits(&two));
+        assert!(one.iter().any(|c| c.max_element() > 0.0));
+    }
+}
+
+#[test]
+fn one_pass_of_4_equals_two_passes_of_2_for_independent_samples() {
+    let one = cornell_image(2, &[4], PixelSampling::Independent);
+    let two = cornell_image(2, &[2, 2], PixelSampling::Independent);
+    assert_eq!(bits(&one), bits(&two));
+}
+
+#[test]
+fn rng_streams_differ_between_pixels_and_stay_in_0_1() {
+    let mut a = Rng::for_pixel(1, 0, 0);
+    let mut b = Rng::for_pixel(1, 1, 0);
+    let mut c = Rng::for_pixel(1, 0, 1);
+    let xa: Vec<u32> = (0..8).map(|_| a.next_u32()).collect();
+    let xb: Vec<u32> = (0..8).map(|_| b.next_u32()).collect();
+    let xc: Vec<u32> = (0..8).map(|_| c.next_u32()).collect();
+    assert_ne!(xa, xb);
+    assert_ne!(xa, xc);
+    let mut r = Rng::for_pixel(3, 4, 5);
+    let (lo, hi) = (0..100_000)
+        .map(|_| r.next_f32())
+        .fold((1.0f32, 0.0f32), |(lo, hi), x| (lo.min(x), hi.max(x)));
+    assert!(lo >= 0.0 && hi < 1.0 && lo < 1e-3 && hi > 0.999);
+}
+
+// ---------------------------------------------------------------- no NaN
+
+fn any_sampling() -> impl Strategy<Value = Settings> {
+    (0..4usize, any::<bool>(), any::<bool>(), 0..3u32).prop_map(|(s, area, rr, depth)| Settings {
+        sampling: [
+            Sampling::UniformHemisphere,
+            Sampling::Cosine,
+            Sampling::NextEvent,
+            Sampling::Mis,
+        ][s],
+        sphere_lights: if area {
+            SphereSampling::Area
+        } else {
+            SphereSampling::Cone
+        },
+        max_depth: [Some(1), Some(8), None][depth as usize].or(if rr { None } else { Some(8) }),
+        russian_roulette: rr,
+        offset: Offset::Scaled,
+    })
+}
+
+fn all_scenes() -> Vec<Scene> {
+    vec![
+        cornell(4, 4).unwrap().0,
+        interior_furnace(4, 4).unwrap().0,
+        grey_furnace(4, 4, Vec3::ZERO).unwrap().0,
+        two_lights(4, 4).unwrap().0,
+    ]
+}
+
+fn assert_finite(scene: &Scene, ray: Ray, s: &Settings, seed: u64) {
+    let mut rng = Rng::for_pixel(seed, 0, 0);
+    for _ in 0..16 {
+        let l = radiance(scene, ray, &mut rng, s);
+        assert!(
+            l.is_finite() && l.min_element() >= 0.0,
+            "{l} for {ray:?}, {s:?}"
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// MIS needs the density a light sample reports and the density recomputed for
+    /// the same point (as when a BRDF sample hits it) to agree.
+    #[test]
+    fn light_sample_pdf_matches_light_pdf(
+        p in (-3.0f32..3.0, -3.0f32..3.0, -3.0f32..3.0),
+        u in (0.0f32..1.0, 0.0f32..1.0),
+        area in any::<bool>(),
+        quad in any::<bool>(),
+    ) {
+        let strategy = if area { SphereSampling::Area } else { SphereSampling::Cone };
+        let shape = if quad {
+            Shape::Quad(Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).unwrap())
+        } else {
+            Shape::Sphere(Sphere::new(Vec3::new(0.2, 0.5, -0.1), 0.7).unwrap())
+        };
+        let p = Vec3::from(p);
+        if let Some(y) = light::sample(&shape, p, Vec2::from(u), strategy) {
+            let again = light::pdf(&shape, p, y.point, y.normal, strategy);
+            prop_assert!(y.pdf.is_finite() && y.pdf > 0.0);
+            prop_assert!((again - y.pdf).abs() <= 1e-3 * y.pdf, "{} vs {}", again, y.pdf);
+        }
+    }
+}
+
+#[test]
+fn cone_samples_almost_never_miss_the_sphere() {
+    // A cone direction that misses by rounding at the rim gives no sample (a tiny
+    // bias); count how often.
+    let sphere = Shape::Sphere(Sphere::new(Vec3::new(0.0, 5.0, 0.0), 0.01).unwrap());
+    let mut rng = Rng::for_pixel(1, 2, 3);
+    let n = 200_000;
+    let misses = (0..n)
+        .filter(|_| {
+            light::sample(&sphere, Vec3::ZERO, rng.next_vec2(), SphereSampling::Cone).is_none()
+        })
+        .count();
+    eprintln!("cone misses: {misses} of {n}");
+    assert!(misses * 10_000 < n, "{misses} of {n}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn radiance_is_finite_for_random_rays(
+        s in any_sampling(),
+        which in 0..4usize,
+        o in (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0),
+        d in (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0),
+        seed in any::<u64>(),
+    ) {
+        let scene = &all_scenes()[which];
+        // Origins inside the Cornell box for it, near the origin otherwise.
+        let o = Vec3::from(o);
+        let origin = if which == 0 { Vec3::new(50.0, 40.0, 80.0) + o * Vec3::new(45.0, 38.0, 75.0) } else { o * 0.9 };
+        prop_assume!(Vec3::from(d).length() > 1e-3);
+        assert_finite(scene, Ray::new(origin, Vec3::from(d)).unwrap(), &s, seed);
+    }
+
+    #[test]
+    fn radiance_is_finite_for_grazing_rays_and_edge_on_lights(
+        s in any_sampling(),
+        x in 1.0f32..99.0,
+        z in 0.0f32..170.0,
+        t in -1.0f32..1.0,
+        seed in any::<u64>(),
+    ) {
+        let (cornell, _) = cornell(4, 4).unwrap();
+        // In the plane of the ceiling light, along the floor, along the walls.
+        let light_y = 81.6 - render_lessons::pathtrace::scenes::CORNELL_LIGHT_GAP;
+        let rays = [
+            Ray::new(Vec3::new(x, light_y, z), Vec3::new(t, 0.0, 1.0)).unwrap(),
+            Ray::new(Vec3::new(x, 0.0, z), Vec3::new(1.0, 0.0, t)).unwrap(),
+            Ray::new(Vec3::new(x, 1e-6, z), Vec3::new(t, -1e-7, 1.0)).unwrap(),
+            Ray::new(Vec3::new(1.0, 40.0, z), Vec3::new(0.0, t, 1.0)).unwrap(),
+            // Tangent to the mirror sphere (centre (27, 16.5, 47), radius 16.5).
+            Ray::new(Vec3::new(27.0 + 16.5, 16.5, z), Vec3::new(0.0, t, 1.0)).unwrap(),
+            // Through the glass sphere near its rim.
+            Ray::new(Vec3::new(73.0 + 16.5 * t.abs().sqrt(), 16.5, 200.0), -Vec3::Z).unwrap(),
+        ];
+        for ray in rays {
+            assert_finite(&cornell, ray, &s, seed);
+        }
+        let (lights, _) = two_lights(4, 4).unwrap();
+        // Tangent to the small light, and grazing the floor towards both lights.
+        let tangent = Ray::new(Vec3::new(-1.5 + 0.05, 1.0, -3.0), Vec3::new(0.0, t * 1e-3, 1.0)).unwrap();
+        assert_finite(&lights, tangent, &s, seed);
+        let graze = Ray::new(Vec3::new(x - 50.0, 1e-5, z - 85.0), Vec3::new(t, -1e-6, 1.0)).unwrap();
+        assert_finite(&lights, graze, &s, seed);
+    }
+}
+
+#[test]
+fn radiance_is_finite_for_rays_far_out_and_nearly_parallel_to_the_floor() {
+    let rays = [
+        Ray::new(Vec3::new(3e38, 1e28, 0.0), Vec3::new(1.0, -1e-10, 0.0)).unwrap(),
+        Ray::new(Vec3::new(-3e38, 1e-30, 3e38), Vec3::new(-1.0, -1e-38, 1.0)).unwrap(),
+        Ray::new(Vec3::new(0.0, 1e-30, 0.0), Vec3::new(1.0, -1e-38, 0.0)).unwrap(),
+    ];
+    for scene in all_scenes() {
+        for sampling in [
+            Sampling::UniformHemisphere,
+            Sampling::Cosine,
+            Sampling::NextEvent,
+            Sampling::Mis,
+        ] {
+            for ray in rays {
+                assert_finite(&scene, ray, &settings(sampling, Some(4), true), 3);
+            }
+        }
+    }
+}
+
+#[test]
+fn no_non_finite_samples_in_any_scene_with_any_flags() {
+    let scenes = [
+        cornell(12, 9),
+        two_lights(12, 9),
+        interior_furnace(6, 6),
+        grey_furnace(6, 6, Vec3::ZERO),
+    ];
+    for made in scenes {
+        let (scene, camera) = made.unwrap();
+        for sampling in [
+            Sampling::UniformHemisphere,
+            Sampling::Cosine,
+            Sampling::NextEvent,
+            Sampling::Mis,
+        ] {
+            for rr in [false, true] {
+                for pixels in [PixelSampling::Independent, PixelSampling::Jittered] {
+                    let s = settings(sampling, Some(6), rr);
+                    let mut acc = Accumulator::new(&camera, 11);
+                    acc.render_pass(&scene, &camera, &s, pixels, 4, Some(1))
+                        .unwrap();
+                    assert_eq!(acc.non_finite(), 0, "{sampling:?} rr {rr} {pixels:?}");
+                }
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------- pieces
+
+#[test]
+fn aperture_0_is_the_pinhole_camera_bit_for_bit() {
+    let (_, camera) = cornell(20, 15).unwrap();
+    let film = Film::new(20, 15, (-0.3, 0.3), (-0.2, 0.25)).unwrap();
+    let frame = render_lessons::camera::Frame::look(
+        Vec3::new(1.0, 2.0, 3.0),
+        Vec3::new(0.3, -0.2, -1.0),
+        Vec3::Y,
+    )
+    .unwrap();
+    let pinhole = PinholeCamera::new(film, 1.7, frame).unwrap();
+    let lens = LensCamera::new(pinhole, 0.0, 5.0).unwrap();
+    for y in 0..15 {
+        for x in 0..20 {
+            let centre = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
+            assert_eq!(lens.ray(centre, Vec2::new(0.3, 0.7)), pinhole.ray(x, y));
+        }
+    }
+    let _ = camera;
+}
+
+#[test]
+fn thin_lens_rays_meet_on_the_plane_in_focus() {
+    let film = Film::new(8, 8, (-0.5, 0.5), (-0.5, 0.5)).unwrap();
+    let pinhole = PinholeCamera::at_origin(film, 1.0).unwrap();
+    let lens = LensCamera::new(pinhole, 0.2, 4.0).unwrap();
+    let pixel = Vec2::new(2.3, 5.6);
+    let centre_ray = lens.ray(pixel, Vec2::ZERO);
+    let target = centre_ray.at(4.0 / -centre_ray.direction().z);
+    for u in render_lessons::sampling::grid(4) {
+        let r = lens.ray(pixel, u);
+        assert!(r.origin().z == 0.0 && r.origin().length() <= 0.2 + 1e-6);
+        let p = r.at((-4.0 - r.origin().z) / r.direction().z);
+        assert!((p - target).length() < 1e-5, "{p} vs {target}");
+    }
+}
+
+#[test]
+fn fresnel_is_4_percent_at_normal_incidence_and_total_beyond_the_critical_angle() {
+    let (f, _) = fresnel(1.0, 1.0 / 1.5);
+    assert!((f - 0.04).abs() < 1e-6, "{f}");
+    let critical = (1.0f32 / 1.5).asin();
+    let (f, _) = fresnel((critical + 0.01).cos(), 1.5);
+    assert_eq!(f, 1.0);
+    let (f, _) = fresnel(0.0, 1.0 / 1.5);
+    assert_eq!(f, 1.0);
+}
+
+#[test]
+fn quad_hits_inside_and_misses_outside() {
+    let q = Quad::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Z * 3.0).unwrap();
+    assert_eq!(q.normal(), -Vec3::Y);
+    assert_eq!(q.area(), 6.0);
+    let down = |x, z| Ray::new(Vec3::new(x, 1.0, z), -Vec3::Y).unwrap();
+    let h = q.hit(&down(1.0, 1.5), 0.0, f32::INFINITY).unwrap();
+    assert_eq!(h.t, 1.0);
+    assert!(!h.front_face);
+    assert!(q.hit(&down(2.1, 1.5), 0.0, f32::INFINITY).is_none());
+    assert!(q.hit(&down(1.0, -0.1), 0.0, f32::INFINITY).is_none());
+    let edge_on = Ray::new(Vec3::new(-1.0, 0.0, 1.0), Vec3::X).unwrap();
+    assert!(q.hit(&edge_on, 0.0, f32::INFINITY).is_none());
+}
+
+#[test]
+fn pfm_has_its_header_and_rows_from_the_bottom() {
+    let img = render_lessons::framebuffer::Framebuffer::from_fn(2, 2, |x, y| {
+        Vec3::new(x as f32, y as f32, 0.5)
+    })
+    .unwrap();
+    let bytes = render_lessons::pathtrace::pfm::pfm_bytes(&img).unwrap();
+    let header = b"PF\n2 2\n-1.0\n";
+    assert_eq!(&bytes[..header.len()], header);
+    assert_eq!(bytes.len(), header.len() + 2 * 2 * 12);
+    let first = f32::from_le_bytes(
+        bytes[header.len() + 4..header.len() + 8]
+            .try_into()
+            .unwrap(),
+    );
+    assert_eq!(first, 1.0, "the first row written is the bottom row, y = 1");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("x.pfm");
+    render_lessons::pathtrace::pfm::save_pfm(&path, &img).unwrap();
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
+    let nan = render_lessons::framebuffer::Framebuffer::from_fn(1, 1, |_, _| Vec3::NAN).unwrap();
+    assert!(render_lessons::pathtrace::pfm::pfm_bytes(&nan).is_err());
+}
+
+// ---------------------------------------------------------------- bad input
+
+fn param(e: Error) -> String {
+    e.param().to_string()
+}
+
+#[test]
+fn bad_input_is_an_error_naming_the_parameter() {
+    let (scene, camera) = cornell(4, 4).unwrap();
+    let mut acc = Accumulator::new(&camera, 0);
+    let s = Settings::default();
+    let pass = |acc: &mut Accumulator, s: &Settings, p, spp| {
+        acc.render_pass(&scene, &camera, s, p, spp, Some(1))
+    };
+    assert_eq!(
+        param(pass(&mut acc, &s, PixelSampling::Independent, 0).unwrap_err()),
+        "spp"
+    );
+    assert_eq!(
+        param(pass(&mut acc, &s, PixelSampling::Jittered, 5).unwrap_err()),
+        "spp"
+    );
+    let endless = settings(Sampling::Cosine, None, false);
+    assert_eq!(
+        param(pass(&mut acc, &endless, PixelSampling::Independent, 1).unwrap_err()),
+        "max_depth"
+    );
+    let bad_offset = Settings {
+        offset: Offset::Fixed(f32::NAN),
+        ..s
+    };
+    assert_eq!(
+        param(pass(&mut acc, &bad_offset, PixelSampling::Independent, 1).unwrap_err()),
+        "offset"
+    );
+    let (_, other) = cornell(5, 4).unwrap();
+    assert_eq!(
+        param(
+            acc.render_pass(&scene, &other, &s, PixelSampling::Independent, 1, Some(1))
+                .unwrap_err()
+        ),
+        "camera"
+    );
+    assert_eq!(acc.samples(), 0, "failed passes add nothing");
+
+    let film = Film::new(4, 4, (-1.0, 1.0), (-1.0, 1.0)).unwrap();
+    let pinhole = PinholeCamera::at_origin(film, 1.0).unwrap();
+    assert_eq!(
+        param(LensCamera::new(pinhole, -0.1, 1.0).unwrap_err()),
+        "aperture"
+    );
+    assert_eq!(
+        param(LensCamera::new(pinhole, f32::NAN, 1.0).unwrap_err()),
+        "aperture"
+    );
+    assert_eq!(
+        param(LensCamera::new(pinhole, 0.1, 0.0).unwrap_err()),
+        "focus distance"
+    );
+
+    let sphere = || Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());
+    let nan = Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, f32::NAN, 1.0));
+    assert_eq!(
+        param(Scene::new(vec![nan], Vec3::ZERO).unwrap_err()),
+        "emission"
+    );
+    let negative = Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, -1.0, 1.0));
+    assert_eq!(
+        param(Scene::new(vec![negative], Vec3::ZERO).unwrap_err()),
+        "emission"
+    );
+    let plane = Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap());
+    let glowing_plane = Object::emitting(plane, Material::BLACK, Vec3::ONE);
+    assert_eq!(
+        param(Scene::new(vec![glowing_plane], Vec3::ZERO).unwrap_err()),
+        "emission"
+    );
+    assert_eq!(
+        param(Scene::new(vec![], Vec3::splat(f32::INFINITY)).unwrap_err()),
+        "environment"
+    );
+    assert_eq!(
+        param(Material::diffuse(Vec3::splat(1.5)).unwrap_err()),
+        "albedo"
+    );
+    assert_eq!(
+        param(Material::mirror(Vec3::splat(-0.1)).unwrap_err()),
+        "reflectance"
+    );
+    assert_eq!(param(Material::glass(0.0).unwrap_err()), "ior");
+    let hand_made = Object::new(
+        sphere(),
+        Material::Diffuse {
+            albedo: Vec3::splat(f32::NAN),
+        },
+    );
+    assert_eq!(
+        param(Scene::new(vec![hand_made], Vec3::ZERO).unwrap_err()),
+        "albedo"
+    );
+    let hand_made = Object::new(sphere(), Material::Glass { ior: -1.5 });
+    assert_eq!(
+        param(Scene::new(vec![hand_made], Vec3::ZERO).unwrap_err()),
+        "ior"
+    );
+    assert_eq!(
+        param(Quad::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0).unwrap_err()),
+        "edges (a x b)"
+    );
+}

@@ -23,7 +23,21 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
     let mut file = tempfile::NamedTempFile::new_in(dir).map_err(|e| io_error(dir, e))?;
     file.write_all(bytes).map_err(|e| io_error(path, e))?;
+    readable_by_all(file.as_file()).map_err(|e| io_error(path, e))?;
     file.persist(path).map_err(|e| io_error(path, e.error))?;
+    Ok(())
+}
+
+/// A temporary file is created readable by its owner only; the image it becomes
+/// should be readable like any other file the student writes (rw-r--r--).
+#[cfg(unix)]
+fn readable_by_all(file: &std::fs::File) -> std::io::Result<()> {
+    use std::os::unix::fs::PermissionsExt;
+    file.set_permissions(std::fs::Permissions::from_mode(0o644))
+}
+
+#[cfg(not(unix))]
+fn readable_by_all(_file: &std::fs::File) -> std::io::Result<()> {
     Ok(())
 }
 

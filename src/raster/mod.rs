@@ -25,6 +25,8 @@ pub use shade::{Shading, Viewer, lambert};
 pub use shadow_map::{ShadowMap, Shadows};
 pub use vertex::{ClipVertex, Varyings};
 
+use std::ops::Range;
+
 use glam::Vec3;
 use rayon::prelude::*;
 
@@ -141,20 +143,20 @@ pub fn rasterize(
         };
         let shadow_map = shadow_map.as_ref();
         let triangles = setup(instances, &pipeline, camera, light, settings, shadow_map)?;
-        let band = width as usize * BAND_ROWS as usize;
-        colours
-            .par_chunks_mut(band)
-            .enumerate()
-            .for_each(|(i, pixels)| {
-                let first_row = i as u32 * BAND_ROWS;
-                let rows = first_row..(first_row + BAND_ROWS).min(height);
-                let lights = Lights {
-                    light,
-                    viewer: viewer(camera),
-                    shadow_map,
-                };
-                draw_band(&triangles, rows, width, pixels, &lights, settings);
-            });
+        let lights = Lights {
+            light,
+            viewer: viewer(camera),
+            shadow_map,
+        };
+        in_bands(
+            &triangles,
+            width,
+            height,
+            &mut colours,
+            |mine, rows, pixels| {
+                draw_band(&triangles, mine, rows, width, pixels, &lights, settings);
+            },
+        );
         Ok(())
     })??;
     Framebuffer::from_pixels(width, height, colours)
@@ -233,12 +235,51 @@ fn transform_vertices(
 }
 // ANCHOR_END: vertex_stage
 
+/// Splits `buffer` (`width` x `height`, row by row) into bands of [`BAND_ROWS`]
+/// rows and calls `draw(mine, rows, band)` for each, in parallel, where `mine` lists
+/// (in order) the triangles whose rows may touch the band. Sorting triangles into
+/// bands first means a band never even looks at the triangles far from it.
+fn in_bands<T: Send>(
+    triangles: &[[ScreenVertex; 3]],
+    width: u32,
+    height: u32,
+    buffer: &mut [T],
+    draw: impl Fn(&[u32], Range<u32>, &mut [T]) + Sync,
+) {
+    let bands = height.div_ceil(BAND_ROWS) as usize;
+    let mut bins = vec![Vec::new(); bands];
+    for (k, t) in triangles.iter().enumerate() {
+        let lo = t.iter().map(|v| v.pixel.y).fold(f32::INFINITY, f32::min);
+        let hi = t
+            .iter()
+            .map(|v| v.pixel.y)
+            .fold(f32::NEG_INFINITY, f32::max);
+        // One row of margin: pixel centres sit half a row inside.
+        if !(hi >= -1.0 && lo <= height as f32 + 1.0) {
+            continue;
+        }
+        let row = |y: f32| (y.clamp(0.0, (height - 1) as f32) as u32 / BAND_ROWS) as usize;
+        for bin in &mut bins[row(lo - 1.0)..=row(hi + 1.0)] {
+            bin.push(k as u32);
+        }
+    }
+    buffer
+        .par_chunks_mut(width as usize * BAND_ROWS as usize)
+        .zip(bins.par_iter())
+        .enumerate()
+        .for_each(|(i, (band, mine))| {
+            let first = i as u32 * BAND_ROWS;
+            draw(mine, first..(first + BAND_ROWS).min(height), band);
+        });
+}
+
 // ANCHOR: draw_band
-/// The fragment stage for one band of rows: every triangle in order, a z-buffer
+/// The fragment stage for one band of rows: its triangles in order, a z-buffer
 /// with the test "nearer than what is there" (depth less-than), and the shading.
 fn draw_band(
     triangles: &[[ScreenVertex; 3]],
-    rows: std::ops::Range<u32>,
+    mine: &[u32],
+    rows: Range<u32>,
     width: u32,
     pixels: &mut [Vec3],
     lights: &Lights,
@@ -246,18 +287,24 @@ fn draw_band(
 ) {
     let mut depth = vec![f32::INFINITY; pixels.len()];
     let first_row = rows.start;
-    for t in triangles {
-        rasterize_triangle(t, settings.cull, width, rows.clone(), |f| {
-            let i = ((f.y - first_row) * width + f.x) as usize;
-            if f.depth < depth[i] {
-                depth[i] = f.depth;
-                let v = f.varyings;
-                pixels[i] = match settings.shading {
-                    Shading::PerVertex => v.colour,
-                    Shading::PerPixel => lights.shade(v.world, v.normal, v.colour),
-                };
-            }
-        });
+    for &k in mine {
+        rasterize_triangle(
+            &triangles[k as usize],
+            settings.cull,
+            width,
+            rows.clone(),
+            |f| {
+                let i = ((f.y - first_row) * width + f.x) as usize;
+                if f.depth < depth[i] {
+                    depth[i] = f.depth;
+                    let v = f.varyings;
+                    pixels[i] = match settings.shading {
+                        Shading::PerVertex => v.colour,
+                        Shading::PerPixel => lights.shade(v.world, v.normal, v.colour),
+                    };
+                }
+            },
+        );
     }
 }
 // ANCHOR_END: draw_band

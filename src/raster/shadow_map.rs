@@ -11,9 +11,8 @@
 //! shadow edges, one block per texel, when the map is coarse.
 
 use glam::Vec3;
-use rayon::prelude::*;
 
-use super::{BAND_ROWS, Cull, DepthRange, Instance, Pipeline, Settings, rasterize_triangle};
+use super::{Cull, DepthRange, Instance, Pipeline, Settings, rasterize_triangle};
 use crate::camera::{Camera, Film, Frame, MAX_RESOLUTION, PinholeCamera};
 use crate::error::{Error, Result, finite3, non_negative, positive};
 use crate::scene::PointLight;
@@ -67,21 +66,27 @@ impl ShadowMap {
         let triangles = super::setup(instances, &pipeline, &camera, light, &settings, None)?;
         let size = shadows.size;
         let mut distance = vec![f32::INFINITY; size as usize * size as usize];
-        let band = size as usize * BAND_ROWS as usize;
-        distance
-            .par_chunks_mut(band)
-            .enumerate()
-            .for_each(|(i, texels)| {
-                let first = i as u32 * BAND_ROWS;
-                let rows = first..(first + BAND_ROWS).min(size);
-                for t in &triangles {
-                    rasterize_triangle(t, Cull::None, size, rows.clone(), |f| {
-                        let k = ((f.y - first) * size + f.x) as usize;
-                        let d = (f.varyings.world - light.position).length();
-                        texels[k] = texels[k].min(d);
-                    });
+        super::in_bands(
+            &triangles,
+            size,
+            size,
+            &mut distance,
+            |mine, rows, texels| {
+                for &k in mine {
+                    rasterize_triangle(
+                        &triangles[k as usize],
+                        Cull::None,
+                        size,
+                        rows.clone(),
+                        |f| {
+                            let i = ((f.y - rows.start) * size + f.x) as usize;
+                            let d = (f.varyings.world - light.position).length();
+                            texels[i] = texels[i].min(d);
+                        },
+                    );
                 }
-            });
+            },
+        );
         Ok(ShadowMap {
             pipeline,
             light: light.position,

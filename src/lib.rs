@@ -10,12 +10,14 @@
 
 pub mod basis;
 pub mod camera;
+pub mod chart;
 pub mod diagram;
 pub mod error;
 pub mod exercises;
 pub mod framebuffer;
 pub mod lesson;
 pub mod lighting;
+pub mod measure;
 pub mod offset;
 pub mod output;
 pub mod pathtrace;

@@ -1,0 +1,251 @@
+//! Charts for lesson 11: line charts drawn as SVG with plotters, each with its data
+//! as CSV beside it, so a student can plot the numbers again with any tool.
+//!
+//! A chart is a title, two labelled axes (linear or logarithmic) and named series of
+//! (x, y) points. On a logarithmic axis a point whose value is 0 or negative has no
+//! place: it is left out of the drawing (and kept in the CSV).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use plotters::prelude::*;
+
+use crate::error::{Error, Result};
+use crate::output::write_atomically;
+
+/// How an axis maps values to positions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scale {
+    /// Equal steps for equal differences.
+    Linear,
+    /// Equal steps for equal ratios (decades).
+    Log,
+}
+
+/// One axis: its label (with the unit) and its scale.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    /// What is measured, and in what unit, e.g. "time per test (ns)".
+    pub label: String,
+    /// Linear or logarithmic.
+    pub scale: Scale,
+}
+
+/// One line of a chart.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// The legend's name for it.
+    pub name: String,
+    /// The points, in drawing order.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// A line chart.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chart {
+    /// The caption.
+    pub title: String,
+    /// The horizontal axis.
+    pub x: Axis,
+    /// The vertical axis.
+    pub y: Axis,
+    /// The lines.
+    pub series: Vec<Series>,
+}
+
+/// The lines' colours, in order.
+const COLOURS: [RGBColor; 8] = [
+    RGBColor(30, 100, 200),
+    RGBColor(210, 50, 40),
+    RGBColor(30, 150, 70),
+    RGBColor(230, 140, 20),
+    RGBColor(120, 60, 170),
+    RGBColor(90, 90, 90),
+    RGBColor(0, 160, 170),
+    RGBColor(200, 60, 150),
+];
+
+impl Chart {
+    /// An empty chart.
+    pub fn new(title: &str, x: (&str, Scale), y: (&str, Scale)) -> Chart {
+        let axis = |(label, scale): (&str, Scale)| Axis {
+            label: label.to_string(),
+            scale,
+        };
+        Chart {
+            title: title.to_string(),
+            x: axis(x),
+            y: axis(y),
+            series: Vec::new(),
+        }
+    }
+
+    /// The chart with one more line.
+    pub fn with(mut self, name: &str, points: Vec<(f64, f64)>) -> Chart {
+        self.series.push(Series {
+            name: name.to_string(),
+            points,
+        });
+        self
+    }
+
+    /// The series called `name`.
+    pub fn get(&self, name: &str) -> Option<&Series> {
+        self.series.iter().find(|s| s.name == name)
+    }
+
+    /// The data as CSV: a header `series,x,y` (with the axis labels in a comment
+    /// line above it), then one row per point.
+    pub fn csv(&self) -> String {
+        let mut out = format!("# x: {}; y: {}\nseries,x,y\n", self.x.label, self.y.label);
+        for s in &self.series {
+            for (x, y) in &s.points {
+                let _ = writeln!(out, "\"{}\",{x:e},{y:e}", s.name.replace('"', "'"));
+            }
+        }
+        out
+    }
+
+    /// The points that can be drawn: finite, and positive on a log axis.
+    fn drawable(&self, s: &Series) -> Vec<(f64, f64)> {
+        let fits = |v: f64, scale| v.is_finite() && (scale == Scale::Linear || v > 0.0);
+        s.points
+            .iter()
+            .copied()
+            .filter(|&(x, y)| fits(x, self.x.scale) && fits(y, self.y.scale))
+            .collect()
+    }
+
+    /// The range an axis must show: the data's, widened a little (to whole decades
+    /// on a log axis).
+    fn range(&self, values: impl Iterator<Item = f64>, scale: Scale) -> Result<(f64, f64)> {
+        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+        if !(lo.is_finite() && hi.is_finite()) {
+            return Err(Error::TooFew {
+                param: "chart points that can be drawn",
+                value: 0,
+                min: 1,
+            });
+        }
+        Ok(match scale {
+            Scale::Log => (
+                10f64.powf(lo.log10().floor()),
+                10f64.powf(hi.log10().ceil().max(lo.log10().floor() + 1.0)),
+            ),
+            Scale::Linear => {
+                let pad = if hi > lo {
+                    0.05 * (hi - lo)
+                } else {
+                    0.5 * lo.abs().max(1.0)
+                };
+                (lo - pad, hi + pad)
+            }
+        })
+    }
+
+    /// The chart as an SVG document, 800 x 500.
+    pub fn svg(&self) -> Result<String> {
+        let drawn: Vec<_> = self.series.iter().map(|s| self.drawable(s)).collect();
+        let xs = self.range(drawn.iter().flatten().map(|p| p.0), self.x.scale)?;
+        let ys = self.range(drawn.iter().flatten().map(|p| p.1), self.y.scale)?;
+        let mut svg = String::new();
+        let result = match (self.x.scale, self.y.scale) {
+            (Scale::Linear, Scale::Linear) => self.draw(&mut svg, xs.0..xs.1, ys.0..ys.1, &drawn),
+            (Scale::Log, Scale::Linear) => {
+                self.draw(&mut svg, (xs.0..xs.1).log_scale(), ys.0..ys.1, &drawn)
+            }
+            (Scale::Linear, Scale::Log) => {
+                self.draw(&mut svg, xs.0..xs.1, (ys.0..ys.1).log_scale(), &drawn)
+            }
+            (Scale::Log, Scale::Log) => self.draw(
+                &mut svg,
+                (xs.0..xs.1).log_scale(),
+                (ys.0..ys.1).log_scale(),
+                &drawn,
+            ),
+        };
+        result.map_err(|e| Error::Io {
+            path: format!("chart \"{}\"", self.title),
+            message: e.to_string(),
+        })?;
+        Ok(svg)
+    }
+
+    fn draw<X, Y>(
+        &self,
+        svg: &mut String,
+        x: X,
+        y: Y,
+        drawn: &[Vec<(f64, f64)>],
+    ) -> std::result::Result<(), Box<dyn std::error::Error>>
+    where
+        X: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
+        Y: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
+        X::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
+        Y::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
+    {
+        let root = SVGBackend::with_string(svg, (800, 500)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(&self.title, ("sans-serif", 20))
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(x, y)?;
+        chart
+            .configure_mesh()
+            .x_desc(self.x.label.as_str())
+            .y_desc(self.y.label.as_str())
+            .draw()?;
+        for (i, (series, points)) in self.series.iter().zip(drawn).enumerate() {
+            let colour = COLOURS[i % COLOURS.len()];
+            chart
+                .draw_series(LineSeries::new(
+                    points.iter().copied(),
+                    colour.stroke_width(2),
+                ))?
+                .label(series.name.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+            chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()?;
+        root.present()?;
+        Ok(())
+    }
+
+    /// Writes `stem.svg` and `stem.csv` into `dir`, each atomically.
+    pub fn save(&self, dir: &Path, stem: &str) -> Result<[PathBuf; 2]> {
+        let svg = dir.join(format!("{stem}.svg"));
+        let csv = dir.join(format!("{stem}.csv"));
+        write_atomically(&svg, self.svg()?.as_bytes())?;
+        write_atomically(&csv, self.csv().as_bytes())?;
+        Ok([svg, csv])
+    }
+}
+
+/// The least-squares slope of log10(y) against log10(x), over the points with
+/// x, y > 0: the exponent k of y ~ x^k.
+pub fn log_log_slope(points: &[(f64, f64)]) -> Option<f64> {
+    let logs: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(x, y)| *x > 0.0 && *y > 0.0)
+        .map(|(x, y)| (x.log10(), y.log10()))
+        .collect();
+    let n = logs.len() as f64;
+    if logs.len() < 2 {
+        return None;
+    }
+    let (mx, my) = logs
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
+    let sxx: f64 = logs.iter().map(|(x, _)| (x - mx) * (x - mx)).sum();
+    let sxy: f64 = logs.iter().map(|(x, y)| (x - mx) * (y - my)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
+}

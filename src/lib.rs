@@ -9,6 +9,7 @@
 //! `scene` -> renderers (`raycast`, `render`) -> output (`framebuffer`, `diagram`).
 
 pub mod basis;
+pub mod bvh;
 pub mod camera;
 pub mod diagram;
 pub mod error;

@@ -16,6 +16,11 @@ use crate::bvh::{Bvh, MAX_DEPTH, NodeKind};
 use crate::ray::Ray;
 use crate::scene::Object;
 use crate::shapes::Hit;
+use crate::shapes::aabb::gamma;
+
+/// The relative margin added to the far end of the box tests: 4 gamma(3), about
+/// 7e-7 (a few ulps of `t`). See [`Nearest::box_limit`].
+pub const TIE_MARGIN: f32 = 4.0 * gamma(3);
 
 /// What the walk does after a leaf.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,6 +51,16 @@ impl Nearest {
         }
     }
 
+    /// How far boxes are tested: [`Nearest::limit`] moved out by [`TIE_MARGIN`] of
+    /// itself. A box's entry and a primitive's `t` are rounded differently: the box
+    /// around a triangle that hits at exactly the best `t` (say at a vertex it
+    /// shares with the best triangle) can be entered a few ulps later. Without the
+    /// margin the tree would skip that box and could break the tie differently from
+    /// the list.
+    fn box_limit(&self) -> f32 {
+        widened(self.limit())
+    }
+
     /// Tests object `i` and keeps its hit if nearer (or as near with a smaller index).
     fn offer(&mut self, objects: &[Object], i: usize, ray: &Ray, t_min: f32) {
         let Some(hit) = objects[i].shape.hit(ray, t_min, self.limit()) else {
@@ -59,6 +74,11 @@ impl Nearest {
             self.best = Some((hit, i));
         }
     }
+}
+
+/// `t` moved out by [`TIE_MARGIN`] of itself (infinity stays infinity).
+fn widened(t: f32) -> f32 {
+    t + t.abs() * TIE_MARGIN
 }
 
 impl Bvh {
@@ -76,12 +96,12 @@ impl Bvh {
         for &i in &self.unbounded {
             nearest.offer(objects, i, ray, t_min);
         }
-        self.walk(ray, t_min, nearest.limit(), |leaf| {
+        self.walk(ray, t_min, nearest.box_limit(), |leaf| {
             for &i in leaf {
                 nearest.offer(objects, i, ray, t_min);
             }
             Walk::Continue {
-                t_max: nearest.limit(),
+                t_max: nearest.box_limit(),
             }
         });
         nearest.best
@@ -94,13 +114,16 @@ impl Bvh {
         if self.unbounded.iter().any(hits) {
             return true;
         }
+        // The boxes get the same margin as in `closest_hit`: an object that hits just
+        // before `t_max` may have a box entered just after it.
+        let box_t_max = widened(t_max);
         let mut found = false;
-        self.walk(ray, t_min, t_max, |leaf| {
+        self.walk(ray, t_min, box_t_max, |leaf| {
             if leaf.iter().any(hits) {
                 found = true;
                 Walk::Stop
             } else {
-                Walk::Continue { t_max }
+                Walk::Continue { t_max: box_t_max }
             }
         });
         found

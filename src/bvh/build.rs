@@ -4,7 +4,9 @@
 //! a box inside it with probability area(inner) / area(outer). Splitting a node's
 //! primitives into L and R then costs, in expectation,
 //!
-//!     C = C_trav + (A(L) N(L) + A(R) N(R)) / A(node)
+//! ```text
+//! C = C_trav + (A(L) N(L) + A(R) N(R)) / A(node)
+//! ```
 //!
 //! primitive tests (A the surface area of a side's box, N its primitive count,
 //! C_trav the cost of visiting a node relative to one primitive test), against

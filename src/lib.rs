@@ -6,9 +6,11 @@
 //! code by anchor.
 //!
 //! Dependencies flow one way: `transform`, `ray`, `basis` -> `camera`, `shapes` ->
-//! `scene` -> renderers (`raycast`, `render`) -> output (`framebuffer`, `diagram`).
+//! `scene` (and `bvh`, the same questions through a tree) -> renderers (`raycast`,
+//! `render`) -> output (`framebuffer`, `diagram`).
 
 pub mod basis;
+pub mod bvh;
 pub mod camera;
 pub mod chart;
 pub mod diagram;

@@ -61,6 +61,50 @@ impl Aabb {
         self.max
     }
 
+    /// The smallest box holding both `self` and `other`.
+    pub fn union(&self, other: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
+    /// The smallest box holding every point of `points`, or `None` for no points or
+    /// a non-finite one.
+    pub fn around(points: impl IntoIterator<Item = Vec3>) -> Option<Aabb> {
+        let mut points = points.into_iter();
+        let first = points.next()?;
+        let (min, max) = points.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p)));
+        Aabb::new(min, max).ok()
+    }
+
+    /// The centre point (min + max) / 2.
+    pub fn centre(&self) -> Vec3 {
+        0.5 * (self.min + self.max)
+    }
+
+    /// The area of the box's surface, 2 (xy + yz + zx): the measure of how likely a
+    /// random ray is to hit it, which the surface area heuristic uses.
+    pub fn surface_area(&self) -> f32 {
+        let e = self.max - self.min;
+        2.0 * (e.x * e.y + e.y * e.z + e.z * e.x)
+    }
+
+    /// True if `other` lies inside `self` (the closed box; equal boxes count).
+    pub fn contains(&self, other: &Aabb) -> bool {
+        self.min.cmple(other.min).all() && other.max.cmple(self.max).all()
+    }
+
+    /// The box moved outwards by `margin >= 0` on every side, or `None` if a corner
+    /// overflows.
+    pub fn padded(&self, margin: f32) -> Option<Aabb> {
+        Aabb::new(
+            self.min - Vec3::splat(margin),
+            self.max + Vec3::splat(margin),
+        )
+        .ok()
+    }
+
     // ANCHOR: slab
     /// The slab test: the interval `[t0, t1]` of the ray inside the box, clipped to
     /// `[t_min, t_max]`, or `None`.

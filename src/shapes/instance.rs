@@ -11,8 +11,12 @@ use glam::{Mat4, Vec3};
 
 use crate::error::{Error, Result};
 use crate::ray::Ray;
-use crate::shapes::{Hit, Shape};
+use crate::shapes::aabb::gamma;
+use crate::shapes::{Aabb, Hit, Shape};
 use crate::transform::Transform;
+
+/// The relative margin around an instance's world box: 16 gamma(3), about 3e-6.
+pub const INSTANCE_MARGIN: f32 = 16.0 * gamma(3);
 
 /// A [`Shape`] placed in the world by `to_world`.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,6 +58,27 @@ impl Instance {
     /// The world-to-object transform M^-1.
     pub fn to_object(&self) -> Transform {
         self.to_object
+    }
+
+    /// The world-space box around the placed shape: the eight corners of the shape's
+    /// own box taken to the world by M, and the box around those (an affine map takes
+    /// the box to a parallelepiped, whose corners are the images of the box's).
+    /// `None` if the shape has no box (a plane) or a corner overflows.
+    ///
+    /// The box is moved out by [`INSTANCE_MARGIN`] times its largest coordinate: the
+    /// ray is transformed before it is tested, and that rounding must not let a hit
+    /// fall just outside. The margin is generous, not a proven bound.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let b = self.shape.bounds()?;
+        let (lo, hi) = (b.min(), b.max());
+        let corners = (0..8).map(|i| {
+            let pick = |bit: u32, axis: usize| if i & bit == 0 { lo[axis] } else { hi[axis] };
+            self.to_world
+                .point(Vec3::new(pick(1, 0), pick(2, 1), pick(4, 2)))
+        });
+        let world = Aabb::around(corners)?;
+        let size = world.min().abs().max(world.max().abs()).max_element();
+        world.padded(INSTANCE_MARGIN * size)
     }
 
     // ANCHOR: instance_hit

@@ -84,4 +84,19 @@ impl Shape {
             Shape::Instance(i) => i.hit(ray, t_min, t_max),
         }
     }
+
+    /// The shape's bounding box, for an acceleration structure ([`crate::bvh`]), or
+    /// `None` for a shape without one: a plane, a quadric (most are unbounded; an
+    /// ellipsoid is not, but no scene here needs its box), an instance of either, or
+    /// a box that overflows f32.
+    pub fn bounds(&self) -> Option<Aabb> {
+        match self {
+            Shape::Sphere(s) => s.bounds(),
+            Shape::Plane(_) | Shape::Quadric(_) => None,
+            Shape::Aabb(b) => Some(*b),
+            Shape::Triangle(tri) => tri.bounds(),
+            Shape::Quad(q) => q.bounds(),
+            Shape::Instance(i) => i.bounds(),
+        }
+    }
 }

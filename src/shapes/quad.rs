@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
 use crate::ray::Ray;
-use crate::shapes::{Hit, in_open_range};
+use crate::shapes::{Aabb, Hit, in_open_range};
 
 /// The parallelogram with corner `corner` and edges `a`, `b`; its normal is
 /// (a x b)/|a x b|.
@@ -53,7 +53,17 @@ impl Quad {
         self.normal
     }
 
-    /// The area |a x b|.
+    /// The box around the four corners (flat for a quad parallel to an axis plane).
+    pub fn bounds(&self) -> Option<Aabb> {
+        Aabb::around([
+            self.point(0.0, 0.0),
+            self.point(1.0, 0.0),
+            self.point(0.0, 1.0),
+            self.point(1.0, 1.0),
+        ])
+    }
+
+    /// The quad's area, |a x b|.
     pub fn area(&self) -> f32 {
         self.area
     }

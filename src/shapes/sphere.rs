@@ -8,7 +8,8 @@ use glam::Vec3;
 
 use crate::error::{Result, finite3, positive};
 use crate::ray::Ray;
-use crate::shapes::{Hit, in_open_range};
+use crate::shapes::aabb::gamma;
+use crate::shapes::{Aabb, Hit, in_open_range};
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,6 +36,16 @@ impl Sphere {
     /// The radius `r`.
     pub fn radius(&self) -> f32 {
         self.radius
+    }
+
+    /// The bounding box c - r to c + r, moved out by gamma(3) (max |c_i| + r) so
+    /// that the rounding of c +- r cannot cut into the sphere; `None` if it overflows.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let r = Vec3::splat(self.radius);
+        let margin = gamma(3) * (self.centre.abs().max_element() + self.radius);
+        Aabb::new(self.centre - r, self.centre + r)
+            .ok()?
+            .padded(margin)
     }
 
     // ANCHOR: roots_textbook

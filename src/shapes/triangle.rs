@@ -5,7 +5,7 @@ use glam::{DVec3, Vec3};
 
 use crate::error::{Error, Result, finite3};
 use crate::ray::Ray;
-use crate::shapes::{Hit, in_open_range};
+use crate::shapes::{Aabb, Hit, in_open_range};
 
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
 /// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
@@ -50,6 +50,13 @@ impl Triangle {
         (self.v1 - self.v0)
             .cross(self.v2 - self.v0)
             .normalize_or(Vec3::Z)
+    }
+
+    /// The bounding box of the three corners: exact, no rounding. STABILITY S6 is the
+    /// promise that a ray the triangle test hits also passes the conservative slab
+    /// test on this box.
+    pub fn bounds(&self) -> Option<Aabb> {
+        Aabb::around(self.vertices())
     }
 
     // ANCHOR: moller_trumbore

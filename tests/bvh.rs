@@ -1,0 +1,482 @@
+//! Lesson 11: the BVH gives the same answers as the plain list, only faster.
+//!
+//! Every test compares the tree with [`Scene`]'s brute-force loop on the same
+//! objects: the same closest hit (the whole `Hit`, bit for bit, and the same
+//! object, ties included) and the same `occluded`. No timing here: speed is
+//! measured by `cargo bench --bench bvh`.
+
+use std::collections::BTreeSet;
+
+use glam::{Mat4, Vec3};
+use render_lessons::bvh::build::Strategy;
+use render_lessons::bvh::{Bvh, BvhScene, MAX_DEPTH, NodeKind};
+use render_lessons::raster::mesh::Mesh;
+use render_lessons::ray::Ray;
+use render_lessons::scene::{Object, PointLight, Scene};
+use render_lessons::shapes::{Aabb, Instance, Plane, Quadric, Shape, Sphere, Triangle};
+use render_lessons::transform::Transform;
+
+/// A small deterministic generator (xorshift64*), so every run tests the same rays.
+struct Rng(u64);
+
+impl Rng {
+    fn next_f32(&mut self) -> f32 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
+        (x >> 40) as f32 / (1u64 << 24) as f32
+    }
+
+    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.next_f32()
+    }
+
+    fn point(&mut self, half: f32) -> Vec3 {
+        Vec3::new(
+            self.range(-half, half),
+            self.range(-half, half),
+            self.range(-half, half),
+        )
+    }
+}
+
+fn object(shape: Shape) -> Object {
+    Object {
+        shape,
+        colour: Vec3::splat(0.5),
+    }
+}
+
+fn scene(objects: Vec<Object>) -> Scene {
+    let light = PointLight {
+        position: Vec3::new(0.0, 10.0, 0.0),
+        intensity: Vec3::ONE,
+    };
+    Scene::new(objects, Vec3::ZERO, light).unwrap()
+}
+
+fn mesh_objects(mesh: &Mesh) -> Vec<Object> {
+    mesh.triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            object(Shape::Triangle(Triangle::new(a, b, c).unwrap()))
+        })
+        .collect()
+}
+
+/// The index of `o` in `scene`'s object list.
+fn index_of(scene: &Scene, o: &Object) -> usize {
+    scene
+        .objects()
+        .iter()
+        .position(|x| std::ptr::eq(x, o))
+        .unwrap()
+}
+
+/// Rays from random points in a cube of half-size `spread`, half of them aimed at
+/// random points of a cube of half-size `target` (so that many hit), half in random
+/// directions.
+fn random_rays(rng: &mut Rng, n: usize, spread: f32, target: f32) -> Vec<Ray> {
+    (0..n)
+        .filter_map(|k| {
+            let o = rng.point(spread);
+            let d = if k % 2 == 0 {
+                rng.point(target) - o
+            } else {
+                rng.point(1.0)
+            };
+            Ray::new(o, d).ok()
+        })
+        .collect()
+}
+
+/// Checks that the tree and the list agree on every ray; returns how many rays hit.
+fn assert_same_answers(scene: &Scene, rays: &[Ray]) -> usize {
+    let bvh = BvhScene::new(scene.clone());
+    let mut hits = 0;
+    for (k, ray) in rays.iter().enumerate() {
+        let list = scene.closest_hit(ray, 0.0, f32::INFINITY);
+        let tree = bvh.closest_hit(ray, 0.0, f32::INFINITY);
+        match (list, tree) {
+            (None, None) => {}
+            (Some((a, oa)), Some((b, ob))) => {
+                hits += 1;
+                assert_eq!(a, b, "ray {k}: {ray:?}");
+                assert_eq!(
+                    index_of(scene, oa),
+                    index_of(bvh.scene(), ob),
+                    "ray {k}: {ray:?}"
+                );
+            }
+            (a, b) => panic!("ray {k}: {ray:?}: list {a:?}, tree {b:?}"),
+        }
+        // Shadow-ray questions over a few ranges, including one that ends just
+        // before the closest hit.
+        let t_hit = list.map_or(10.0, |(h, _)| h.t);
+        for (t_min, t_max) in [
+            (0.0, f32::INFINITY),
+            (1e-3, t_hit * 0.999),
+            (0.0, t_hit * 1.001),
+            (t_hit * 0.5, 2.0 * t_hit),
+        ] {
+            assert_eq!(
+                scene.occluded(ray, t_min, t_max),
+                bvh.occluded(ray, t_min, t_max),
+                "ray {k} occluded in ({t_min}, {t_max}): {ray:?}"
+            );
+        }
+    }
+    hits
+}
+
+fn random_soup(rng: &mut Rng, n: usize) -> Vec<Object> {
+    (0..n)
+        .map(|k| {
+            let c = rng.point(10.0);
+            let shape = match k % 5 {
+                0 => Shape::Sphere(Sphere::new(c, rng.range(0.05, 1.0)).unwrap()),
+                1 => {
+                    let half = Vec3::new(rng.range(0.0, 1.0), rng.range(0.0, 1.0), 0.0);
+                    Shape::Aabb(Aabb::new(c - half, c + half).unwrap())
+                }
+                2 => {
+                    let half = rng.point(1.0).abs();
+                    Shape::Aabb(Aabb::new(c - half, c + half).unwrap())
+                }
+                3 => loop {
+                    let (a, b) = (c + rng.point(1.0), c + rng.point(1.0));
+                    if let Ok(t) = Triangle::new(c, a, b) {
+                        break Shape::Triangle(t);
+                    }
+                },
+                _ => {
+                    let inner = if k % 2 == 0 {
+                        Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5).unwrap())
+                    } else {
+                        Shape::Aabb(Aabb::new(Vec3::splat(-0.5), Vec3::splat(0.5)).unwrap())
+                    };
+                    let m = Transform::scale(rng.range(0.2, 2.0), rng.range(0.2, 2.0), 1.0)
+                        .unwrap()
+                        .then(Transform::rotation_y(rng.range(0.0, 6.0)).unwrap())
+                        .then(Transform::rotation_x(rng.range(0.0, 6.0)).unwrap())
+                        .then(Transform::translation(c.x, c.y, c.z).unwrap());
+                    Shape::Instance(Box::new(Instance::new(inner, m).unwrap()))
+                }
+            };
+            object(shape)
+        })
+        .collect()
+}
+
+#[test]
+fn same_hits_as_the_list_on_a_1k_triangle_sphere() {
+    let mesh = Mesh::uv_sphere(Vec3::new(0.3, -0.2, 0.1), 2.0, 23, 23).unwrap();
+    let scene = scene(mesh_objects(&mesh));
+    assert_eq!(scene.objects().len(), 1012);
+    let rays = random_rays(&mut Rng(1), 4000, 6.0, 2.5);
+    let hits = assert_same_answers(&scene, &rays);
+    assert!(hits > 1000, "{hits} hits");
+}
+
+#[test]
+fn same_hits_as_the_list_on_a_random_soup() {
+    let mut rng = Rng(2);
+    let scene = scene(random_soup(&mut rng, 1000));
+    let rays = random_rays(&mut rng, 4000, 12.0, 10.0);
+    let hits = assert_same_answers(&scene, &rays);
+    assert!(hits > 1500, "{hits} hits");
+}
+
+#[test]
+fn same_hits_as_the_list_with_a_plane_and_a_quadric() {
+    let mut rng = Rng(3);
+    let mut objects = random_soup(&mut rng, 300);
+    objects.insert(
+        0,
+        object(Shape::Plane(
+            Plane::new(Vec3::new(0.0, -5.0, 0.0), Vec3::Y).unwrap(),
+        )),
+    );
+    // A cylinder x^2 + z^2 = 4 about the y axis: unbounded.
+    let cylinder = Mat4::from_diagonal(glam::Vec4::new(1.0, 0.0, 1.0, -4.0));
+    objects.push(object(Shape::Quadric(Quadric::new(cylinder).unwrap())));
+    let scene = scene(objects);
+    let bvh = Bvh::build(scene.objects());
+    assert_eq!(bvh.unbounded(), &[0, 301]);
+    let rays = random_rays(&mut rng, 4000, 12.0, 10.0);
+    assert_same_answers(&scene, &rays);
+}
+
+/// A closed bumpy UV sphere, `n` x `n` segments, vertex radii in [1, 1.5], wound
+/// outwards: the mesh of STABILITY S4/S5 (as in tests/07_intersections.rs).
+fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
+    let mut vertices = vec![Vec3::new(0.0, 1.3, 0.0)];
+    for i in 1..n {
+        let theta = std::f32::consts::PI * i as f32 / n as f32;
+        for j in 0..n {
+            let phi = std::f32::consts::TAU * j as f32 / n as f32;
+            let r = 1.25 + 0.25 * (3.0 * phi + 2.0 * theta).sin() * (5.0 * theta).cos();
+            vertices.push(
+                r * Vec3::new(
+                    theta.sin() * phi.cos(),
+                    theta.cos(),
+                    theta.sin() * phi.sin(),
+                ),
+            );
+        }
+    }
+    vertices.push(Vec3::new(0.0, -1.1, 0.0));
+    let south = vertices.len() - 1;
+    let ring = |i: usize, j: usize| 1 + (i - 1) * n + j % n;
+    let mut tris = Vec::new();
+    for j in 0..n {
+        tris.push([0, ring(1, j + 1), ring(1, j)]);
+        tris.push([south, ring(n - 1, j), ring(n - 1, j + 1)]);
+        for i in 1..n - 1 {
+            let (a, b, c, d) = (
+                ring(i, j),
+                ring(i, j + 1),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+            );
+            tris.push([a, b, d]);
+            tris.push([a, d, c]);
+        }
+    }
+    (vertices, tris)
+}
+
+#[test]
+fn watertight_through_the_tree_no_leaks_at_vertices_or_edges() {
+    for n in [16, 32] {
+        let (vertices, indices) = bumpy_sphere(n);
+        let objects = indices
+            .iter()
+            .map(|&[a, b, c]| {
+                object(Shape::Triangle(
+                    Triangle::new(vertices[a], vertices[b], vertices[c]).unwrap(),
+                ))
+            })
+            .collect();
+        let scene = scene(objects);
+        let bvh = BvhScene::new(scene.clone());
+        let edges: BTreeSet<(usize, usize)> = indices
+            .iter()
+            .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+            .collect();
+        let targets: Vec<Vec3> = vertices
+            .iter()
+            .copied()
+            .chain(
+                edges
+                    .iter()
+                    .map(|&(a, b)| (vertices[a] + vertices[b]) * 0.5),
+            )
+            .collect();
+        let rays: Vec<Ray> = targets
+            .iter()
+            .map(|&t| Ray::new(Vec3::ZERO, t).unwrap())
+            .collect();
+        let leaks = rays
+            .iter()
+            .filter(|r| bvh.closest_hit(r, 0.0, f32::INFINITY).is_none())
+            .count();
+        let list_leaks = rays
+            .iter()
+            .filter(|r| scene.closest_hit(r, 0.0, f32::INFINITY).is_none())
+            .count();
+        eprintln!(
+            "{n}x{n} bumpy sphere, {} rays at vertices and edge midpoints: tree leaks {leaks}, list {list_leaks}",
+            rays.len()
+        );
+        assert_eq!(leaks, 0);
+        assert_eq!(list_leaks, 0);
+        assert_same_answers(&scene, &rays);
+    }
+}
+
+#[test]
+fn degenerate_builds() {
+    let mut rng = Rng(4);
+    let rays = random_rays(&mut rng, 500, 3.0, 1.0);
+
+    // No objects: no nodes, nothing hit.
+    let empty = scene(Vec::new());
+    let bvh = Bvh::build(empty.objects());
+    assert!(bvh.nodes().is_empty() && bvh.unbounded().is_empty());
+    assert_eq!(bvh.sah_cost(), None);
+    assert_same_answers(&empty, &rays);
+
+    // One object: one leaf.
+    let one = scene(vec![object(Shape::Sphere(
+        Sphere::new(Vec3::ZERO, 0.5).unwrap(),
+    ))]);
+    let bvh = Bvh::build(one.objects());
+    assert_eq!(bvh.nodes().len(), 1);
+    assert_eq!(bvh.primitives(), &[0]);
+    assert_same_answers(&one, &rays);
+
+    // 1000 identical triangles: all centroids equal, one leaf; every hit is a
+    // thousand-way tie, and the tree returns the first object as the list does.
+    let tri = Triangle::new(
+        Vec3::new(-1.0, -1.0, 0.0),
+        Vec3::new(1.0, -1.0, 0.0),
+        Vec3::Y,
+    )
+    .unwrap();
+    let same = scene(vec![object(Shape::Triangle(tri)); 1000]);
+    let bvh = BvhScene::new(same.clone());
+    assert_eq!(bvh.bvh().nodes().len(), 1);
+    let r = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z).unwrap();
+    let (_, o) = bvh.closest_hit(&r, 0.0, f32::INFINITY).unwrap();
+    assert_eq!(index_of(bvh.scene(), o), 0);
+    assert_same_answers(&same, &rays);
+
+    // Only planes: no tree at all, everything in the unbounded list.
+    let planes = scene(
+        (0..5)
+            .map(|k| {
+                let n = Vec3::new(k as f32 - 2.0, 1.0, 0.5);
+                object(Shape::Plane(Plane::new(n * 0.3, n).unwrap()))
+            })
+            .collect(),
+    );
+    let bvh = Bvh::build(planes.objects());
+    assert!(bvh.nodes().is_empty());
+    assert_eq!(bvh.unbounded(), &[0, 1, 2, 3, 4]);
+    assert_same_answers(&planes, &rays);
+
+    // Zero-size and zero-thickness boxes: points on a line (a root box of no area,
+    // where the SAH falls back to the median) and flat squares in one plane.
+    let points = scene(
+        (0..100)
+            .map(|k| {
+                let p = Vec3::new(k as f32 * 0.01 - 0.5, 0.0, 0.0);
+                object(Shape::Aabb(Aabb::new(p, p).unwrap()))
+            })
+            .collect(),
+    );
+    assert_invariants(&points, &Bvh::build(points.objects()));
+    assert_same_answers(&points, &rays);
+    let flat = scene(
+        (0..100)
+            .map(|k| {
+                let c = Vec3::new(
+                    (k % 10) as f32 * 0.2 - 1.0,
+                    (k / 10) as f32 * 0.2 - 1.0,
+                    0.0,
+                );
+                object(Shape::Aabb(
+                    Aabb::new(c, c + Vec3::new(0.15, 0.15, 0.0)).unwrap(),
+                ))
+            })
+            .collect(),
+    );
+    assert_invariants(&flat, &Bvh::build(flat.objects()));
+    assert_same_answers(&flat, &rays);
+}
+
+#[test]
+fn a_pathological_distribution_stays_within_the_stack() {
+    // Boxes at x = 2^k, k = -120..=126, each 2% of its distance wide: the bins of
+    // each split put all but the farthest few boxes into the first bin, so each SAH
+    // split peels off only a few and the tree gets about 60 levels deep (61 when
+    // written), the deepest this test could make in f32's range. The traversal's
+    // fixed stack must still be enough, and the answers the list's.
+    let objects: Vec<Object> = (-120..=126)
+        .map(|k| {
+            let c = Vec3::new(2f32.powi(k), 0.0, 0.0);
+            let half = Vec3::splat(0.01 * c.x);
+            object(Shape::Aabb(Aabb::new(c - half, c + half).unwrap()))
+        })
+        .collect();
+    let scene = scene(objects);
+    let bvh = Bvh::build(scene.objects());
+    let depth = assert_invariants(&scene, &bvh);
+    eprintln!("247 boxes at x = 2^k: depth {depth}");
+    assert!(depth <= MAX_DEPTH);
+    let mut rng = Rng(5);
+    let rays: Vec<Ray> = (0..500)
+        .map(|_| {
+            let o = Vec3::new(-2.0, 0.0, 0.0) + rng.point(0.3) * 1e-30;
+            Ray::new(o, Vec3::X + rng.point(1e-3)).unwrap()
+        })
+        .collect();
+    assert_same_answers(&scene, &rays);
+}
+
+/// Every primitive in exactly one leaf, each child's box inside its parent's, each
+/// primitive's box inside its leaf's, no deeper than [`MAX_DEPTH`]; returns the depth.
+fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
+    let nodes = bvh.nodes();
+    let bounded: Vec<usize> = (0..scene.objects().len())
+        .filter(|&i| scene.objects()[i].shape.bounds().is_some())
+        .collect();
+    let mut seen = vec![0usize; scene.objects().len()];
+    let mut max_depth = 0;
+    let mut stack = if nodes.is_empty() {
+        vec![]
+    } else {
+        vec![(0, 1)]
+    };
+    let mut visited = 0;
+    while let Some((i, depth)) = stack.pop() {
+        visited += 1;
+        max_depth = max_depth.max(depth);
+        let node = nodes[i];
+        match node.kind {
+            NodeKind::Leaf { first, count } => {
+                assert!(count > 0);
+                for &p in &bvh.primitives()[first..first + count] {
+                    seen[p] += 1;
+                    let b = scene.objects()[p].shape.bounds().unwrap();
+                    assert!(node.bounds.contains(&b), "primitive {p} outside leaf {i}");
+                }
+            }
+            NodeKind::Interior { right, axis } => {
+                assert!(axis < 3 && right > i + 1 && right < nodes.len());
+                for child in [i + 1, right] {
+                    assert!(
+                        node.bounds.contains(&nodes[child].bounds),
+                        "child {child} outside {i}"
+                    );
+                    stack.push((child, depth + 1));
+                }
+            }
+        }
+    }
+    assert_eq!(visited, nodes.len(), "every node reachable once");
+    for (i, &count) in seen.iter().enumerate() {
+        let expected = usize::from(bounded.contains(&i));
+        assert_eq!(count, expected, "object {i} in {count} leaves");
+    }
+    assert_eq!(bvh.primitives().len(), bounded.len());
+    assert!(max_depth <= MAX_DEPTH, "depth {max_depth}");
+    max_depth
+}
+
+#[test]
+fn structural_invariants_and_sah_beats_the_median_on_100k_triangles() {
+    let mut rng = Rng(6);
+    let soup = scene(random_soup(&mut rng, 2000));
+    assert_invariants(&soup, &Bvh::build(soup.objects()));
+    assert_invariants(&soup, &Bvh::build_with(soup.objects(), Strategy::Median));
+
+    // 2 x 224 x 223 = 99 904 triangles.
+    let mesh = Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).unwrap();
+    let scene = scene(mesh_objects(&mesh));
+    let sah = Bvh::build(scene.objects());
+    let median = Bvh::build_with(scene.objects(), Strategy::Median);
+    let depth = assert_invariants(&scene, &sah);
+    assert_invariants(&scene, &median);
+    let (c_sah, c_median) = (sah.sah_cost().unwrap(), median.sah_cost().unwrap());
+    eprintln!(
+        "{} triangles: SAH tree {} nodes, depth {depth}, cost {c_sah:.2}; median tree {} nodes, cost {c_median:.2}",
+        scene.objects().len(),
+        sah.nodes().len(),
+        median.nodes().len()
+    );
+    assert!(c_sah < c_median, "SAH {c_sah} vs median {c_median}");
+}

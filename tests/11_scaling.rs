@@ -1,0 +1,46 @@
+//! Lesson 11, chart 7: the plain list against the BVH. No timing is asserted (times
+//! live in the lesson's charts); what must hold is that both structures answer the
+//! same, and that the chart has what the chapter says it has.
+
+use render_lessons::measure::scaling::{fan_scene, rows, sphere_scene};
+
+#[test]
+fn list_and_bvh_hit_the_same_rays_at_every_size() {
+    let scenes = vec![
+        fan_scene(1).unwrap(),
+        fan_scene(8).unwrap(),
+        sphere_scene(3).unwrap(),
+        sphere_scene(16).unwrap(),
+    ];
+    let rows = rows(scenes, 48, 27, 1000).unwrap();
+    let sizes: Vec<usize> = rows.iter().map(|r| r.primitives).collect();
+    assert_eq!(sizes, vec![1, 8, 12, 480]);
+    for r in &rows {
+        assert!(r.agree, "{r:?}");
+        assert!(r.list.is_some() && r.bvh > 0.0 && r.build >= 0.0, "{r:?}");
+    }
+}
+
+#[test]
+fn the_list_is_skipped_above_its_limit() {
+    let rows = rows(vec![sphere_scene(16).unwrap()], 8, 6, 100).unwrap();
+    assert_eq!(rows[0].list, None);
+    assert!(rows[0].agree);
+}
+
+#[test]
+fn fans_cover_the_share_of_the_frame_their_area_predicts() {
+    use render_lessons::measure::scaling::rays;
+    let scene = fan_scene(8).unwrap();
+    let rays = rays(48, 27).unwrap();
+    let hits = rays
+        .iter()
+        .filter(|r| scene.closest_hit(r, 0.0, f32::INFINITY).is_some())
+        .count();
+    // The fan is a regular octagon inscribed in a circle of radius 0.9: area
+    // 2 sqrt(2) 0.81 = 2.29. The eye is 3.03 units away and the film is 0.84 x 1.49
+    // at distance 1, so the frame spans about 2.54 x 4.52 = 11.5 there: about 20 %
+    // (the octagon is tilted by atan(0.4 / 3), which shrinks it by 1 %).
+    let share = hits as f64 / rays.len() as f64;
+    assert!((share - 0.20).abs() < 0.03, "{hits} of {}", rays.len());
+}

@@ -199,7 +199,7 @@ fn findings(rows: &[Row]) -> Vec<String> {
         )),
         None => out.push("the plain list was faster at every size measured".into()),
     }
-    if let Some(r) = rows.iter().filter(|r| r.list.is_some()).last() {
+    if let Some(r) = rows.iter().rfind(|r| r.list.is_some()) {
         out.push(format!(
             "at {} primitives: list {:.1} ms, BVH {:.2} ms per frame ({:.0}x), build {:.1} ms",
             r.primitives,

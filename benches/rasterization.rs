@@ -1,7 +1,8 @@
 //! Lesson 09's measurements: the rasterizer's frame time and triangles per second
-//! for a mesh of about 100 000 triangles at 1920 x 1080, and the same kind of frame
-//! ray cast by brute force (every ray against every triangle) on lesson 09's
-//! 1024-triangle torus. One thread for both, so the comparison is per core.
+//! for a mesh of about 100 000 triangles at 1920 x 1080; the same frame ray cast
+//! through lesson 11's BVH; and a frame ray cast by brute force (every ray against
+//! every triangle) on lesson 09's 1024-triangle torus. One thread for all, so the
+//! comparison is per core, and the same per-pixel Lambert shading for all.
 //!
 //!     cargo bench --bench rasterization
 //!
@@ -11,9 +12,12 @@
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
+use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
+use render_lessons::lighting::lambert;
 use render_lessons::raster::{Instance, Mesh, Settings, rasterize};
 use render_lessons::raycast::lambert_unshadowed;
+use render_lessons::render::render;
 use render_lessons::scene::{Object, PointLight, Scene};
 use render_lessons::shapes::{Shape, Triangle};
 
@@ -50,6 +54,22 @@ fn torus() -> Mesh {
     Mesh::from_obj(std::path::Path::new(path)).expect("the lesson's torus")
 }
 
+/// The mesh as a list of triangle primitives, for the ray caster.
+fn triangle_scene(mesh: &Mesh) -> Scene {
+    let objects = mesh
+        .triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            Object {
+                shape: Shape::Triangle(Triangle::new(a, b, c).expect("triangle")),
+                colour: Vec3::new(0.8, 0.5, 0.3),
+            }
+        })
+        .collect();
+    Scene::new(objects, Vec3::ZERO, LIGHT).expect("scene")
+}
+
 fn raster(c: &mut Criterion) {
     let camera = camera();
     let sphere = Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere");
@@ -69,19 +89,7 @@ fn raster(c: &mut Criterion) {
 
 fn ray_cast(c: &mut Criterion) {
     let camera = camera();
-    let mesh = torus();
-    let objects = mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
-            Object {
-                shape: Shape::Triangle(Triangle::new(a, b, c).expect("triangle")),
-                colour: Vec3::new(0.8, 0.5, 0.3),
-            }
-        })
-        .collect();
-    let scene = Scene::new(objects, Vec3::ZERO, LIGHT).expect("scene");
+    let scene = triangle_scene(&torus());
     let rows: Vec<u32> = (0..HEIGHT).step_by(ROW_STEP as usize).collect();
     let mut group = c.benchmark_group("ray cast 1920x1080, brute force, 1 thread");
     group.sample_size(10);
@@ -100,5 +108,32 @@ fn ray_cast(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, raster, ray_cast);
+fn bvh_ray_cast(c: &mut Criterion) {
+    let camera = camera();
+    let scene = triangle_scene(&Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere"));
+    let tree = BvhScene::new(scene);
+    let mut group = c.benchmark_group("ray cast 1920x1080, BVH, 1 thread");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(u64::from(WIDTH) * u64::from(HEIGHT)));
+    group.bench_function("uv sphere, 99904 triangles", |b| {
+        b.iter(|| {
+            render(&camera, Some(1), |r| {
+                match tree.closest_hit(r, 0.0, f32::INFINITY) {
+                    Some((hit, object)) => {
+                        let n = if hit.front_face {
+                            hit.normal
+                        } else {
+                            -hit.normal
+                        };
+                        lambert(hit.point, n, object.colour, &LIGHT, || true)
+                    }
+                    None => Vec3::ZERO,
+                }
+            })
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, raster, bvh_ray_cast, ray_cast);
 criterion_main!(benches);

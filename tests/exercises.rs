@@ -443,6 +443,138 @@ mod checks {
         );
     }
 
+    // Chapter 09.
+
+    type P = (i64, i64);
+
+    fn edge(u: P, v: P, q: P) -> i64 {
+        (q.0 - u.0) * (v.1 - u.1) - (q.1 - u.1) * (v.0 - u.0)
+    }
+
+    fn top_left(u: P, v: P) -> bool {
+        v.1 > u.1 || (v.1 == u.1 && v.0 < u.0)
+    }
+
+    /// The edges b -> c, c -> a, a -> b, with b and c swapped if the area is
+    /// negative; `None` if it is zero.
+    fn edges(a: P, b: P, c: P) -> Option<[(P, P); 3]> {
+        let area = edge(a, b, c);
+        let (b, c) = if area < 0 { (c, b) } else { (b, c) };
+        (area != 0).then_some([(b, c), (c, a), (a, b)])
+    }
+
+    /// The right rule with the arithmetic done in the type `to` converts to.
+    fn covers_in<T>(to: fn(i64) -> T, a: P, b: P, c: P, p: P) -> bool
+    where
+        T: Copy + Default + PartialOrd + std::ops::Sub<Output = T> + std::ops::Mul<Output = T>,
+    {
+        let e = |u: P, v: P, q: P| {
+            (to(q.0) - to(u.0)) * (to(v.1) - to(u.1)) - (to(q.1) - to(u.1)) * (to(v.0) - to(u.0))
+        };
+        let zero = T::default();
+        let area = e(a, b, c);
+        if area == zero {
+            return false;
+        }
+        let (b, c) = if area < zero { (c, b) } else { (b, c) };
+        [(b, c), (c, a), (a, b)].into_iter().all(|(u, v)| {
+            let e = e(u, v, p);
+            e > zero || (e == zero && top_left(u, v))
+        })
+    }
+
+    #[test]
+    fn covers_accepts_the_reference() {
+        use render_lessons::raster::rasterize::covers;
+        assert_eq!(check_covers(covers), Outcome::Pass);
+        // No swap: for a clockwise triangle every edge is turned round, in i128.
+        let independent = |a: P, b: P, c: P, p: P| {
+            let e = |u: P, v: P, q: P| {
+                let w = |x: i64| i128::from(x);
+                (w(q.0) - w(u.0)) * (w(v.1) - w(u.1)) - (w(q.1) - w(u.1)) * (w(v.0) - w(u.0))
+            };
+            let area = e(a, b, c);
+            area != 0
+                && [(a, b), (b, c), (c, a)].into_iter().all(|(u, v)| {
+                    let (u, v) = if area > 0 { (u, v) } else { (v, u) };
+                    let e = e(u, v, p);
+                    e > 0 || (e == 0 && top_left(u, v))
+                })
+        };
+        assert_eq!(check_covers(independent), Outcome::Pass);
+        // On the diagonal the two triangles of the check share, away from its far
+        // end, exactly one of them covers each point, whatever their winding.
+        let lower = ((0, 0), (0, 8), (8, 8));
+        let upper = ((0, 0), (8, 8), (8, 0));
+        for i in 0..8 {
+            let p = (i, i);
+            assert_ne!(
+                covers(lower.0, lower.1, lower.2, p),
+                covers(upper.0, upper.1, upper.2, p),
+                "{p:?}"
+            );
+            assert_eq!(
+                covers(lower.0, lower.1, lower.2, p),
+                covers(lower.0, lower.2, lower.1, p)
+            );
+        }
+    }
+
+    #[test]
+    fn covers_rejects_mistakes() {
+        fails_with(
+            check_covers(|a, b, c, p| {
+                edges(a, b, c).is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) >= 0))
+            }),
+            "double",
+        );
+        fails_with(
+            check_covers(|a, b, c, p| {
+                edges(a, b, c).is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) > 0))
+            }),
+            "cracks",
+        );
+        fails_with(
+            check_covers(|a, b, c, p| {
+                edge(a, b, c) != 0
+                    && [(b, c), (c, a), (a, b)].into_iter().all(|(u, v)| {
+                        let e = edge(u, v, p);
+                        e > 0 || (e == 0 && top_left(u, v))
+                    })
+            }),
+            "nothing is covered",
+        );
+        fails_with(
+            check_covers(|a, b, c, p| {
+                let sign = edge(a, b, c).signum();
+                sign != 0
+                    && [(b, c), (c, a), (a, b)].into_iter().all(|(u, v)| {
+                        let e = sign * edge(u, v, p);
+                        e > 0 || (e == 0 && top_left(u, v))
+                    })
+            }),
+            "flip the signs",
+        );
+        fails_with(
+            check_covers(|a, b, c, p| covers_in(|x| x as f32, a, b, c, p)),
+            "not in floating point",
+        );
+        fails_with(
+            check_covers(|a, b, c, p| covers_in(|x| x as f64, a, b, c, p)),
+            "not in floating point",
+        );
+        fails_with(
+            check_covers(|a, b, c, p| covers_in(|x| std::num::Wrapping(x as i32), a, b, c, p)),
+            "overflow i32",
+        );
+        // Plain i32 panics on overflow in a debug build and wraps in a release build:
+        // either way the hint says i64.
+        fails_with(
+            check_covers(|a, b, c, p| covers_in(|x| x as i32, a, b, c, p)),
+            "i64",
+        );
+    }
+
     // The machinery.
 
     #[test]
@@ -452,6 +584,7 @@ mod checks {
             Outcome::NotStarted
         );
         assert_eq!(check_closest(|_, _, _, _| todo!()), Outcome::NotStarted);
+        assert_eq!(check_covers(|_, _, _, _| todo!()), Outcome::NotStarted);
         match check_point_at(|_, _, _| panic!("oops")) {
             Outcome::Fail { got, .. } => assert!(got.contains("a panic: oops"), "{got}"),
             other => panic!("expected a failure, got {other}"),
@@ -508,7 +641,9 @@ mod checks {
 
 #[cfg(feature = "exercises")]
 mod student {
-    use render_lessons::exercises::{ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, check_all};
+    use render_lessons::exercises::{
+        ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, ch09, check_all,
+    };
 
     use super::*;
 
@@ -569,6 +704,11 @@ mod student {
     #[test]
     fn ch08_closest() {
         expect_pass(CLOSEST, check_closest(ch08::closest));
+    }
+
+    #[test]
+    fn ch09_covers() {
+        expect_pass(COVERS, check_covers(ch09::covers));
     }
 
     /// The table of every exercise's status; never fails. See it with

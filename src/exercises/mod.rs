@@ -29,6 +29,8 @@ pub mod ch06;
 pub mod ch07;
 #[cfg(feature = "exercises")]
 pub mod ch08;
+#[cfg(feature = "exercises")]
+pub mod ch09;
 
 /// Every exercise checked on the student's code, in book order.
 #[cfg(feature = "exercises")]
@@ -48,5 +50,6 @@ pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
             check_ray_sphere_roots(ch07::ray_sphere_roots),
         ),
         (CLOSEST, check_closest(ch08::closest)),
+        (COVERS, check_covers(ch09::covers)),
     ]
 }

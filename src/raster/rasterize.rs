@@ -94,6 +94,26 @@ fn is_top_left(a: Fixed, b: Fixed) -> bool {
 }
 // ANCHOR_END: top_left
 
+// ANCHOR: covers
+/// Does the triangle a, b, c cover the point p (all on the sub-pixel grid)? The
+/// vertices may run either way round: if the area E_ab(c) is negative, two of them
+/// are swapped so that the edge functions are positive inside. A triangle of zero
+/// area covers nothing. p is covered if it is strictly inside every edge (E > 0), or
+/// exactly on an edge (E = 0) that is top-left. Exact for coordinates up to 2^29 in
+/// absolute value (every product stays below 2^61).
+pub fn covers(a: (i64, i64), b: (i64, i64), c: (i64, i64), p: (i64, i64)) -> bool {
+    let area = edge(a, b, c);
+    if area == 0 {
+        return false;
+    }
+    let (b, c) = if area < 0 { (c, b) } else { (b, c) };
+    [(b, c), (c, a), (a, b)].into_iter().all(|(u, v)| {
+        let e = edge(u, v, p);
+        e > 0 || (e == 0 && is_top_left(u, v))
+    })
+}
+// ANCHOR_END: covers
+
 /// A pixel position on the sub-pixel grid, or `None` if not finite or too far out.
 fn snap(p: Vec2) -> Option<Fixed> {
     if !p.is_finite() || p.abs().max_element() > MAX_COORDINATE {
@@ -140,7 +160,6 @@ pub fn rasterize_triangle(
     }
     let v = order.map(|k| t[k]);
     let edges = [(p[1], p[2]), (p[2], p[0]), (p[0], p[1])];
-    let top_left = edges.map(|(a, b)| is_top_left(a, b));
     let xs = centres_between(
         p.iter().map(|q| q.0).min().unwrap_or(0),
         p.iter().map(|q| q.0).max().unwrap_or(0),
@@ -155,9 +174,8 @@ pub fn rasterize_triangle(
     for y in y_range {
         for x in x_range.clone() {
             let centre = (x * SUBPIXELS + SUBPIXELS / 2, y * SUBPIXELS + SUBPIXELS / 2);
-            let e = edges.map(|(a, b)| edge(a, b, centre));
-            let inside = (0..3).all(|k| e[k] > 0 || (e[k] == 0 && top_left[k]));
-            if inside {
+            if covers(p[0], p[1], p[2], centre) {
+                let e = edges.map(|(a, b)| edge(a, b, centre));
                 let b = e.map(|e_k| (e_k as f64 / area as f64) as f32);
                 emit(fragment(x as u32, y as u32, &v, b, inv_w));
             }

@@ -1,0 +1,24 @@
+//! Chapter 09, The rasterization pipeline: coding exercise 9.1.
+//!
+//! Check it with `cargo test --features exercises --test exercises ch09`.
+// The parameters are unused until you write the body.
+#![allow(unused_variables)]
+
+/// Coding exercise 9.1: does the triangle `a`, `b`, `c` cover the point `p` under the
+/// top-left rule? All four are on the rasterizer's integer sub-pixel grid, as
+/// (column, row) with rows growing downwards; the vertices may run either way round,
+/// and the triangle may be degenerate.
+///
+/// The edge function of the directed edge a -> b at p, on integers (i64),
+/// E(p) = (p_x - a_x)(b_y - a_y) - (p_y - a_y)(b_x - a_x),
+/// is twice the signed area of the triangle (a, b, p). If the area E_ab(c) is
+/// negative, swap b and c; if it is zero, nothing is covered. Then p is covered if,
+/// for each of the edges b -> c, c -> a and a -> b, either E(p) > 0, or E(p) = 0 and
+/// the edge is top-left. An edge u -> v is top-left if it runs down the image
+/// (v_y > u_y), or is horizontal and runs towards -x (v_y = u_y and v_x < u_x).
+pub fn covers(a: (i64, i64), b: (i64, i64), c: (i64, i64), p: (i64, i64)) -> bool {
+    todo!(
+        "Coding exercise 9.1 (chapter 09, The rasterization pipeline): the inside test, \
+         edge functions and the top-left rule"
+    )
+}

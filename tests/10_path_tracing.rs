@@ -839,3 +839,48 @@ fn bad_input_is_an_error_naming_the_parameter() {
         "edges (a x b)"
     );
 }
+
+// ---------------------------------------------------------------- figures
+
+/// The path figure's recorder draws the same random numbers as the estimator and
+/// follows the same bounces: its radiance is the estimator's sample for the same
+/// pixel, seed and settings.
+#[test]
+fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
+    let (scene, camera) = cornell(160, 120).unwrap();
+    let s = settings(Sampling::NextEvent, Some(8), true);
+    let mut compared = 0;
+    for y in (0..120).step_by(3) {
+        for x in (0..160).step_by(3) {
+            let path = lesson::record_path(&scene, &camera, &s, 1, (x, y));
+            let mut rng = Rng::for_pixel(1, x, y);
+            let position = Vec2::new(x as f32, y as f32) + rng.next_vec2();
+            let ray = camera.ray(position, rng.next_vec2());
+            let expected = radiance(&scene, ray, &mut rng, &s);
+            let tolerance = 1e-4 * expected.max_element() + 1e-6;
+            assert!(
+                (path.radiance - expected).abs().max_element() <= tolerance,
+                "pixel ({x}, {y}): recorded {} vs estimator {expected}",
+                path.radiance
+            );
+            assert!(!path.vertices.is_empty() || path.escaped.is_some());
+            compared += 1;
+        }
+    }
+    assert_eq!(compared, 54 * 40);
+}
+
+#[test]
+fn the_figures_draw_paths_and_samples() {
+    let rgba = lesson::path_figure().unwrap().rgba();
+    assert!(common_blue(&rgba) > 2000, "the paths");
+    let rgba = lesson::hemisphere_figure().unwrap().rgba();
+    assert!(common_blue(&rgba) > 2000, "the uniform samples");
+}
+
+/// Clearly blue RGBA pixels (rays and uniform samples are drawn in blue).
+fn common_blue(rgba: &[u8]) -> usize {
+    rgba.chunks(4)
+        .filter(|p| p[2] as i32 > p[0] as i32 + 60)
+        .count()
+}

@@ -198,6 +198,8 @@ impl Chart {
             .configure_mesh()
             .x_desc(self.x.label.as_str())
             .y_desc(self.y.label.as_str())
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
             .draw()?;
         for (i, (series, points)) in self.series.iter().zip(drawn).enumerate() {
             let colour = COLOURS[i % COLOURS.len()];
@@ -214,10 +216,50 @@ impl Chart {
             .configure_series_labels()
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
+            .position(self.legend_corner(drawn))
             .draw()?;
         root.present()?;
         Ok(())
+    }
+
+    /// The corner of the plot with the fewest data points near it, for the legend:
+    /// points are placed on the axes' own scales (logarithms on a log axis) and
+    /// counted in each corner's box, 45% of the width by 40% of the height.
+    fn legend_corner(&self, drawn: &[Vec<(f64, f64)>]) -> SeriesLabelPosition {
+        let on_scale = |v: f64, scale| if scale == Scale::Log { v.log10() } else { v };
+        let points: Vec<(f64, f64)> = drawn
+            .iter()
+            .flatten()
+            .map(|&(x, y)| (on_scale(x, self.x.scale), on_scale(y, self.y.scale)))
+            .collect();
+        let span = |values: Vec<f64>| {
+            let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            (lo, (hi - lo).max(f64::MIN_POSITIVE))
+        };
+        let (x0, dx) = span(points.iter().map(|p| p.0).collect());
+        let (y0, dy) = span(points.iter().map(|p| p.1).collect());
+        let crowd = |right: bool, top: bool| {
+            points
+                .iter()
+                .filter(|(x, y)| {
+                    let (u, v) = ((x - x0) / dx, (y - y0) / dy);
+                    (if right { u > 0.55 } else { u < 0.45 })
+                        && (if top { v > 0.6 } else { v < 0.4 })
+                })
+                .count()
+        };
+        let corners = [
+            (crowd(true, true), SeriesLabelPosition::UpperRight),
+            (crowd(false, true), SeriesLabelPosition::UpperLeft),
+            (crowd(true, false), SeriesLabelPosition::LowerRight),
+            (crowd(false, false), SeriesLabelPosition::LowerLeft),
+        ];
+        let fewest = corners.iter().map(|c| c.0).min().unwrap_or(0);
+        corners
+            .into_iter()
+            .find(|c| c.0 == fewest)
+            .map_or(SeriesLabelPosition::UpperRight, |c| c.1)
     }
 
     /// Writes `stem.svg` and `stem.csv` into `dir`, each atomically.
@@ -227,6 +269,20 @@ impl Chart {
         write_atomically(&svg, self.svg()?.as_bytes())?;
         write_atomically(&csv, self.csv().as_bytes())?;
         Ok([svg, csv])
+    }
+}
+
+/// A tick label: plain decimals from 0.001 to 99 999, powers of ten written as
+/// 1e-7 outside that range, so no label carries rounding noise.
+fn tick(v: f64) -> String {
+    let a = v.abs();
+    if a == 0.0 {
+        "0".into()
+    } else if (1e-3..1e5).contains(&a) {
+        let s = format!("{v:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{v:.0e}")
     }
 }
 

@@ -1,0 +1,415 @@
+//! Lesson 10's path tracer, measured twice.
+//!
+//! 1. Samples per second (criterion): smallpt's Cornell box at 1024 x 768, one pass
+//!    of 1 sample per pixel per iteration, with MIS (the lesson's default) and with
+//!    cosine sampling and no light sampling (smallpt's algorithm), on one thread and
+//!    on every core.
+//! 2. The equal-time comparison (not criterion; run after it): the image error (RMSE)
+//!    against a converged reference after the same rendering time, for smallpt's
+//!    algorithm and for the estimators that sample the light, at 256 x 192.
+//!
+//! ```text
+//! cargo bench --bench path_tracing                  # both
+//! cargo bench --bench path_tracing -- "1024x768"    # samples per second only
+//! cargo bench --bench path_tracing -- equal-time    # the comparison only
+//! ```
+//!
+//! The comparison runs only under `cargo bench` (not when `cargo test --benches`
+//! runs this file once as a test). Its reference is cached in `target/` as PFM
+//! files named by the source of `src/pathtrace/`, so editing the path tracer renders
+//! it again; `PT_FRESH_REFERENCE=1` forces that too.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use criterion::{Criterion, SamplingMode, Throughput, criterion_group};
+use glam::Vec3;
+use render_lessons::framebuffer::Framebuffer;
+use render_lessons::pathtrace::pfm::save_pfm;
+use render_lessons::pathtrace::progressive::rmse;
+use render_lessons::pathtrace::scenes;
+use render_lessons::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling, Scene};
+use render_lessons::pathtrace::{Settings, SphereSampling};
+
+/// The lesson's settings (examples/10_path_tracing.rs with its defaults) with
+/// `sampling`: depth at most 8, Russian roulette, cone-sampled spheres.
+fn settings(sampling: Sampling) -> Settings {
+    Settings {
+        sampling,
+        sphere_lights: SphereSampling::Cone,
+        max_depth: Some(8),
+        russian_roulette: true,
+        ..Settings::default()
+    }
+}
+
+fn cores() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+// ANCHOR: samples_per_second
+fn samples_per_second(c: &mut Criterion) {
+    let (width, height) = (1024, 768);
+    let (scene, camera) = scenes::cornell(width, height).expect("the Cornell box");
+    let mut group = c.benchmark_group("path tracing, smallpt's Cornell box, 1024x768, 1 spp");
+    group.sample_size(10);
+    // One iteration takes a second or more: the same number in every sample.
+    group.sampling_mode(SamplingMode::Flat);
+    group.warm_up_time(Duration::from_secs(1));
+    group.measurement_time(Duration::from_secs(20));
+    group.throughput(Throughput::Elements(u64::from(width * height)));
+    for (name, sampling) in [("MIS", Sampling::Mis), ("cosine", Sampling::Cosine)] {
+        let settings = settings(sampling);
+        for threads in [1, cores()] {
+            let mut acc = Accumulator::new(&camera, 1);
+            group.bench_function(format!("{name}, {threads} thread(s)"), |b| {
+                b.iter(|| {
+                    acc.render_pass(
+                        &scene,
+                        &camera,
+                        &settings,
+                        PixelSampling::Independent,
+                        1,
+                        Some(threads),
+                    )
+                    .expect("pass")
+                })
+            });
+            assert_eq!(acc.non_finite(), 0, "NaN or infinite samples");
+        }
+    }
+    group.finish();
+}
+// ANCHOR_END: samples_per_second
+
+criterion_group!(benches, samples_per_second);
+
+/// The comparison's image size.
+const WIDTH: u32 = 256;
+const HEIGHT: u32 = 192;
+/// Samples per pixel of each half of the reference (MIS, two seeds).
+const REFERENCE_HALF_SPP: u32 = 2048;
+/// Rendering time each method gets.
+const SECONDS: f64 = 30.0;
+/// The times at which the errors are compared.
+const CHECKPOINTS: [f64; 6] = [0.5, 1.0, 2.0, 5.0, 10.0, 30.0];
+/// The seed of the compared runs; the reference's halves use other seeds.
+const SEED: u64 = 1;
+const REFERENCE_SEEDS: [u64; 2] = [0x5eed_0001, 0x5eed_0002];
+
+/// The path tracer's source, hashed: the reference cache is valid for this code only.
+fn source_hash() -> u64 {
+    use std::hash::{Hash, Hasher};
+    let sources = [
+        include_str!("../src/pathtrace/estimator.rs"),
+        include_str!("../src/pathtrace/lens.rs"),
+        include_str!("../src/pathtrace/light.rs"),
+        include_str!("../src/pathtrace/material.rs"),
+        include_str!("../src/pathtrace/mis.rs"),
+        include_str!("../src/pathtrace/next_event.rs"),
+        include_str!("../src/pathtrace/progressive.rs"),
+        include_str!("../src/pathtrace/rng.rs"),
+        include_str!("../src/pathtrace/roulette.rs"),
+        include_str!("../src/pathtrace/scene.rs"),
+        include_str!("../src/pathtrace/scenes.rs"),
+        include_str!("../src/pathtrace/settings.rs"),
+        include_str!("../src/sampling.rs"),
+        include_str!("../src/offset.rs"),
+    ];
+    // A fixed FNV-1a, so the name does not change with the std hasher.
+    struct Fnv(u64);
+    impl Hasher for Fnv {
+        fn finish(&self) -> u64 {
+            self.0
+        }
+        fn write(&mut self, bytes: &[u8]) {
+            for &b in bytes {
+                self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+    }
+    let mut h = Fnv(0xcbf2_9ce4_8422_2325);
+    sources.hash(&mut h);
+    h.finish()
+}
+
+/// Reads a PFM written by [`save_pfm`] (three channels, little-endian, bottom row
+/// first); `None` if the file is missing or not of that form.
+fn load_pfm(path: &Path) -> Option<Framebuffer> {
+    let bytes = fs::read(path).ok()?;
+    let mut lines = bytes.splitn(4, |&b| b == b'\n');
+    if lines.next()? != b"PF" {
+        return None;
+    }
+    let size = std::str::from_utf8(lines.next()?).ok()?;
+    let mut size = size.split_whitespace().map(|s| s.parse::<u32>());
+    let (w, h) = (size.next()?.ok()?, size.next()?.ok()?);
+    if lines.next()? != b"-1.0" {
+        return None;
+    }
+    let data = lines.next()?;
+    if data.len() != w as usize * h as usize * 12 {
+        return None;
+    }
+    let f = |i: usize| f32::from_le_bytes([data[i], data[i + 1], data[i + 2], data[i + 3]]);
+    let mut pixels = vec![Vec3::ZERO; w as usize * h as usize];
+    for (i, p) in pixels.iter_mut().enumerate() {
+        let (x, y) = (i % w as usize, i / w as usize);
+        let j = ((h as usize - 1 - y) * w as usize + x) * 12;
+        *p = Vec3::new(f(j), f(j + 4), f(j + 8));
+    }
+    Framebuffer::from_pixels(w, h, pixels).ok()
+}
+
+/// The mean of two images of the same size.
+fn average(a: &Framebuffer, b: &Framebuffer) -> Framebuffer {
+    Framebuffer::from_fn(a.width(), a.height(), |x, y| {
+        (a.get(x, y).unwrap_or_default() + b.get(x, y).unwrap_or_default()) / 2.0
+    })
+    .expect("image")
+}
+
+/// The mean of all channels of all pixels.
+fn mean(image: &Framebuffer) -> f64 {
+    let mut sum = 0.0;
+    for y in 0..image.height() {
+        for x in 0..image.width() {
+            let c = image.get(x, y).unwrap_or_default().as_dvec3();
+            sum += c.x + c.y + c.z;
+        }
+    }
+    sum / (3.0 * f64::from(image.width()) * f64::from(image.height()))
+}
+
+/// One half of the reference: MIS, `REFERENCE_HALF_SPP` samples, seed `seed`, read
+/// from the cache if it is there.
+fn reference_half(scene: &Scene, camera: &LensCamera, seed: u64) -> Framebuffer {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target");
+    let path = dir.join(format!(
+        "path_tracing_reference_{WIDTH}x{HEIGHT}_mis_{REFERENCE_HALF_SPP}spp_seed{seed:x}_{:016x}.pfm",
+        source_hash()
+    ));
+    let fresh = std::env::var_os("PT_FRESH_REFERENCE").is_some();
+    if !fresh && let Some(image) = load_pfm(&path) {
+        println!(
+            "reference half (seed {seed:#x}) read from {}",
+            path.display()
+        );
+        return image;
+    }
+    let start = Instant::now();
+    let mut acc = Accumulator::new(camera, seed);
+    let settings = settings(Sampling::Mis);
+    let mut image = None;
+    while acc.samples() < REFERENCE_HALF_SPP {
+        let spp = 64.min(REFERENCE_HALF_SPP - acc.samples());
+        let pass = acc.render_pass(
+            scene,
+            camera,
+            &settings,
+            PixelSampling::Independent,
+            spp,
+            None,
+        );
+        image = Some(pass.expect("reference pass"));
+    }
+    assert_eq!(
+        acc.non_finite(),
+        0,
+        "NaN or infinite samples in the reference"
+    );
+    let image = image.expect("at least one pass");
+    println!(
+        "reference half (seed {seed:#x}): {REFERENCE_HALF_SPP} spp in {:.0} s",
+        start.elapsed().as_secs_f64()
+    );
+    if fs::create_dir_all(&dir).is_ok()
+        && let Err(e) = save_pfm(&path, &image)
+    {
+        println!("could not cache the reference: {e}");
+    }
+    image
+}
+
+/// A method being compared: its accumulator and its (seconds, RMSE, spp) history.
+struct Run {
+    name: &'static str,
+    settings: Settings,
+    acc: Accumulator,
+    seconds: f64,
+    history: Vec<(f64, f64, u32)>,
+    last: Option<Framebuffer>,
+}
+
+impl Run {
+    /// The RMSE at time `t`: that of the last image finished by then.
+    fn rmse_at(&self, t: f64) -> Option<(f64, u32)> {
+        let i = self.history.partition_point(|&(s, _, _)| s <= t);
+        if i == 0 {
+            return None;
+        }
+        let (_, e, spp) = self.history[i - 1];
+        Some((e, spp))
+    }
+
+    /// The first time its RMSE is at most `e`.
+    fn time_to(&self, e: f64) -> Option<(f64, u32)> {
+        self.history
+            .iter()
+            .find(|&&(_, r, _)| r <= e)
+            .map(|&(s, _, spp)| (s, spp))
+    }
+}
+
+/// Formats an RMSE measured against a reference with error `e_ref`, and the same
+/// with the reference's share taken out: measured^2 = e_method^2 + e_ref^2 when the
+/// two are independent.
+fn corrected(measured: f64, e_ref: f64) -> f64 {
+    (measured * measured - e_ref * e_ref).max(0.0).sqrt()
+}
+
+// ANCHOR: equal_time
+/// The equal-time comparison. Every method renders 1 sample per pixel per pass on
+/// the same thread pool (every core); the passes of the methods take turns, so a
+/// change in the machine's load falls on all of them alike, and each method's clock
+/// counts only its own passes (the RMSE after each pass is computed off the clock).
+fn equal_time() {
+    let threads = cores();
+    println!(
+        "\nEqual-time comparison: smallpt's Cornell box, {WIDTH}x{HEIGHT}, {threads} thread(s)"
+    );
+    let (scene, camera) = scenes::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let halves = REFERENCE_SEEDS.map(|seed| reference_half(&scene, &camera, seed));
+    let reference = average(&halves[0], &halves[1]);
+    // The halves are independent, each with error e_half; their difference has
+    // RMSE sqrt(2) e_half, their mean error e_half / sqrt(2) = RMSE(halves) / 2.
+    let e_ref = rmse(&halves[0], &halves[1]) / 2.0;
+    println!(
+        "reference: MIS, 2 x {REFERENCE_HALF_SPP} spp (seeds {:#x}, {:#x}), mean {:.5}, \
+         its own RMSE about {e_ref:.5}",
+        REFERENCE_SEEDS[0],
+        REFERENCE_SEEDS[1],
+        mean(&reference)
+    );
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("thread pool");
+    let methods = [
+        ("(a) cosine, no light sampling (smallpt)", Sampling::Cosine),
+        ("(b1) next event estimation", Sampling::NextEvent),
+        ("(b2) MIS", Sampling::Mis),
+    ];
+    let mut runs: Vec<Run> = methods
+        .iter()
+        .map(|&(name, sampling)| Run {
+            name,
+            settings: settings(sampling),
+            acc: Accumulator::new(&camera, SEED),
+            seconds: 0.0,
+            history: Vec::new(),
+            last: None,
+        })
+        .collect();
+    pool.install(|| {
+        while runs.iter().any(|r| r.seconds < SECONDS) {
+            for run in runs.iter_mut().filter(|r| r.seconds < SECONDS) {
+                let start = Instant::now();
+                let image = run
+                    .acc
+                    .render_pass(
+                        &scene,
+                        &camera,
+                        &run.settings,
+                        PixelSampling::Independent,
+                        1,
+                        None,
+                    )
+                    .expect("pass");
+                run.seconds += start.elapsed().as_secs_f64();
+                let e = rmse(&image, &reference);
+                run.history.push((run.seconds, e, run.acc.samples()));
+                run.last = Some(image);
+            }
+        }
+    });
+    for run in &runs {
+        assert_eq!(run.acc.non_finite(), 0, "NaN or infinite samples");
+    }
+    report(&runs, e_ref);
+}
+// ANCHOR_END: equal_time
+
+fn report(runs: &[Run], e_ref: f64) {
+    println!("\nRMSE against the reference at equal times (spp reached in brackets):");
+    print!("| seconds |");
+    for run in runs {
+        print!(" {} |", run.name);
+    }
+    println!();
+    println!("|---|{}", "---|".repeat(runs.len()));
+    for t in CHECKPOINTS {
+        print!("| {t} |");
+        for run in runs {
+            match run.rmse_at(t) {
+                Some((e, spp)) => print!(" {e:.5} ({spp}) |"),
+                None => print!(" - |"),
+            }
+        }
+        println!();
+    }
+    println!("\nAt the end of each run:");
+    println!(
+        "| method | seconds | spp | spp per second | RMSE | RMSE without the reference's share | image mean |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    for run in runs {
+        let (s, e, spp) = *run.history.last().expect("at least one pass");
+        let m = run.last.as_ref().map_or(0.0, mean);
+        println!(
+            "| {} | {s:.2} | {spp} | {:.1} | {e:.5} | {:.5} | {m:.5} |",
+            run.name,
+            f64::from(spp) / s,
+            corrected(e, e_ref)
+        );
+    }
+    let (a_seconds, a_error, a_spp) = *runs[0].history.last().expect("at least one pass");
+    println!(
+        "\nTime to reach (a)'s final RMSE {a_error:.5} ((a) took {a_seconds:.2} s, {a_spp} spp):"
+    );
+    println!("| method | seconds | spp | speed-up over (a) |");
+    println!("|---|---|---|---|");
+    for run in runs {
+        match run.time_to(a_error) {
+            Some((s, spp)) => println!("| {} | {s:.3} | {spp} | {:.1}x |", run.name, a_seconds / s),
+            None => println!("| {} | not reached | | |", run.name),
+        }
+    }
+    // How much of (a)'s final error is the reference's own.
+    println!(
+        "\nThe reference's own RMSE {e_ref:.5} is {:.0}% of (a)'s final RMSE \
+         (in squares: {:.1}% of its mean squared error).",
+        100.0 * e_ref / a_error,
+        100.0 * (e_ref * e_ref) / (a_error * a_error)
+    );
+}
+
+/// Whether to run the equal-time comparison: only under `cargo bench` (which passes
+/// `--bench`), and only with no name filter or the filter `equal-time`.
+fn wants_equal_time() -> bool {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if !args.iter().any(|a| a == "--bench") || args.iter().any(|a| a == "--test" || a == "--list") {
+        return false;
+    }
+    let filters: Vec<&String> = args.iter().filter(|a| !a.starts_with('-')).collect();
+    filters.is_empty() || filters.iter().any(|f| f.as_str() == "equal-time")
+}
+
+fn main() {
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if wants_equal_time() {
+        equal_time();
+    }
+}

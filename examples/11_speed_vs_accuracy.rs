@@ -13,9 +13,19 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
+use render_lessons::Result;
+use render_lessons::chart::{Chart, Scale};
 use render_lessons::error::Error;
 use render_lessons::lesson::{self, Output};
-use render_lessons::measure::{ALL, Quality};
+use render_lessons::measure::{ALL, Measure, Measured, Quality};
+use render_lessons::offset::Offset;
+use render_lessons::raster::{Cull, Settings, Shading, rasterize};
+use render_lessons::raycast::lambert;
+use render_lessons::render::render;
+
+#[path = "09_rasterization.rs"]
+#[allow(dead_code)]
+mod lesson09;
 
 /// The lesson's parameters.
 #[derive(Parser, Debug)]
@@ -39,7 +49,9 @@ fn main() -> ExitCode {
         } else {
             Quality::Quick
         };
-        let chosen: Vec<_> = ALL
+        let mut all: Vec<(&str, Measure)> = ALL.to_vec();
+        all.push(("11_8_lessons", lessons));
+        let chosen: Vec<_> = all
             .iter()
             .filter(|(stem, _)| {
                 args.only
@@ -74,3 +86,103 @@ fn main() -> ExitCode {
         Ok(())
     })
 }
+
+/// The best of `repeats` wall times of `work`, in milliseconds, and its last result.
+fn best_ms<T>(repeats: u32, mut work: impl FnMut() -> Result<T>) -> Result<(f64, T)> {
+    let mut best = f64::INFINITY;
+    let mut result = None;
+    for _ in 0..repeats.max(1) {
+        let start = Instant::now();
+        result = Some(work()?);
+        best = best.min(start.elapsed().as_secs_f64() * 1e3);
+    }
+    let result = result.ok_or(Error::TooFew {
+        param: "repeats",
+        value: 0,
+        min: 1,
+    })?;
+    Ok((best, result))
+}
+
+// ANCHOR: lessons
+/// Chart 8, the renderers of lessons 08 and 09 on lesson 08's scene: time per frame
+/// against the share of pixels (away from silhouettes) that differ from the
+/// ray-traced image with shadow rays. The rasterizer's two knobs are swept: the
+/// tessellation of the spheres, and the resolution of the shadow map.
+pub fn lessons(quality: Quality) -> Result<Measured> {
+    let args = lesson09::Args::parse_from(["09_rasterization"]);
+    let scene = lesson09::scene()?;
+    let camera = lesson09::camera(&args)?;
+    let light = scene.light();
+    let mask = lesson09::silhouettes(&scene, &camera, None)?;
+    let repeats = quality.pick(2, 5);
+    let (traced_ms, reference) = best_ms(repeats, || {
+        render(&camera, None, |r| lambert(&scene, r, Offset::Scaled))
+    })?;
+    let raster = |segments: u32, shadows| -> Result<(f64, f64)> {
+        let instances = lesson09::tessellate(&scene, segments)?;
+        let settings = Settings {
+            depth: lesson09::DEPTH,
+            shading: Shading::PerPixel,
+            cull: Cull::None,
+            background: scene.background(),
+            shadows,
+        };
+        let (ms, image) = best_ms(repeats, || {
+            rasterize(&instances, &camera, &light, &settings, None)
+        })?;
+        let a = lesson09::agreement(&image, &reference, &mask);
+        Ok((ms, 100.0 - a.percent_agreeing()))
+    };
+    let map = |size: u32| {
+        let mut s = lesson09::shadows(&args, 1.0);
+        s.size = size;
+        Some(s)
+    };
+    let segments = [8, 16, 32, 64, 128]
+        .into_iter()
+        .map(|n| raster(n, map(1024)))
+        .collect::<Result<Vec<_>>>()?;
+    let maps = [128, 256, 512, 1024, 2048, 4096]
+        .into_iter()
+        .map(|size| raster(64, map(size)))
+        .collect::<Result<Vec<_>>>()?;
+    let no_shadows = raster(64, None)?;
+    let chart = Chart::new(
+        "Lessons 08 and 09 on lesson 08's scene, 480 x 270, every core",
+        ("time per frame (ms)", Scale::Log),
+        (
+            "pixels differing from the ray-traced image (%)",
+            Scale::Linear,
+        ),
+    )
+    .with(
+        "rasterized + 1024^2 shadow map, spheres of 8 to 128 segments",
+        segments.clone(),
+    )
+    .with(
+        "rasterized, 64 segments, shadow map of 128^2 to 4096^2",
+        maps.clone(),
+    )
+    .with("rasterized, no shadows", vec![no_shadows])
+    .with(
+        "ray cast with shadow rays (the reference)",
+        vec![(traced_ms, 0.0)],
+    );
+    let findings = vec![
+        format!(
+            "ray cast with shadow rays: {traced_ms:.0} ms; rasterized with 64 segments and a 1024^2 map: {:.0} ms, {:.2}% of pixels differ",
+            segments[3].0, segments[3].1
+        ),
+        format!(
+            "no shadows: {:.2}% differ; a 128^2 map: {:.2}%, a 4096^2 map: {:.2}% ({:.0} ms)",
+            no_shadows.1, maps[0].1, maps[5].1, maps[5].0
+        ),
+        "lesson 10 is not on this chart: it solves the whole rendering equation (indirect light, \
+         area lights), so against this direct-lighting image its difference would be the light \
+         the others leave out; chart 6 is its time against error"
+            .to_string(),
+    ];
+    Ok(Measured { chart, findings })
+}
+// ANCHOR_END: lessons

@@ -15,7 +15,7 @@ use glam::Vec3;
 use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::lighting::lambert;
-use render_lessons::raster::{Instance, Mesh, Settings, rasterize};
+use render_lessons::raster::{Cull, Instance, Mesh, Settings, rasterize};
 use render_lessons::raycast::lambert_unshadowed;
 use render_lessons::render::render;
 use render_lessons::scene::{Object, PointLight, Scene};
@@ -80,9 +80,17 @@ fn raster(c: &mut Criterion) {
         let triangles = mesh.triangles.len() as u64;
         let instances = [Instance::new(mesh, Vec3::new(0.8, 0.5, 0.3))];
         group.throughput(Throughput::Elements(triangles));
-        group.bench_function(format!("{name}, {triangles} triangles"), |b| {
-            b.iter(|| rasterize(&instances, &camera, &LIGHT, &Settings::default(), Some(1)))
-        });
+        // Both faces, as the lessons draw open meshes; then with back faces culled, as
+        // a rasterizer draws a closed mesh (the hidden half is never rasterized).
+        for cull in [Cull::None, Cull::Back] {
+            let settings = Settings {
+                cull,
+                ..Settings::default()
+            };
+            group.bench_function(format!("{name}, {triangles} triangles, {cull:?}"), |b| {
+                b.iter(|| rasterize(&instances, &camera, &LIGHT, &settings, Some(1)))
+            });
+        }
     }
     group.finish();
 }

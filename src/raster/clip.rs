@@ -35,6 +35,12 @@ pub fn clip_triangle(t: &[ClipVertex; 3]) -> Vec<[ClipVertex; 3]> {
     if t.iter().any(|v| !v.clip.is_finite()) {
         return Vec::new();
     }
+    // Most triangles lie wholly inside every plane: nothing to cut.
+    if t.iter()
+        .all(|v| v.clip.w > 0.0 && PLANES.iter().all(|d| d(v.clip) >= 0.0))
+    {
+        return vec![*t];
+    }
     let mut polygon = t.to_vec();
     for plane in PLANES {
         polygon = clip_polygon(&polygon, plane);

@@ -144,9 +144,10 @@ pub fn rasterize_triangle(
     rows: Range<u32>,
     mut emit: impl FnMut(Fragment),
 ) {
-    let Some(mut p) = t.iter().map(|v| snap(v.pixel)).collect::<Option<Vec<_>>>() else {
+    let [Some(a), Some(b), Some(c)] = t.each_ref().map(|v| snap(v.pixel)) else {
         return;
     };
+    let mut p = [a, b, c];
     let mut order = [0, 1, 2];
     let mut area = edge(p[0], p[1], p[2]);
     if area == 0 || (area < 0 && cull == Cull::Back) {

@@ -355,43 +355,10 @@ fn gamma_matches_pbrt() {
 
 // ---------------------------------------------------------------- triangle
 
-/// A closed bumpy UV sphere, `n` x `n` segments, vertex radii in [1, 1.5] from a
-/// fixed formula; triangles wound outwards.
+/// The closed bumpy sphere of STABILITY S4/S5, `n` x `n` segments: the same mesh
+/// lesson 11's chart 2 measures.
 fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
-    let mut vertices = vec![Vec3::new(0.0, 1.3, 0.0)]; // north pole
-    for i in 1..n {
-        let theta = std::f32::consts::PI * i as f32 / n as f32;
-        for j in 0..n {
-            let phi = std::f32::consts::TAU * j as f32 / n as f32;
-            let r = 1.25 + 0.25 * (3.0 * phi + 2.0 * theta).sin() * (5.0 * theta).cos();
-            vertices.push(
-                r * Vec3::new(
-                    theta.sin() * phi.cos(),
-                    theta.cos(),
-                    theta.sin() * phi.sin(),
-                ),
-            );
-        }
-    }
-    vertices.push(Vec3::new(0.0, -1.1, 0.0)); // south pole
-    let south = vertices.len() - 1;
-    let ring = |i: usize, j: usize| 1 + (i - 1) * n + j % n;
-    let mut tris = Vec::new();
-    for j in 0..n {
-        tris.push([0, ring(1, j + 1), ring(1, j)]);
-        tris.push([south, ring(n - 1, j), ring(n - 1, j + 1)]);
-        for i in 1..n - 1 {
-            let (a, b, c, d) = (
-                ring(i, j),
-                ring(i, j + 1),
-                ring(i + 1, j),
-                ring(i + 1, j + 1),
-            );
-            tris.push([a, b, d]);
-            tris.push([a, d, c]);
-        }
-    }
-    (vertices, tris)
+    render_lessons::measure::triangle::bumpy_sphere(n, n)
 }
 
 /// How many of the rays from the origin towards `targets` hit no triangle at all, for

@@ -14,32 +14,16 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
 use render_lessons::bvh::{Bvh, BvhScene};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
-use render_lessons::raster::mesh::Mesh;
+use render_lessons::measure::scaling;
 use render_lessons::ray::Ray;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
-use render_lessons::scene::{Object, PointLight, Scene};
-use render_lessons::shapes::{Shape, Triangle};
+use render_lessons::scene::Scene;
 
-/// A UV sphere of radius 1 at the origin, n x n segments, as a scene of triangles.
+/// A UV sphere of radius 1 at the origin, n x n segments, as a scene of triangles
+/// (the scenes of lesson 11's chart 7).
 fn sphere_scene(n: u32) -> Scene {
-    let mesh = Mesh::uv_sphere(Vec3::ZERO, 1.0, n, n).expect("mesh");
-    let objects = mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
-            Object {
-                shape: Shape::Triangle(Triangle::new(a, b, c).expect("triangle")),
-                colour: Vec3::new(0.8, 0.5, 0.3),
-            }
-        })
-        .collect();
-    let light = PointLight {
-        position: Vec3::new(0.0, 5.0, 5.0),
-        intensity: Vec3::ONE,
-    };
-    Scene::new(objects, Vec3::ZERO, light).expect("scene")
+    scaling::sphere_scene(n).expect("scene")
 }
 
 /// A pinhole camera 3 units from the sphere, which fills most of the frame's height.

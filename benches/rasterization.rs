@@ -18,8 +18,7 @@ use render_lessons::lighting::lambert;
 use render_lessons::raster::{Cull, Instance, Mesh, Settings, rasterize};
 use render_lessons::raycast::lambert_unshadowed;
 use render_lessons::render::render;
-use render_lessons::scene::{Object, PointLight, Scene};
-use render_lessons::shapes::{Shape, Triangle};
+use render_lessons::scene::{PointLight, Scene};
 
 const WIDTH: u32 = 1920;
 const HEIGHT: u32 = 1080;
@@ -56,17 +55,7 @@ fn torus() -> Mesh {
 
 /// The mesh as a list of triangle primitives, for the ray caster.
 fn triangle_scene(mesh: &Mesh) -> Scene {
-    let objects = mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
-            Object {
-                shape: Shape::Triangle(Triangle::new(a, b, c).expect("triangle")),
-                colour: Vec3::new(0.8, 0.5, 0.3),
-            }
-        })
-        .collect();
+    let objects = mesh.objects(Vec3::new(0.8, 0.5, 0.3)).expect("triangles");
     Scene::new(objects, Vec3::ZERO, LIGHT).expect("scene")
 }
 

@@ -28,7 +28,7 @@ use render_lessons::raycast::{lambert, lambert_unshadowed};
 use render_lessons::render::render;
 use render_lessons::report::{Table, num};
 use render_lessons::scene::{Object, Scene};
-use render_lessons::shapes::{Shape, Triangle};
+use render_lessons::shapes::Shape;
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
@@ -156,18 +156,11 @@ pub fn mesh_instance(args: &Args) -> Result<Instance> {
 
 /// The same mesh as a list of triangle primitives for the ray caster.
 pub fn mesh_objects(instance: &Instance) -> Result<Vec<Object>> {
-    let p = |i: u32| instance.model.point(instance.mesh.positions[i as usize]);
-    instance
-        .mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            Ok(Object {
-                shape: Shape::Triangle(Triangle::new(p(t[0]), p(t[1]), p(t[2]))?),
-                colour: instance.colour,
-            })
-        })
-        .collect()
+    let mut world = instance.mesh.clone();
+    for p in &mut world.positions {
+        *p = instance.model.point(*p);
+    }
+    world.objects(instance.colour)
 }
 
 /// Every image of the lesson by name, and how long each renderer took.

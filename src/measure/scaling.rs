@@ -21,18 +21,7 @@ use crate::shapes::{Shape, Triangle};
 /// A uv sphere of radius 1 with `n` x `n` segments (2 n (n - 1) triangles), as a
 /// scene of triangle primitives.
 pub fn sphere_scene(n: u32) -> Result<Scene> {
-    let mesh = Mesh::uv_sphere(Vec3::ZERO, 1.0, n, n)?;
-    let objects = mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
-            Ok(Object {
-                shape: Shape::Triangle(Triangle::new(a, b, c)?),
-                colour: Vec3::new(0.8, 0.5, 0.3),
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
+    let objects = Mesh::uv_sphere(Vec3::ZERO, 1.0, n, n)?.objects(Vec3::new(0.8, 0.5, 0.3))?;
     let light = PointLight {
         position: Vec3::new(0.0, 5.0, 5.0),
         intensity: Vec3::ONE,

@@ -8,6 +8,8 @@ use std::path::Path;
 use glam::Vec3;
 
 use crate::error::{Error, Result, finite3, positive};
+use crate::scene::Object;
+use crate::shapes::{Shape, Triangle};
 
 /// The vertex list as the slide prints it (numbers 1 to 4; the slide cuts the list
 /// off after vertex 4 with "⋮").
@@ -162,6 +164,21 @@ impl Mesh {
             }
         }
         Mesh::with_normals(positions, normals, triangles)
+    }
+
+    /// The mesh as the ray caster sees it: one triangle primitive per triangle, all
+    /// coloured `colour` (flat: a primitive has no vertex normals).
+    pub fn objects(&self, colour: Vec3) -> Result<Vec<Object>> {
+        self.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| self.positions[i as usize]);
+                Ok(Object {
+                    shape: Shape::Triangle(Triangle::new(a, b, c)?),
+                    colour,
+                })
+            })
+            .collect()
     }
 
     /// The same triangles with no shared vertices, each corner carrying its

@@ -170,18 +170,6 @@ fn average(a: &Framebuffer, b: &Framebuffer) -> Framebuffer {
     .expect("image")
 }
 
-/// The mean of all channels of all pixels.
-fn mean(image: &Framebuffer) -> f64 {
-    let mut sum = 0.0;
-    for y in 0..image.height() {
-        for x in 0..image.width() {
-            let c = image.get(x, y).unwrap_or_default().as_dvec3();
-            sum += c.x + c.y + c.z;
-        }
-    }
-    sum / (3.0 * f64::from(image.width()) * f64::from(image.height()))
-}
-
 /// One half of the reference: MIS, `REFERENCE_HALF_SPP` samples, seed `seed`, read
 /// from the cache if it is there.
 fn reference_half(scene: &Scene, camera: &LensCamera, seed: u64) -> Framebuffer {
@@ -290,7 +278,7 @@ fn equal_time() {
          its own RMSE about {e_ref:.5}",
         REFERENCE_SEEDS[0],
         REFERENCE_SEEDS[1],
-        mean(&reference)
+        reference.mean()
     );
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -366,7 +354,7 @@ fn report(runs: &[Run], e_ref: f64) {
     println!("|---|---|---|---|---|---|---|");
     for run in runs {
         let (s, e, spp) = *run.history.last().expect("at least one pass");
-        let m = run.last.as_ref().map_or(0.0, mean);
+        let m = run.last.as_ref().map_or(0.0, Framebuffer::mean);
         println!(
             "| {} | {s:.2} | {spp} | {:.1} | {e:.5} | {:.5} | {m:.5} |",
             run.name,

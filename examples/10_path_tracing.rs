@@ -347,7 +347,7 @@ pub fn numbers(args: &Args, renders: &Renders) -> Result<String> {
             spp.to_string(),
             num(e, 5),
             num(e * f64::from(*spp).sqrt(), 4),
-            num(mean(image), 5),
+            num(image.mean(), 5),
         ]);
     }
     let mut strategies = Table::new(
@@ -358,28 +358,16 @@ pub fn numbers(args: &Args, renders: &Renders) -> Result<String> {
         strategies.row(vec![
             s.name().to_string(),
             num(rmse(image, &renders.reference), 5),
-            num(mean(image), 5),
+            num(image.mean(), 5),
         ]);
     }
     Ok(format!(
         "{ladder}\n{strategies}\nreference mean {}; samples dropped as NaN or infinite: {}\n",
-        num(mean(&renders.reference), 5),
+        num(renders.reference.mean(), 5),
         renders.non_finite
     ))
 }
 // ANCHOR_END: numbers
-
-/// The mean of all channels of all pixels.
-pub fn mean(image: &Framebuffer) -> f64 {
-    let mut sum = 0.0;
-    for y in 0..image.height() {
-        for x in 0..image.width() {
-            let c = image.get(x, y).unwrap_or_default().as_dvec3();
-            sum += c.x + c.y + c.z;
-        }
-    }
-    sum / (3.0 * f64::from(image.width()) * f64::from(image.height()))
-}
 
 // ANCHOR: record_path
 /// One vertex of a recorded path: where it is, which object it is on, and, at a

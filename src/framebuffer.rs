@@ -76,6 +76,16 @@ impl Framebuffer {
         })
     }
 
+    /// The mean of all channels of all pixels, summed in f64.
+    pub fn mean(&self) -> f64 {
+        let sum: f64 = self
+            .pixels
+            .iter()
+            .map(|c| f64::from(c.x) + f64::from(c.y) + f64::from(c.z))
+            .sum();
+        sum / (3.0 * self.pixels.len() as f64)
+    }
+
     /// Width in pixels.
     pub fn width(&self) -> u32 {
         self.width

@@ -14,7 +14,7 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
 use render_lessons::bvh::{Bvh, BvhScene};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
-use render_lessons::measure::scaling;
+use render_lessons::course::measure::scaling;
 use render_lessons::ray::Ray;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;

@@ -12,9 +12,9 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
-use render_lessons::diagram::{Diagram, Place, palette};
-use render_lessons::lesson::{self, Output, parse_finite, parse_vec3};
-use render_lessons::report::{Table, vec3};
+use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::report::{Table, vec3};
 use render_lessons::transform::Transform;
 
 /// The lesson's parameters; every one has a default that reproduces the book.

@@ -13,10 +13,10 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Film, OrthoCamera};
-use render_lessons::diagram::{Diagram, Place, palette};
+use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::lesson::{self, Output, parse_finite};
+use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::lesson::{self, Output, parse_finite};
-use render_lessons::report::{Table, num, vec3};
 
 /// The lesson's parameters; the defaults reproduce the slide's pixel (0,0) -> (-6, 4, 0).
 #[derive(Parser, Debug)]
@@ -225,12 +225,12 @@ pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Resul
 // ANCHOR_END: origin_image
 
 /// The origin image drawn with the student's own `pixel_to_plane`, once it passes its
-/// check (coding exercise 3.1, `src/exercises/ch03.rs`).
+/// check (coding exercise 3.1, `src/course/exercises/ch03.rs`).
 pub fn my_origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer> {
     let film = film(args, width, height)?;
     #[cfg(feature = "exercises")]
     {
-        use render_lessons::exercises::{ch03, check};
+        use render_lessons::course::exercises::{ch03, check};
         let outcome = check::check_pixel_to_plane(ch03::pixel_to_plane);
         if !matches!(outcome, check::Outcome::Pass) {
             let report = check::PIXEL_TO_PLANE.report(&outcome);

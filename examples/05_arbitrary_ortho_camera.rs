@@ -13,9 +13,9 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Film, Frame, OrthoCamera};
-use render_lessons::diagram::{Diagram, Place, palette};
-use render_lessons::lesson::{self, Output, parse_vec3};
-use render_lessons::report::{Table, vec3};
+use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::lesson::{self, Output, parse_vec3};
+use render_lessons::course::report::{Table, vec3};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]

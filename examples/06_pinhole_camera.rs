@@ -13,11 +13,11 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
-use render_lessons::diagram::{Diagram, Place, palette};
+use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::ray::Ray;
-use render_lessons::report::{Table, num, vec3};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]

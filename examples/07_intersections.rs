@@ -12,10 +12,10 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
-use render_lessons::diagram::{Diagram, Place, palette};
-use render_lessons::lesson::{self, Output};
+use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::ray::Ray;
-use render_lessons::report::{Table, num, vec3};
 use render_lessons::shapes::quadric::Roots;
 use render_lessons::shapes::{Aabb, Plane, Quadric, Shape, Sphere, Triangle};
 

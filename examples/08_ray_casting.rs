@@ -15,12 +15,12 @@ use clap::Parser;
 use glam::Vec3;
 use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::offset::Offset;
 use render_lessons::raycast::{lambert, shadowless};
 use render_lessons::render::render;
-use render_lessons::report::{Table, num, vec3};
 use render_lessons::scene::{Object, PointLight, Scene};
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 

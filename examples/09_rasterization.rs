@@ -16,9 +16,10 @@ use std::time::Instant;
 use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::camera::Camera;
-use render_lessons::diagram::{Diagram, Place, Rgb, palette};
+use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
+use render_lessons::course::lesson::{self, Output, parse_finite};
+use render_lessons::course::report::{Table, num};
 use render_lessons::framebuffer::{Framebuffer, to_srgb8};
-use render_lessons::lesson::{self, Output, parse_finite};
 use render_lessons::offset::Offset;
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
 use render_lessons::raster::{
@@ -26,7 +27,6 @@ use render_lessons::raster::{
 };
 use render_lessons::raycast::{lambert, lambert_unshadowed};
 use render_lessons::render::render;
-use render_lessons::report::{Table, num};
 use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::Shape;
 use render_lessons::transform::Transform;

@@ -16,20 +16,20 @@ use std::time::Instant;
 use clap::{Parser, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use render_lessons::Result;
+use render_lessons::course::lesson::{self, Output, parse_finite};
+use render_lessons::course::report::{Table, num};
 use render_lessons::error::Error;
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::lesson::{self, Output, parse_finite};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes;
 use render_lessons::pathtrace::{
     Accumulator, LensCamera, PixelSampling, Sampling, Scene, Settings, SphereSampling,
 };
-use render_lessons::report::{Table, num};
 
 use glam::{Vec2, Vec3};
 use render_lessons::basis::Basis;
-use render_lessons::diagram::{Diagram, Place, Rgb, palette};
+use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::pathtrace::material::{Material, lambert};
 use render_lessons::pathtrace::roulette::{RR_MAX_SURVIVAL, RR_START};
 use render_lessons::pathtrace::{Rng, light};

@@ -14,10 +14,10 @@ use std::time::Instant;
 
 use clap::Parser;
 use render_lessons::Result;
-use render_lessons::chart::{Chart, Scale};
+use render_lessons::course::chart::{Chart, Scale};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::error::Error;
-use render_lessons::lesson::{self, Output};
-use render_lessons::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::offset::Offset;
 use render_lessons::raster::{Cull, Settings, Shading, rasterize};
 use render_lessons::raycast::lambert;

@@ -358,7 +358,7 @@ fn gamma_matches_pbrt() {
 /// The closed bumpy sphere of STABILITY S4/S5, `n` x `n` segments: the same mesh
 /// lesson 11's chart 2 measures.
 fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
-    render_lessons::measure::triangle::bumpy_sphere(n, n)
+    render_lessons::course::measure::triangle::bumpy_sphere(n, n)
 }
 
 /// How many of the rays from the origin towards `targets` hit no triangle at all, for

@@ -2,7 +2,7 @@
 //! S5, S13, S14, S15). No timing is checked: only what numerics say must hold, and
 //! that every chart can be written.
 
-use render_lessons::measure::{Measured, Quality, offsets, precision, sphere, triangle};
+use render_lessons::course::measure::{Measured, Quality, offsets, precision, sphere, triangle};
 use render_lessons::offset::Offset;
 
 /// The (x, y) of `points` at `x`.

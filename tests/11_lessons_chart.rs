@@ -5,7 +5,7 @@
 #[allow(dead_code)]
 mod lesson;
 
-use render_lessons::measure::Quality;
+use render_lessons::course::measure::Quality;
 
 #[test]
 fn the_rasterizer_approaches_the_ray_traced_image_as_its_knobs_are_turned_up() {

@@ -2,7 +2,7 @@
 //! live in the lesson's charts); what must hold is that both structures answer the
 //! same, and that the chart has what the chapter says it has.
 
-use render_lessons::measure::scaling::{fan_scene, rows, sphere_scene};
+use render_lessons::course::measure::scaling::{fan_scene, rows, sphere_scene};
 
 #[test]
 fn list_and_bvh_hit_the_same_rays_at_every_size() {
@@ -30,7 +30,7 @@ fn the_list_is_skipped_above_its_limit() {
 
 #[test]
 fn fans_cover_the_share_of_the_frame_their_area_predicts() {
-    use render_lessons::measure::scaling::rays;
+    use render_lessons::course::measure::scaling::rays;
     let scene = fan_scene(8).unwrap();
     let rays = rays(48, 27).unwrap();
     let hits = rays

@@ -212,7 +212,7 @@ fn same_hits_as_the_list_with_a_plane_and_a_quadric() {
 /// The closed bumpy sphere of STABILITY S4/S5, `n` x `n` segments: the same mesh
 /// lesson 11's chart 2 measures.
 fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
-    render_lessons::measure::triangle::bumpy_sphere(n, n)
+    render_lessons::course::measure::triangle::bumpy_sphere(n, n)
 }
 
 #[test]

@@ -1,7 +1,7 @@
 //! The coding exercises.
 //!
 //! For the student, with the `exercises` feature: one test per exercise runs its check
-//! on the student's function in `src/exercises/chNN.rs` and fails, naming the
+//! on the student's function in `src/course/exercises/chNN.rs` and fails, naming the
 //! exercise, the case, the expected and the received answer and a hint, unless every
 //! case passes:
 //!
@@ -18,7 +18,7 @@
 use glam::{Mat4, Vec2, Vec3};
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Film, Frame, PinholeCamera, camera_basis, camera_basis_as_on_slide};
-use render_lessons::exercises::check::*;
+use render_lessons::course::exercises::check::*;
 use render_lessons::ray::Ray;
 use render_lessons::scene::{Object, PointLight, Scene};
 use render_lessons::shapes::{Plane, Shape, Sphere};
@@ -598,7 +598,7 @@ mod checks {
         for part in [
             "Coding exercise 3.1",
             "pixel_to_plane",
-            "src/exercises/ch03.rs",
+            "src/course/exercises/ch03.rs",
             "case:",
             "pixel (0, 0)",
             "expected: (-6, 4)",
@@ -623,7 +623,7 @@ mod checks {
                 "{} twice",
                 e.number
             );
-            assert_eq!(e.file, format!("src/exercises/ch{}.rs", e.chapter));
+            assert_eq!(e.file, format!("src/course/exercises/ch{}.rs", e.chapter));
             let stub = std::fs::read_to_string(e.file).unwrap();
             // Only what stays true once the student has written the body: the
             // function's name and the exercise's number in the file.
@@ -641,7 +641,7 @@ mod checks {
 
 #[cfg(feature = "exercises")]
 mod student {
-    use render_lessons::exercises::{
+    use render_lessons::course::exercises::{
         ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, ch09, check_all,
     };
 

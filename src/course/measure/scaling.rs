@@ -11,7 +11,7 @@ use glam::Vec3;
 use super::{Measured, Quality};
 use crate::bvh::BvhScene;
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
-use crate::chart::{Chart, Scale};
+use crate::course::chart::{Chart, Scale};
 use crate::error::Result;
 use crate::raster::Mesh;
 use crate::ray::Ray;

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use crate::diagram::Diagram;
+use crate::course::diagram::Diagram;
 use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 

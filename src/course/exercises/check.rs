@@ -125,7 +125,7 @@ pub const POINT_AT: Exercise = Exercise {
     chapter: "02",
     chapter_title: "The ray",
     function: "point_at",
-    file: "src/exercises/ch02.rs",
+    file: "src/course/exercises/ch02.rs",
 };
 
 /// Coding exercise 1.1.
@@ -134,7 +134,7 @@ pub const ROTATION_Y: Exercise = Exercise {
     chapter: "01",
     chapter_title: "Geometric transformations",
     function: "rotation_y",
-    file: "src/exercises/ch01.rs",
+    file: "src/course/exercises/ch01.rs",
 };
 
 /// Coding exercise 3.1.
@@ -143,7 +143,7 @@ pub const PIXEL_TO_PLANE: Exercise = Exercise {
     chapter: "03",
     chapter_title: "The orthographic camera",
     function: "pixel_to_plane",
-    file: "src/exercises/ch03.rs",
+    file: "src/course/exercises/ch03.rs",
 };
 
 /// Coding exercise 4.1.
@@ -152,7 +152,7 @@ pub const TO_WORLD: Exercise = Exercise {
     chapter: "04",
     chapter_title: "Change of basis",
     function: "to_world",
-    file: "src/exercises/ch04.rs",
+    file: "src/course/exercises/ch04.rs",
 };
 
 /// Coding exercise 4.2.
@@ -161,7 +161,7 @@ pub const TO_LOCAL: Exercise = Exercise {
     chapter: "04",
     chapter_title: "Change of basis",
     function: "to_local",
-    file: "src/exercises/ch04.rs",
+    file: "src/course/exercises/ch04.rs",
 };
 
 /// Coding exercise 5.1.
@@ -170,7 +170,7 @@ pub const CAMERA_BASIS: Exercise = Exercise {
     chapter: "05",
     chapter_title: "An arbitrary orthographic camera",
     function: "camera_basis",
-    file: "src/exercises/ch05.rs",
+    file: "src/course/exercises/ch05.rs",
 };
 
 /// Coding exercise 6.1.
@@ -179,7 +179,7 @@ pub const PINHOLE_RAY: Exercise = Exercise {
     chapter: "06",
     chapter_title: "The pinhole camera",
     function: "pinhole_ray",
-    file: "src/exercises/ch06.rs",
+    file: "src/course/exercises/ch06.rs",
 };
 
 /// Coding exercise 7.1.
@@ -188,7 +188,7 @@ pub const RAY_PLANE_T: Exercise = Exercise {
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_plane_t",
-    file: "src/exercises/ch07.rs",
+    file: "src/course/exercises/ch07.rs",
 };
 
 /// Coding exercise 7.2.
@@ -197,7 +197,7 @@ pub const RAY_SPHERE_ROOTS: Exercise = Exercise {
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_sphere_roots",
-    file: "src/exercises/ch07.rs",
+    file: "src/course/exercises/ch07.rs",
 };
 
 /// Coding exercise 8.1.
@@ -206,7 +206,7 @@ pub const CLOSEST: Exercise = Exercise {
     chapter: "08",
     chapter_title: "Ray casting",
     function: "closest",
-    file: "src/exercises/ch08.rs",
+    file: "src/course/exercises/ch08.rs",
 };
 
 /// Coding exercise 9.1.
@@ -215,7 +215,7 @@ pub const COVERS: Exercise = Exercise {
     chapter: "09",
     chapter_title: "The rasterization pipeline",
     function: "covers",
-    file: "src/exercises/ch09.rs",
+    file: "src/course/exercises/ch09.rs",
 };
 
 /// Every coding exercise, in book order.

@@ -11,7 +11,7 @@
 use std::time::Instant;
 
 use super::{Measured, Quality};
-use crate::chart::{Chart, Scale};
+use crate::course::chart::{Chart, Scale};
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;

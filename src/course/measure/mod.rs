@@ -13,7 +13,7 @@ pub mod triangle;
 
 use std::time::Instant;
 
-use crate::chart::Chart;
+use crate::course::chart::Chart;
 use crate::error::Result;
 
 /// How long to measure: a quick look (about a minute for the whole lesson) or

@@ -13,7 +13,7 @@ use glam::Vec3;
 
 use super::{Measured, Quality};
 use crate::basis::Basis;
-use crate::chart::{Chart, Scale};
+use crate::course::chart::{Chart, Scale};
 use crate::error::Result;
 use crate::offset::{Offset, offset_ray_origin};
 use crate::ray::Ray;

@@ -16,7 +16,7 @@ use crate::error::{Error, Result, finite};
 use crate::output::write_png_rgba;
 
 /// The embedded font (DejaVu Sans; licence in `assets/fonts/LICENSE-DejaVu.txt`).
-pub const FONT_BYTES: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+pub const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
 fn font() -> Option<&'static FontRef<'static>> {
     static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
@@ -335,5 +335,5 @@ impl Diagram {
 }
 
 fn format_tick(t: f32) -> String {
-    crate::report::num(t as f64, if t.fract() == 0.0 { 0 } else { 1 })
+    crate::course::report::num(t as f64, if t.fract() == 0.0 { 0 } else { 1 })
 }

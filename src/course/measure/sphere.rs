@@ -18,7 +18,7 @@
 use glam::{DVec3, Vec3};
 
 use super::{Measured, Quality, ns_per_call};
-use crate::chart::{Chart, Scale};
+use crate::course::chart::{Chart, Scale};
 use crate::error::Result;
 use crate::ray::Ray;
 use crate::shapes::Sphere;

@@ -19,7 +19,7 @@ use glam::{Vec2, Vec3};
 use rayon::prelude::*;
 
 use super::{Measured, Quality, ns_per_call};
-use crate::chart::{Chart, Scale, log_log_slope};
+use crate::course::chart::{Chart, Scale, log_log_slope};
 use crate::error::Result;
 use crate::pathtrace::light::{self, SphereSampling};
 use crate::pathtrace::material::Material;

@@ -24,7 +24,7 @@ use glam::{DVec3, Vec3};
 use super::sphere::{reference, stable_f64};
 use super::{Measured, Quality};
 use crate::camera::{Film, Frame, PinholeCamera};
-use crate::chart::{Chart, Scale};
+use crate::course::chart::{Chart, Scale};
 use crate::error::Result;
 use crate::shapes::Sphere;
 

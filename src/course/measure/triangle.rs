@@ -16,7 +16,7 @@ use glam::Vec3;
 
 use super::sphere::fastest;
 use super::{Measured, Quality, ns_per_call};
-use crate::chart::{Chart, Scale};
+use crate::course::chart::{Chart, Scale};
 use crate::error::Result;
 use crate::pathtrace::Rng;
 use crate::ray::Ray;

@@ -1,0 +1,17 @@
+//! The course's own tools, apart from the renderer: what draws the figures, prints
+//! the tables, measures the charts and checks the exercises. The renderer (every
+//! module outside `course`) never imports from here; the lessons and the book do.
+//!
+//! - [`diagram`]: ray diagrams drawn with tiny-skia from the real cameras and shapes;
+//! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;
+//! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
+//! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
+//! - [`measure`]: lesson 11's measurements, one file per chart;
+//! - [`exercises`]: the coding exercises and the harness that checks them.
+
+pub mod chart;
+pub mod diagram;
+pub mod exercises;
+pub mod lesson;
+pub mod measure;
+pub mod report;

@@ -19,8 +19,12 @@ pub enum Error {
     /// The up vector is parallel to the view direction, so no camera frame exists
     /// (STABILITY S10).
     UpParallelToDirection,
-    /// An image resolution was 0 or larger than [`crate::camera::MAX_RESOLUTION`].
-    Resolution { param: &'static str, value: u32 },
+    /// An image resolution was 0 or larger than `max` (for images, `camera::MAX_RESOLUTION`).
+    Resolution {
+        param: &'static str,
+        value: u32,
+        max: u32,
+    },
     /// A range such as `x_min..x_max` was empty or inverted.
     EmptyRange {
         param: &'static str,
@@ -107,10 +111,9 @@ impl fmt::Display for Error {
                 f,
                 "up must not be parallel to direction: no camera frame can be built"
             ),
-            Error::Resolution { param, value } => write!(
+            Error::Resolution { param, value, max } => write!(
                 f,
-                "{param} must be between 1 and {} pixels (got {value})",
-                crate::camera::MAX_RESOLUTION
+                "{param} must be between 1 and {max} pixels (got {value})"
             ),
             Error::EmptyRange { param, min, max } => {
                 write!(f, "{param} must have min < max (got {min} .. {max})")

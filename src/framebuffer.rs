@@ -42,6 +42,7 @@ impl Framebuffer {
             return Err(Error::Resolution {
                 param: "pixel count",
                 value: pixels.len().min(u32::MAX as usize) as u32,
+                max: MAX_RESOLUTION,
             });
         }
         Ok(Framebuffer {
@@ -129,7 +130,11 @@ impl Framebuffer {
 fn check_resolution(width: u32, height: u32) -> Result<()> {
     for (param, value) in [("width", width), ("height", height)] {
         if !(1..=MAX_RESOLUTION).contains(&value) {
-            return Err(Error::Resolution { param, value });
+            return Err(Error::Resolution {
+                param,
+                value,
+                max: MAX_RESOLUTION,
+            });
         }
     }
     Ok(())

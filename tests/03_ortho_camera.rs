@@ -66,14 +66,16 @@ fn bad_films_name_their_parameter() {
         Film::new(0, 3, x, y),
         Err(Error::Resolution {
             param: "width",
-            value: 0
+            value: 0,
+            max: MAX_RESOLUTION
         })
     );
     assert_eq!(
         Film::new(4, MAX_RESOLUTION + 1, x, y),
         Err(Error::Resolution {
             param: "height",
-            value: MAX_RESOLUTION + 1
+            value: MAX_RESOLUTION + 1,
+            max: MAX_RESOLUTION
         })
     );
     assert_eq!(

@@ -25,7 +25,11 @@ fn resolution(param: &'static str, value: u32) -> Result<u32> {
     if (1..=MAX_RESOLUTION).contains(&value) {
         Ok(value)
     } else {
-        Err(Error::Resolution { param, value })
+        Err(Error::Resolution {
+            param,
+            value,
+            max: MAX_RESOLUTION,
+        })
     }
 }
 

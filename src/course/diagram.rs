@@ -93,6 +93,7 @@ impl Diagram {
         let pixmap = Pixmap::new(width, height).ok_or(Error::Resolution {
             param: "diagram size",
             value: width.min(height),
+            max: u32::MAX,
         })?;
         let span = |param, (a, b): (f32, f32)| -> Result<f32> {
             let s = finite(param, b)? - finite(param, a)?;

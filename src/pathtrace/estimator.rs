@@ -22,11 +22,10 @@
 use glam::Vec3;
 
 use crate::basis::Basis;
-use crate::offset::Offset;
 use crate::pathtrace::light;
 use crate::pathtrace::material::Material;
 use crate::pathtrace::mis::power_heuristic;
-use crate::pathtrace::next_event::direct_light;
+use crate::pathtrace::next_event::{Start, direct_light};
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::scene::Scene;
@@ -34,26 +33,6 @@ use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
 use crate::shapes::Hit;
-
-/// Where the rays leaving a diffuse vertex start (the hit point moved off the
-/// surface by the offset) and the t they must exceed. Light samples are drawn from
-/// this point too, so that a light sample and a BRDF sample that find the same point
-/// of a light agree on its density, which the MIS weights need: measured from the hit
-/// point itself, grazing rays inside a sphere disagree enough to bias the interior
-/// furnace by 2e-5.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Start {
-    pub(super) point: Vec3,
-    pub(super) t_min: f32,
-}
-
-impl Start {
-    /// Rays leaving `p` on the side of the unit normal `n`.
-    fn new(p: Vec3, n: Vec3, offset: Offset) -> Start {
-        let (point, t_min) = offset.start(p, n);
-        Start { point, t_min }
-    }
-}
 
 /// How the emission found at the next vertex is weighted, decided by the bounce
 /// that leads there.

@@ -145,6 +145,7 @@ fn light_camera(light: Vec3, shadows: &Shadows) -> Result<Camera> {
         return Err(Error::Resolution {
             param: "shadow map size",
             value: size,
+            max: MAX_RESOLUTION,
         });
     }
     non_negative("shadow bias", shadows.bias)?;

@@ -6,7 +6,6 @@ use crate::lighting;
 use crate::offset::Offset;
 use crate::ray::Ray;
 use crate::scene::Scene;
-use crate::shapes::Hit;
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive
@@ -21,16 +20,6 @@ pub fn shadowless(scene: &Scene, ray: &Ray) -> Vec3 {
 
 pub use crate::lighting::AMBIENT;
 
-/// The side of the surface a ray arrived from: the normal, flipped if the ray hit
-/// the back face.
-fn facing(hit: &Hit) -> Vec3 {
-    if hit.front_face {
-        hit.normal
-    } else {
-        -hit.normal
-    }
-}
-
 // ANCHOR: lambert
 /// One step past the slides: Lambert's cosine law from the point light
 /// ([`lighting::lambert`]), with a shadow ray towards the light deciding whether it
@@ -39,7 +28,7 @@ pub fn lambert(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
     let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
         return scene.background();
     };
-    let n = facing(&hit);
+    let n = hit.facing();
     let light = scene.light();
     lighting::lambert(hit.point, n, object.colour, &light, || {
         let (origin, t_min) = offset.start(hit.point, n);
@@ -60,7 +49,7 @@ pub fn lambert_unshadowed(scene: &Scene, ray: &Ray) -> Vec3 {
     };
     lighting::lambert(
         hit.point,
-        facing(&hit),
+        hit.facing(),
         object.colour,
         &scene.light(),
         || true,

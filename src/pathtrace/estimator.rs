@@ -112,11 +112,7 @@ fn scatter(
     rng: &mut Rng,
     s: &Settings,
 ) -> Option<Bounce> {
-    let facing = if hit.front_face {
-        hit.normal
-    } else {
-        -hit.normal
-    };
+    let facing = hit.facing();
     match material {
         Material::Diffuse { albedo } => {
             let start = Start::new(hit.point, facing, s.offset);

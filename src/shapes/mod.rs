@@ -50,6 +50,19 @@ impl Hit {
             front_face: ray.direction().dot(normal) < 0.0,
         }
     }
+
+    // ANCHOR: facing
+    /// The front-face rule, written once for every renderer: the unit normal on the
+    /// side the ray came from, `normal` for a front face and `-normal` for a back
+    /// face, so that shading and the offset of the next ray see the lit side.
+    pub fn facing(&self) -> Vec3 {
+        if self.front_face {
+            self.normal
+        } else {
+            -self.normal
+        }
+    }
+    // ANCHOR_END: facing
 }
 
 /// `t_min < t < t_max`, and `false` for NaN.

@@ -44,7 +44,7 @@ fn camera(width: u32, height: u32) -> Camera {
 
 fn shade(scene: &BvhScene, ray: &Ray) -> Vec3 {
     match scene.closest_hit(ray, 0.0, f32::INFINITY) {
-        Some((_, object)) => object.colour,
+        Some((_, object)) => object.colour(),
         None => scene.scene().background(),
     }
 }

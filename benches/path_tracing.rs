@@ -29,7 +29,8 @@ use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes;
-use render_lessons::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling, Scene};
+use render_lessons::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling};
+use render_lessons::scene::Scene;
 use render_lessons::pathtrace::{Settings, SphereSampling};
 
 /// The lesson's settings (examples/10_path_tracing.rs with its defaults) with
@@ -105,7 +106,7 @@ fn source_hash() -> u64 {
         include_str!("../src/pathtrace/estimator.rs"),
         include_str!("../src/pathtrace/lens.rs"),
         include_str!("../src/pathtrace/light.rs"),
-        include_str!("../src/pathtrace/material.rs"),
+        include_str!("../src/material.rs"),
         include_str!("../src/pathtrace/mis.rs"),
         include_str!("../src/pathtrace/next_event.rs"),
         include_str!("../src/pathtrace/progressive.rs"),

@@ -16,7 +16,7 @@ use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::lighting::lambert;
 use render_lessons::raster::{Cull, Instance, Mesh, Settings, rasterize};
-use render_lessons::raycast::lambert_unshadowed;
+use render_lessons::raycast::lit_unshadowed;
 use render_lessons::render::render;
 use render_lessons::scene::{PointLight, Scene};
 
@@ -56,7 +56,7 @@ fn torus() -> Mesh {
 /// The mesh as a list of triangle primitives, for the ray caster.
 fn triangle_scene(mesh: &Mesh) -> Scene {
     let objects = mesh.objects(Vec3::new(0.8, 0.5, 0.3)).expect("triangles");
-    Scene::new(objects, Vec3::ZERO, LIGHT).expect("scene")
+    Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(LIGHT)).expect("scene")
 }
 
 fn raster(c: &mut Criterion) {
@@ -96,7 +96,7 @@ fn ray_cast(c: &mut Criterion) {
             let mut sum = Vec3::ZERO;
             for &y in &rows {
                 for x in 0..WIDTH {
-                    sum += lambert_unshadowed(&scene, &camera.ray(x, y));
+                    sum += lit_unshadowed(&scene, &camera.ray(x, y));
                 }
             }
             sum
@@ -122,7 +122,7 @@ fn bvh_ray_cast(c: &mut Criterion) {
                         } else {
                             -hit.normal
                         };
-                        lambert(hit.point, n, object.colour, &LIGHT, || true)
+                        lambert(hit.point, n, object.colour(), &LIGHT, || true)
                     }
                     None => Vec3::ZERO,
                 }

@@ -19,7 +19,7 @@ use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::offset::Offset;
-use render_lessons::raycast::{lambert, shadowless};
+use render_lessons::raycast::{lit, shadowless};
 use render_lessons::render::render;
 use render_lessons::scene::{Object, PointLight, Scene};
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
@@ -52,10 +52,7 @@ pub struct Args {
 /// The lesson's scene, moved by `shift`: a floor, three spheres, a box and a
 /// triangle, in a plain list, lit by one point light.
 pub fn scene(shift: Vec3) -> Result<Scene> {
-    let object = |shape, (r, g, b)| Object {
-        shape,
-        colour: Vec3::new(r, g, b),
-    };
+    let object = |shape, (r, g, b)| Object::diffuse(shape, Vec3::new(r, g, b));
     let sphere = |c: Vec3, r| Sphere::new(c + shift, r).map(Shape::Sphere);
     let objects = vec![
         object(Shape::Plane(Plane::new(shift, Vec3::Y)?), (0.75, 0.75, 0.7)),
@@ -82,7 +79,7 @@ pub fn scene(shift: Vec3) -> Result<Scene> {
         position: Vec3::new(3.0, 6.0, 4.0) + shift,
         intensity: Vec3::splat(60.0),
     };
-    Scene::new(objects, Vec3::new(0.6, 0.75, 0.95), light)
+    Scene::new(objects, Vec3::new(0.6, 0.75, 0.95)).and_then(|s| s.with_light(light))
 }
 // ANCHOR_END: scene
 
@@ -127,17 +124,17 @@ pub fn images(args: &Args) -> Result<Vec<(&'static str, Framebuffer)>> {
         (
             "08_lambert.png",
             render(&pinhole, args.threads, |r| {
-                lambert(&near, r, Offset::Scaled)
+                lit(&near, r, Offset::Scaled)
             })?,
         ),
         (
             "08_far_fixed_epsilon.png",
-            render(&far_pinhole, args.threads, |r| lambert(&far, r, fixed))?,
+            render(&far_pinhole, args.threads, |r| lit(&far, r, fixed))?,
         ),
         (
             "08_far_scaled_offset.png",
             render(&far_pinhole, args.threads, |r| {
-                lambert(&far, r, Offset::Scaled)
+                lit(&far, r, Offset::Scaled)
             })?,
         ),
     ])

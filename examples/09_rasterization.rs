@@ -25,7 +25,7 @@ use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVerte
 use render_lessons::raster::{
     Instance, Mesh, Pipeline, Settings, Shading, Shadows, rasterize, rasterize_triangle,
 };
-use render_lessons::raycast::{lambert, lambert_unshadowed};
+use render_lessons::raycast::{lit, lit_unshadowed};
 use render_lessons::render::render;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::Shape;
@@ -98,7 +98,7 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Instance>> {
                 });
             }
         };
-        instances.push(Instance::new(mesh, object.colour));
+        instances.push(Instance::new(mesh, object.colour()));
     }
     Ok(instances)
 }
@@ -194,7 +194,10 @@ pub fn images(args: &Args) -> Result<Images> {
     let scene = scene()?;
     let camera = camera(args)?;
     let instances = tessellate(&scene, args.segments)?;
-    let light = scene.light();
+    let light = scene.light().ok_or(Error::Invalid {
+        param: "scene",
+        reason: "lesson 09 needs a point light",
+    })?;
     let settings = |shading, shadows| Settings {
         depth: DEPTH,
         shading,
@@ -207,7 +210,7 @@ pub fn images(args: &Args) -> Result<Images> {
     };
     let t = &mut Vec::new();
     let unshadowed = timed(t, "ray cast, analytic scene", || {
-        render(&camera, args.threads, |r| lambert_unshadowed(&scene, r))
+        render(&camera, args.threads, |r| lit_unshadowed(&scene, r))
     })?;
     let per_pixel = timed(t, "rasterized, per-pixel shading", || {
         raster(&instances, settings(Shading::PerPixel, None))
@@ -215,7 +218,7 @@ pub fn images(args: &Args) -> Result<Images> {
     let per_vertex = raster(&instances, settings(Shading::PerVertex, None))?;
     let traced = timed(t, "ray cast with shadow rays", || {
         render(&camera, args.threads, |r| {
-            lambert(&scene, r, Offset::Scaled)
+            lit(&scene, r, Offset::Scaled)
         })
     })?;
     let mapped = |bias| {
@@ -231,11 +234,11 @@ pub fn images(args: &Args) -> Result<Images> {
     let torus = mesh_instance(args)?;
     let mut mesh_scene_objects = vec![scene.objects()[0].clone()];
     mesh_scene_objects.extend(mesh_objects(&torus)?);
-    let mesh_scene = Scene::new(mesh_scene_objects, scene.background(), light)?;
+    let mesh_scene = Scene::new(mesh_scene_objects, scene.background()).and_then(|s| s.with_light(light))?;
     let mesh_instances = [instances[0].clone(), torus];
     let mesh_cast = timed(t, "ray cast, floor + mesh (brute force)", || {
         render(&camera, args.threads, |r| {
-            lambert_unshadowed(&mesh_scene, r)
+            lit_unshadowed(&mesh_scene, r)
         })
     })?;
     let mesh_raster = timed(t, "rasterized, floor + mesh", || {

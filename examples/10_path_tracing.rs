@@ -24,13 +24,14 @@ use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes;
 use render_lessons::pathtrace::{
-    Accumulator, LensCamera, PixelSampling, Sampling, Scene, Settings, SphereSampling,
+    Accumulator, LensCamera, PixelSampling, Sampling, Settings, SphereSampling,
 };
 
 use glam::{Vec2, Vec3};
 use render_lessons::basis::Basis;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
-use render_lessons::pathtrace::material::{Material, lambert};
+use render_lessons::material::{Material, diffuse_brdf};
+use render_lessons::scene::Scene;
 use render_lessons::pathtrace::roulette::{RR_MAX_SURVIVAL, RR_START};
 use render_lessons::pathtrace::{Rng, light};
 use render_lessons::ray::Ray;
@@ -418,8 +419,8 @@ pub fn record_path(
     };
     let (mut beta, mut t_min, mut count_emission, mut bounce) = (Vec3::ONE, 0.0, true, 0);
     loop {
-        let Some((hit, index)) = scene.closest_hit(&ray, t_min, f32::INFINITY) else {
-            path.radiance += beta * scene.environment();
+        let Some((hit, index)) = scene.closest(&ray, t_min, f32::INFINITY) else {
+            path.radiance += beta * scene.background();
             path.escaped = Some(ray.direction());
             break;
         };
@@ -524,7 +525,7 @@ fn next_event(
     })();
     let pdf = y.pdf / count as f32;
     let direct = visible.map_or(Vec3::ZERO, |cos| {
-        lambert(albedo) * light.emission * (cos * 1.0 / pdf)
+        diffuse_brdf(albedo) * light.emission * (cos * 1.0 / pdf)
     });
     (Some((y.point, visible.is_some())), direct)
 }

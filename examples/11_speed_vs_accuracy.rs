@@ -20,7 +20,7 @@ use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
 use render_lessons::raster::{Cull, Settings, Shading, rasterize};
-use render_lessons::raycast::lambert;
+use render_lessons::raycast::lit;
 use render_lessons::render::render;
 
 #[path = "09_rasterization.rs"]
@@ -113,11 +113,14 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     let args = lesson09::Args::parse_from(["09_rasterization"]);
     let scene = lesson09::scene()?;
     let camera = lesson09::camera(&args)?;
-    let light = scene.light();
+    let light = scene.light().ok_or(Error::Invalid {
+        param: "scene",
+        reason: "lesson 11 needs a point light",
+    })?;
     let mask = lesson09::silhouettes(&scene, &camera, None)?;
     let repeats = quality.pick(2, 5);
     let (traced_ms, reference) = best_ms(repeats, || {
-        render(&camera, None, |r| lambert(&scene, r, Offset::Scaled))
+        render(&camera, None, |r| lit(&scene, r, Offset::Scaled))
     })?;
     let raster = |segments: u32, shadows| -> Result<(f64, f64)> {
         let instances = lesson09::tessellate(&scene, segments)?;

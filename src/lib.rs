@@ -16,6 +16,7 @@ pub mod course;
 pub mod error;
 pub mod framebuffer;
 pub mod lighting;
+pub mod material;
 pub mod offset;
 pub mod output;
 pub mod pathtrace;

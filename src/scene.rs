@@ -1,24 +1,73 @@
-//! A scene: a plain list of primitives with their colours, a background, and one
-//! point light. No acceleration structure: every ray is tested against every
-//! primitive, as in Appel's ray casting (Lecture 4); lesson 11 measures when that
-//! stops paying.
+//! A scene: a plain list of primitives, each with a material and the light it emits,
+//! what a ray that hits nothing sees, and (for the ray caster of lessons 08 and 09)
+//! an optional point light. No acceleration structure: every ray is tested against
+//! every primitive, as in Appel's ray casting (Lecture 4); lesson 11 measures when
+//! that stops paying, and `bvh::BvhScene` asks the same questions through a tree.
+//!
+//! One type serves every renderer: the ray caster paints an object's albedo lit by
+//! the point light; the path tracer scatters by its material and finds light in its
+//! emission.
 
 use glam::Vec3;
 
-use crate::error::{Result, finite3};
+use crate::error::{Error, Result, finite3};
+use crate::material::Material;
 use crate::ray::Ray;
 use crate::shapes::{Hit, Shape};
 
-/// One primitive and its colour (linear RGB albedo).
+/// One primitive with its material and the radiance L_e it emits.
+///
+/// Emission is two-sided: L_e leaves the surface on both sides. The furnace seen
+/// from inside a sphere needs that; a light that must shine one way (the Cornell
+/// box's ceiling panel) is placed with its back facing a wall.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// The surface.
     pub shape: Shape,
-    /// Its colour.
-    pub colour: Vec3,
+    /// How it scatters light.
+    pub material: Material,
+    /// The radiance it emits, linear RGB; zero for most objects.
+    pub emission: Vec3,
 }
 
-/// A point light.
+impl Object {
+    /// A surface that does not emit.
+    pub fn new(shape: Shape, material: Material) -> Object {
+        Object {
+            shape,
+            material,
+            emission: Vec3::ZERO,
+        }
+    }
+
+    /// A Lambertian surface of colour `albedo` (linear RGB, each channel in [0, 1]):
+    /// what the ray caster and the rasterizer paint.
+    pub fn diffuse(shape: Shape, albedo: Vec3) -> Object {
+        Object::new(shape, Material::Diffuse { albedo })
+    }
+
+    /// A surface that emits `emission`.
+    pub fn emitting(shape: Shape, material: Material, emission: Vec3) -> Object {
+        Object {
+            shape,
+            material,
+            emission,
+        }
+    }
+
+    /// The colour the ray caster paints: the material's albedo
+    /// ([`Material::albedo`]).
+    pub fn colour(&self) -> Vec3 {
+        self.material.albedo()
+    }
+
+    /// `true` if it emits any light.
+    pub fn is_emissive(&self) -> bool {
+        self.emission != Vec3::ZERO
+    }
+}
+
+/// A point light (lessons 08 and 09).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointLight {
     /// Where it is.
@@ -27,26 +76,68 @@ pub struct PointLight {
     pub intensity: Vec3,
 }
 
-/// Everything a ray caster needs to know about the world.
+/// Objects, the emitting ones among them, what escaping rays see, and an optional
+/// point light.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     objects: Vec<Object>,
+    lights: Vec<usize>,
     background: Vec3,
-    light: PointLight,
+    light: Option<PointLight>,
+}
+
+/// `v` if finite and not negative in any channel.
+fn radiance(param: &'static str, v: Vec3) -> Result<Vec3> {
+    let v = finite3(param, v)?;
+    if v.min_element() >= 0.0 {
+        Ok(v)
+    } else {
+        Err(Error::Invalid {
+            param,
+            reason: "must not be negative",
+        })
+    }
 }
 
 impl Scene {
-    /// A scene of `objects` in front of `background`, lit by `light`.
-    pub fn new(objects: Vec<Object>, background: Vec3, light: PointLight) -> Result<Scene> {
-        for o in &objects {
-            finite3("colour", o.colour)?;
+    /// A scene of `objects` in front of `background`: the colour (ray casting) or
+    /// radiance (path tracing) of every ray that hits nothing. No point light: add
+    /// one with [`Scene::with_light`].
+    ///
+    /// Rejects NaN, infinite or negative emission and background, materials that
+    /// fail [`Material::check`], and emission on any shape but a sphere or a quad:
+    /// every emitter must be a light that next event estimation can sample, or its
+    /// light would be missed.
+    pub fn new(objects: Vec<Object>, background: Vec3) -> Result<Scene> {
+        let mut lights = Vec::new();
+        for (i, o) in objects.iter().enumerate() {
+            radiance("emission", o.emission)?;
+            o.material.check()?;
+            if o.is_emissive() {
+                if !matches!(o.shape, Shape::Sphere(_) | Shape::Quad(_)) {
+                    return Err(Error::Invalid {
+                        param: "emission",
+                        reason: "is only allowed on spheres and quads (the lights we can sample)",
+                    });
+                }
+                lights.push(i);
+            }
         }
-        finite3("light position", light.position)?;
-        finite3("light intensity", light.intensity)?;
         Ok(Scene {
             objects,
-            background: finite3("background", background)?,
-            light,
+            lights,
+            background: radiance("background", background)?,
+            light: None,
+        })
+    }
+
+    /// The same scene lit by the point `light` (lessons 08 and 09's shading).
+    pub fn with_light(self, light: PointLight) -> Result<Scene> {
+        finite3("light position", light.position)?;
+        radiance("light intensity", light.intensity)?;
+        Ok(Scene {
+            light: Some(light),
+            ..self
         })
     }
 
@@ -55,32 +146,44 @@ impl Scene {
         &self.objects
     }
 
-    /// The colour of rays that hit nothing.
+    /// The indices (into [`Scene::objects`]) of the emissive objects.
+    pub fn lights(&self) -> &[usize] {
+        &self.lights
+    }
+
+    /// The colour (or radiance) of rays that hit nothing.
     pub fn background(&self) -> Vec3 {
         self.background
     }
 
-    /// The light.
-    pub fn light(&self) -> PointLight {
+    /// The point light, if the scene has one.
+    pub fn light(&self) -> Option<PointLight> {
         self.light
     }
 
     // ANCHOR: closest_hit
     /// The closest crossing with `t_min < t < t_max` over every primitive, and the
-    /// object it belongs to: the inner loop of the lecture's ray casting algorithm.
-    /// Each hit found shrinks `t_max`, so later primitives only count if nearer.
-    pub fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, &Object)> {
+    /// index of the object it belongs to: the inner loop of the lecture's ray
+    /// casting algorithm, shared by every renderer. Each hit found shrinks `t_max`,
+    /// so later primitives only count if nearer; on a tie the first object wins.
+    pub fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
         let mut closest = None;
         let mut t_max = t_max;
-        for object in &self.objects {
+        for (i, object) in self.objects.iter().enumerate() {
             if let Some(hit) = object.shape.hit(ray, t_min, t_max) {
                 t_max = hit.t;
-                closest = Some((hit, object));
+                closest = Some((hit, i));
             }
         }
         closest
     }
     // ANCHOR_END: closest_hit
+
+    /// [`Scene::closest`] with the object itself instead of its index.
+    pub fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, &Object)> {
+        let (hit, i) = self.closest(ray, t_min, t_max)?;
+        Some((hit, &self.objects[i]))
+    }
 
     /// True if anything lies on the ray with `t_min < t < t_max` (a shadow ray's question).
     pub fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {

@@ -33,14 +33,8 @@ fn numbers() {
 
 #[test]
 fn closest_hit_wins_whatever_the_list_order() {
-    let near = Object {
-        shape: Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0).unwrap()),
-        colour: Vec3::X,
-    };
-    let far = Object {
-        shape: Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -8.0), 1.0).unwrap()),
-        colour: Vec3::Y,
-    };
+    let near = Object::diffuse(Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0).unwrap()), Vec3::X);
+    let far = Object::diffuse(Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -8.0), 1.0).unwrap()), Vec3::Y);
     let light = PointLight {
         position: Vec3::ZERO,
         intensity: Vec3::ONE,
@@ -50,14 +44,14 @@ fn closest_hit_wins_whatever_the_list_order() {
         vec![near.clone(), far.clone()],
         vec![far.clone(), near.clone()],
     ] {
-        let scene = Scene::new(objects, Vec3::Z, light).unwrap();
+        let scene = Scene::new(objects, Vec3::Z).and_then(|s| s.with_light(light)).unwrap();
         let (hit, object) = scene.closest_hit(&ray, 0.0, f32::INFINITY).unwrap();
         assert_eq!(hit.t, 2.0);
-        assert_eq!(object.colour, Vec3::X);
+        assert_eq!(object.colour(), Vec3::X);
         assert_eq!(shadowless(&scene, &ray), Vec3::X);
     }
     // A ray that misses everything sees the background.
-    let scene = Scene::new(vec![near, far], Vec3::Z, light).unwrap();
+    let scene = Scene::new(vec![near, far], Vec3::Z).and_then(|s| s.with_light(light)).unwrap();
     assert_eq!(
         shadowless(&scene, &Ray::new(Vec3::ZERO, Vec3::Y).unwrap()),
         Vec3::Z
@@ -69,7 +63,7 @@ fn the_same_image_whatever_the_thread_count() {
     let args = small_args(&[]);
     let scene = lesson::scene(Vec3::ZERO).unwrap();
     let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
-    let shade = |r: &Ray| render_lessons::raycast::lambert(&scene, r, Offset::Scaled);
+    let shade = |r: &Ray| render_lessons::raycast::lit(&scene, r, Offset::Scaled);
     let one = render(&pinhole, Some(1), shade).unwrap();
     for threads in [Some(2), Some(3), None] {
         assert_eq!(
@@ -88,7 +82,7 @@ fn the_lambert_image_matches_the_book_within_one_level() {
     let scene = lesson::scene(Vec3::ZERO).unwrap();
     let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
     let ours = render(&pinhole, None, |r| {
-        render_lessons::raycast::lambert(&scene, r, Offset::Scaled)
+        render_lessons::raycast::lit(&scene, r, Offset::Scaled)
     })
     .unwrap()
     .to_srgb8()
@@ -228,19 +222,8 @@ fn ray_casting_an_orthographic_disc() {
     // pi / 16 of the pixels, up to the pixels cut by the silhouette.
     let film = Film::new(200, 200, (-2.0, 2.0), (-2.0, 2.0)).unwrap();
     let camera: Camera = OrthoCamera::at_origin(film).into();
-    let sphere = Object {
-        shape: Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0).unwrap()),
-        colour: Vec3::ONE,
-    };
-    let scene = Scene::new(
-        vec![sphere],
-        Vec3::ZERO,
-        PointLight {
-            position: Vec3::ZERO,
-            intensity: Vec3::ONE,
-        },
-    )
-    .unwrap();
+    let sphere = Object::diffuse(Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0).unwrap()), Vec3::ONE);
+    let scene = Scene::new(vec![sphere], Vec3::ZERO).unwrap();
     let image = render(&camera, None, |r| shadowless(&scene, r)).unwrap();
     let covered = (0..200)
         .flat_map(|y| (0..200).map(move |x| (x, y)))
@@ -260,8 +243,8 @@ fn a_point_in_shadow_gets_only_the_ambient_share() {
     let args = lesson::Args::parse_from(["08_ray_casting"]);
     let scene = lesson::scene(Vec3::ZERO).unwrap();
     let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
-    let c = render_lessons::raycast::lambert(&scene, &pinhole.ray(76, 162), Offset::Scaled);
-    let expected = Vec3::new(0.75, 0.75, 0.7) * render_lessons::raycast::AMBIENT;
+    let c = render_lessons::raycast::lit(&scene, &pinhole.ray(76, 162), Offset::Scaled);
+    let expected = Vec3::new(0.75, 0.75, 0.7) * render_lessons::lighting::AMBIENT;
     assert!(
         (c - expected).abs().max_element() < 1e-7,
         "{c} vs {expected}"

@@ -645,7 +645,7 @@ fn numbers() {
 #[test]
 fn unshadowed_lambert_is_lambert_where_nothing_blocks_the_light() {
     use render_lessons::offset::Offset;
-    use render_lessons::raycast::{lambert, lambert_unshadowed};
+    use render_lessons::raycast::{lit, lit_unshadowed};
     let args = lesson::Args::parse_from(["09_rasterization", "--width", "96", "--height", "54"]);
     let scene = lesson::scene().unwrap();
     let camera = lesson::camera(&args).unwrap();
@@ -653,13 +653,13 @@ fn unshadowed_lambert_is_lambert_where_nothing_blocks_the_light() {
     for y in 0..54 {
         for x in 0..96 {
             let ray = camera.ray(x, y);
-            let lit = lambert_unshadowed(&scene, &ray);
-            let traced = lambert(&scene, &ray, Offset::Scaled);
-            if lit == traced {
+            let open = lit_unshadowed(&scene, &ray);
+            let traced = lit(&scene, &ray, Offset::Scaled);
+            if open == traced {
                 same += 1;
             } else {
                 // A shadow only ever removes light.
-                assert!(traced.cmple(lit).all(), "({x}, {y}): {traced} > {lit}");
+                assert!(traced.cmple(open).all(), "({x}, {y}): {traced} > {open}");
                 shadowed += 1;
             }
         }

@@ -12,16 +12,17 @@ use render_lessons::camera::{Film, PinholeCamera};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
 use render_lessons::pathtrace::light;
-use render_lessons::pathtrace::material::{Material, fresnel};
+use render_lessons::material::{Material, fresnel};
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::pathtrace::{
-    Accumulator, LensCamera, Object, PixelSampling, Rng, Sampling, Scene, Settings, SphereSampling,
+    Accumulator, LensCamera, PixelSampling, Rng, Sampling, Settings, SphereSampling,
     radiance,
 };
 use render_lessons::ray::Ray;
+use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
 
 /// The lesson's flags at a test-sized resolution and sample count; `extra` flags

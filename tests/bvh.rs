@@ -53,7 +53,7 @@ fn scene(objects: Vec<Object>) -> Scene {
         position: Vec3::new(0.0, 10.0, 0.0),
         intensity: Vec3::ONE,
     };
-    Scene::new(objects, Vec3::ZERO, light).unwrap()
+    Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light)).unwrap()
 }
 
 fn mesh_objects(mesh: &Mesh) -> Vec<Object> {

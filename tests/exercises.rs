@@ -391,16 +391,13 @@ mod checks {
         let reference = |ray: &Ray, shapes: &[Shape], t_min, t_max| {
             let objects = shapes
                 .iter()
-                .map(|s| Object {
-                    shape: s.clone(),
-                    colour: Vec3::ONE,
-                })
+                .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
                 .collect();
             let light = PointLight {
                 position: Vec3::ZERO,
                 intensity: Vec3::ONE,
             };
-            let scene = Scene::new(objects, Vec3::ZERO, light).unwrap();
+            let scene = Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light)).unwrap();
             let (hit, object) = scene.closest_hit(ray, t_min, t_max)?;
             let index = scene
                 .objects()

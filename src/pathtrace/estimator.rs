@@ -23,12 +23,12 @@ use glam::Vec3;
 
 use crate::basis::Basis;
 use crate::pathtrace::light;
-use crate::pathtrace::material::Material;
+use crate::material::Material;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::next_event::{Start, direct_light};
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
-use crate::pathtrace::scene::Scene;
+use crate::scene::Scene;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
@@ -56,8 +56,8 @@ pub fn radiance(scene: &Scene, ray: Ray, rng: &mut Rng, settings: &Settings) -> 
     let mut previous = Previous::Full;
     let mut bounce = 0u32;
     loop {
-        let Some((hit, index)) = scene.closest_hit(&ray, t_min, f32::INFINITY) else {
-            sum += beta * scene.environment();
+        let Some((hit, index)) = scene.closest(&ray, t_min, f32::INFINITY) else {
+            sum += beta * scene.background();
             break;
         };
         let object = &scene.objects()[index];

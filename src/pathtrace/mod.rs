@@ -1,9 +1,8 @@
 //! Lesson 10: Monte Carlo path tracing, an estimator of Kajiya's rendering equation
-//! (Lecture 2), one idea per file:
+//! (Lecture 2), one idea per file, on the shared
+//! [`crate::scene::Scene`] (objects with a [`crate::material::Material`] and emission):
 //!
 //! - [`rng`]: one deterministic random stream per pixel;
-//! - [`material`]: Lambert, mirror, glass;
-//! - [`scene`]: objects with emission, the lights among them, an environment;
 //! - [`light`]: choosing points on lights (area, cone);
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
 //! - [`estimator`]: the path loop;
@@ -18,22 +17,18 @@
 pub mod estimator;
 pub mod lens;
 pub mod light;
-pub mod material;
 pub mod mis;
 pub mod next_event;
 pub mod pfm;
 pub mod progressive;
 pub mod rng;
 pub mod roulette;
-pub mod scene;
 pub mod scenes;
 pub mod settings;
 
 pub use estimator::radiance;
 pub use lens::LensCamera;
 pub use light::SphereSampling;
-pub use material::Material;
 pub use progressive::{Accumulator, PixelSampling};
 pub use rng::Rng;
-pub use scene::{Object, Scene};
 pub use settings::{Sampling, Settings};

@@ -6,10 +6,10 @@ use glam::Vec3;
 
 use crate::offset::Offset;
 use crate::pathtrace::light;
-use crate::pathtrace::material::lambert;
+use crate::material::diffuse_brdf;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::rng::Rng;
-use crate::pathtrace::scene::Scene;
+use crate::scene::Scene;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 
@@ -62,7 +62,7 @@ pub(super) fn direct_light(
         Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
         _ => 1.0,
     };
-    lambert(albedo) * light.emission * (cos * weight / pdf)
+    diffuse_brdf(albedo) * light.emission * (cos * weight / pdf)
 }
 // ANCHOR_END: direct_light
 

@@ -17,7 +17,7 @@ use crate::framebuffer::Framebuffer;
 use crate::pathtrace::estimator::radiance;
 use crate::pathtrace::lens::LensCamera;
 use crate::pathtrace::rng::Rng;
-use crate::pathtrace::scene::Scene;
+use crate::scene::Scene;
 use crate::pathtrace::settings::Settings;
 use crate::render::in_pool;
 

@@ -6,8 +6,8 @@ use glam::Vec3;
 use crate::camera::{Film, Frame, PinholeCamera};
 use crate::error::Result;
 use crate::pathtrace::lens::LensCamera;
-use crate::pathtrace::material::Material;
-use crate::pathtrace::scene::{Object, Scene};
+use crate::material::Material;
+use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
 
 /// A pinhole camera at `eye` looking at `target` (up +Y), its screen at distance 1

@@ -21,7 +21,7 @@ pub use clip::clip_triangle;
 pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
 pub use pipeline::{DepthRange, Pipeline};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
-pub use shade::{Shading, Viewer, lambert};
+pub use shade::{Shading, Viewer, shade};
 pub use shadow_map::{ShadowMap, Shadows};
 pub use vertex::{ClipVertex, Varyings};
 
@@ -113,7 +113,7 @@ struct Lights<'a> {
 impl Lights<'_> {
     /// Lambert's law at `p`, the light visible unless the shadow map says otherwise.
     fn shade(&self, p: Vec3, n: Vec3, albedo: Vec3) -> Vec3 {
-        lambert(p, n, albedo, self.light, &self.viewer, || {
+        shade(p, n, albedo, self.light, &self.viewer, || {
             self.shadow_map.is_none_or(|m| m.lit(p, n))
         })
     }

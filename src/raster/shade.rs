@@ -1,5 +1,5 @@
 //! Lighting (Lecture 2, "Rasterization Pipeline: Lighting"): Lambert's cosine law
-//! from one point light, the formula of `raycast::lambert`, but with no shadow ray:
+//! from one point light, the formula of `raycast::lit`, but with no shadow ray:
 //! a rasterizer sees one triangle at a time and cannot ask what lies in between.
 //! Whether the light is visible comes from elsewhere (a shadow map) or is assumed.
 
@@ -43,7 +43,7 @@ impl Viewer {
 /// `light` as [`lighting::lambert`] computes it, the light visible if `visible()`
 /// says so. The normal is turned to face the viewer first (two-sided lighting), as
 /// ray casting shades the side the ray arrived from.
-pub fn lambert(
+pub fn shade(
     p: Vec3,
     n: Vec3,
     albedo: Vec3,

@@ -1039,16 +1039,13 @@ pub fn check_closest(f: impl Fn(&Ray, &[Shape], f32, f32) -> Option<(usize, f32)
         |(ray, shapes, t_min, t_max)| {
             let objects = shapes
                 .iter()
-                .map(|shape| Object {
-                    shape: shape.clone(),
-                    colour: Vec3::ONE,
-                })
+                .map(|shape| Object::diffuse(shape.clone(), Vec3::ONE))
                 .collect();
             let light = PointLight {
                 position: Vec3::ZERO,
                 intensity: Vec3::ONE,
             };
-            let scene = Scene::new(objects, Vec3::ZERO, light).expect("valid scene");
+            let scene = Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light)).expect("valid scene");
             scene.closest_hit(ray, *t_min, *t_max).map(|(hit, object)| {
                 let index = scene
                     .objects()

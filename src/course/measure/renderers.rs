@@ -16,7 +16,8 @@ use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
 use crate::pathtrace::scenes::cornell;
-use crate::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling, Scene, Settings};
+use crate::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling, Settings};
+use crate::scene::Scene;
 
 /// The four strategies of lesson 10, worst first, with their names in the legend.
 pub const TECHNIQUES: [(Sampling, &str); 4] = [

@@ -26,7 +26,7 @@ pub fn sphere_scene(n: u32) -> Result<Scene> {
         position: Vec3::new(0.0, 5.0, 5.0),
         intensity: Vec3::ONE,
     };
-    Scene::new(objects, Vec3::ZERO, light)
+    Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light))
 }
 
 /// `k` triangles in a fan around the view's centre, a disc of radius 0.9 facing
@@ -39,17 +39,14 @@ pub fn fan_scene(k: u32) -> Result<Scene> {
     };
     let objects = (0..k)
         .map(|i| {
-            Ok(Object {
-                shape: Shape::Triangle(Triangle::new(Vec3::ZERO, corner(i), corner(i + 1))?),
-                colour: Vec3::new(0.8, 0.5, 0.3),
-            })
+            Ok(Object::diffuse(Shape::Triangle(Triangle::new(Vec3::ZERO, corner(i), corner(i + 1))?), Vec3::new(0.8, 0.5, 0.3)))
         })
         .collect::<Result<Vec<_>>>()?;
     let light = PointLight {
         position: Vec3::new(0.0, 5.0, 5.0),
         intensity: Vec3::ONE,
     };
-    Scene::new(objects, Vec3::ZERO, light)
+    Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light))
 }
 
 /// The primary rays of a `width` x `height` pinhole view of the sphere, which

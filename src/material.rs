@@ -78,7 +78,7 @@ impl Material {
 // ANCHOR: lambert
 /// Lambert's BRDF, f_r = albedo / pi: with it a white surface (albedo 1) under
 /// uniform radiance L reflects exactly L, since the cosine integrates to pi.
-pub fn lambert(albedo: Vec3) -> Vec3 {
+pub fn diffuse_brdf(albedo: Vec3) -> Vec3 {
     albedo / PI
 }
 // ANCHOR_END: lambert
@@ -126,6 +126,16 @@ pub fn fresnel(cos_i: f32, eta: f32) -> (f32, f32) {
 // ANCHOR_END: fresnel
 
 impl Material {
+    /// The surface's colour as the ray caster paints it: the albedo of a diffuse
+    /// surface, the reflectance of a mirror, white for glass (it absorbs nothing).
+    pub fn albedo(&self) -> Vec3 {
+        match *self {
+            Material::Diffuse { albedo } => albedo,
+            Material::Mirror { reflectance } => reflectance,
+            Material::Glass { .. } => Vec3::ONE,
+        }
+    }
+
     /// `true` for mirror and glass, whose f_r is a delta function.
     pub fn is_specular(&self) -> bool {
         !matches!(self, Material::Diffuse { .. })

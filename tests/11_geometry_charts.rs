@@ -17,10 +17,10 @@ fn at(points: &[(f64, f64)], x: f64) -> f64 {
 #[test]
 fn sphere_textbook_f32_fails_far_away_stable_holds() {
     let curves = sphere::data(Quality::Quick).unwrap();
-    let curve = |m: sphere::Method| curves.iter().find(|c| c.method == m).unwrap();
-    let textbook = curve(sphere::Method::TextbookF32);
-    let stable = curve(sphere::Method::StableF32);
-    let stable64 = curve(sphere::Method::StableF64);
+    let curve = |m: sphere::SphereMethod| curves.iter().find(|c| c.method == m).unwrap();
+    let textbook = curve(sphere::SphereMethod::TextbookF32);
+    let stable = curve(sphere::SphereMethod::StableF32);
+    let stable64 = curve(sphere::SphereMethod::StableF64);
     let far = *sphere::DISTANCES.last().unwrap();
     let near = sphere::DISTANCES[0];
     eprintln!(
@@ -62,9 +62,15 @@ fn triangle_moller_trumbore_leaks_watertight_does_not() {
     assert_eq!(watertight, 0.0);
     // On the mesh of slivers the epsilon patch is not enough; watertight still holds.
     let (tris, rays) = triangle::mesh_and_rays(triangle::SLIVERS, 1).unwrap();
-    assert!(triangle::leaks(triangle::Method::MollerTrumboreEpsilon, &tris, &rays) > 0);
+    assert!(
+        triangle::leaks(
+            triangle::TriangleMethod::MollerTrumboreEpsilon,
+            &tris,
+            &rays
+        ) > 0
+    );
     assert_eq!(
-        triangle::leaks(triangle::Method::Watertight, &tris, &rays),
+        triangle::leaks(triangle::TriangleMethod::Watertight, &tris, &rays),
         0
     );
 }
@@ -153,7 +159,7 @@ fn the_four_charts_are_written() {
 fn sphere_chart_names_each_method_with_its_time() {
     let m = sphere::measure(Quality::Quick).unwrap();
     assert_eq!(m.chart.series.len(), 4);
-    for (s, method) in m.chart.series.iter().zip(sphere::Method::ALL) {
+    for (s, method) in m.chart.series.iter().zip(sphere::SphereMethod::ALL) {
         assert!(s.name.starts_with(method.name()) && s.name.ends_with(" ns)"));
         assert_eq!(s.points.len(), sphere::DISTANCES.len());
     }

@@ -35,7 +35,7 @@ pub const DISTANCES: [f64; 13] = [
 
 /// The three ways to compute the hit point, with their legend names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
+pub enum PrecisionMethod {
     /// Everything in f32 world coordinates.
     WorldF32,
     /// f32 relative to the camera, the camera position added back in f64.
@@ -44,26 +44,26 @@ pub enum Method {
     WorldF64,
 }
 
-impl Method {
+impl PrecisionMethod {
     /// In the chart's order.
-    pub const ALL: [Method; 3] = [
-        Method::WorldF32,
-        Method::CameraRelativeF32,
-        Method::WorldF64,
+    pub const ALL: [PrecisionMethod; 3] = [
+        PrecisionMethod::WorldF32,
+        PrecisionMethod::CameraRelativeF32,
+        PrecisionMethod::WorldF64,
     ];
 
     /// The legend's name.
     pub fn name(self) -> &'static str {
         match self {
-            Method::WorldF32 => "f32 world space",
-            Method::CameraRelativeF32 => "f32 camera-relative",
-            Method::WorldF64 => "f64 world space",
+            PrecisionMethod::WorldF32 => "f32 world space",
+            PrecisionMethod::CameraRelativeF32 => "f32 camera-relative",
+            PrecisionMethod::WorldF64 => "f64 world space",
         }
     }
 }
 
 /// Mean hit-point errors (world units) at distance `distance`, with an `n` x `n`
-/// pixel camera, in the order of [`Method::ALL`].
+/// pixel camera, in the order of [`PrecisionMethod::ALL`].
 pub fn errors_at(distance: f64, n: u32) -> Result<[f64; 3]> {
     let axis = DVec3::new(1.0, 0.5, 0.25).normalize();
     let centre = (distance * axis).as_vec3();
@@ -107,7 +107,7 @@ pub fn errors_at(distance: f64, n: u32) -> Result<[f64; 3]> {
 }
 
 /// Each method's (X, mean hit-point error) at every distance of [`DISTANCES`], in
-/// the order of [`Method::ALL`].
+/// the order of [`PrecisionMethod::ALL`].
 pub fn data(quality: Quality) -> Result<Vec<Vec<(f64, f64)>>> {
     let n = quality.pick(16, 64);
     let mut curves = vec![Vec::new(); 3];
@@ -131,7 +131,7 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         ),
         ("mean hit-point error (world units)", Scale::Log),
     );
-    for (method, points) in Method::ALL.iter().zip(&curves) {
+    for (method, points) in PrecisionMethod::ALL.iter().zip(&curves) {
         chart = chart.with(method.name(), points.clone());
     }
     let at = |m: usize, x: f64| {

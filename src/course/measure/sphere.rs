@@ -25,7 +25,7 @@ use crate::shapes::Sphere;
 
 /// The four root finders on the chart.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
+pub enum SphereMethod {
     /// [`Sphere::roots_textbook`], in f32.
     TextbookF32,
     /// [`Sphere::roots_stable`] (Hearn-Baker discriminant, stable roots), in f32.
@@ -36,22 +36,22 @@ pub enum Method {
     StableF64,
 }
 
-impl Method {
+impl SphereMethod {
     /// In the chart's order.
-    pub const ALL: [Method; 4] = [
-        Method::TextbookF32,
-        Method::StableF32,
-        Method::TextbookF64,
-        Method::StableF64,
+    pub const ALL: [SphereMethod; 4] = [
+        SphereMethod::TextbookF32,
+        SphereMethod::StableF32,
+        SphereMethod::TextbookF64,
+        SphereMethod::StableF64,
     ];
 
     /// The legend's name (without the time).
     pub fn name(self) -> &'static str {
         match self {
-            Method::TextbookF32 => "textbook f32",
-            Method::StableF32 => "stable f32",
-            Method::TextbookF64 => "textbook f64",
-            Method::StableF64 => "stable f64",
+            SphereMethod::TextbookF32 => "textbook f32",
+            SphereMethod::StableF32 => "stable f32",
+            SphereMethod::TextbookF64 => "textbook f64",
+            SphereMethod::StableF64 => "stable f64",
         }
     }
 }
@@ -60,7 +60,7 @@ impl Method {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Curve {
     /// Which root finder.
-    pub method: Method,
+    pub method: SphereMethod,
     /// (D/r, mean relative error |t - t_ref| / t_ref of the near root), a wrong
     /// answer counted as 1 and every error capped at 1.
     pub errors: Vec<(f64, f64)>,
@@ -149,14 +149,14 @@ pub(crate) fn stable_f64(o: DVec3, d: DVec3, centre: DVec3, radius: f64) -> Opti
 }
 
 /// The near root by `method`, as f64.
-fn near_root(method: Method, sphere: &Sphere, ray: &Ray) -> Option<f64> {
+fn near_root(method: SphereMethod, sphere: &Sphere, ray: &Ray) -> Option<f64> {
     let (o, d) = (ray.origin().as_dvec3(), ray.direction().as_dvec3());
     let (c, r) = (sphere.centre().as_dvec3(), f64::from(sphere.radius()));
     match method {
-        Method::TextbookF32 => sphere.roots_textbook(ray).map(|(t, _)| f64::from(t)),
-        Method::StableF32 => sphere.roots_stable(ray).map(|(t, _)| f64::from(t)),
-        Method::TextbookF64 => textbook_f64(o, d, c, r).map(|(t, _)| t),
-        Method::StableF64 => stable_f64(o, d, c, r).map(|(t, _)| t),
+        SphereMethod::TextbookF32 => sphere.roots_textbook(ray).map(|(t, _)| f64::from(t)),
+        SphereMethod::StableF32 => sphere.roots_stable(ray).map(|(t, _)| f64::from(t)),
+        SphereMethod::TextbookF64 => textbook_f64(o, d, c, r).map(|(t, _)| t),
+        SphereMethod::StableF64 => stable_f64(o, d, c, r).map(|(t, _)| t),
     }
 }
 
@@ -168,7 +168,7 @@ fn grid_side(quality: Quality) -> usize {
 /// The accuracy of every method at every distance of [`DISTANCES`] (no timing: this
 /// is what the tests check).
 pub fn data(quality: Quality) -> Result<Vec<Curve>> {
-    let mut curves: Vec<Curve> = Method::ALL
+    let mut curves: Vec<Curve> = SphereMethod::ALL
         .iter()
         .map(|&method| Curve {
             method,
@@ -222,7 +222,7 @@ pub(crate) fn fastest<const N: usize>(
 }
 
 /// Nanoseconds per ray/sphere test of each method (both roots), over a fixed batch
-/// of 4096 rays at D/r = 100, in the order of [`Method::ALL`]: the fastest of a few
+/// of 4096 rays at D/r = 100, in the order of [`SphereMethod::ALL`]: the fastest of a few
 /// rounds.
 pub fn times(quality: Quality) -> Result<[f64; 4]> {
     let (sphere, rays) = scene(100.0, 80)?;

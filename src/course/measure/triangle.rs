@@ -24,7 +24,7 @@ use crate::shapes::{Aabb, Triangle};
 
 /// The ray/triangle tests on the chart.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
+pub enum TriangleMethod {
     /// [`Triangle::moller_trumbore`].
     MollerTrumbore,
     /// Moller-Trumbore with each barycentric test widened by [`EPSILON`].
@@ -37,31 +37,33 @@ pub enum Method {
 /// b1 >= -EPSILON, b2 >= -EPSILON, b1 + b2 <= 1 + EPSILON.
 pub const EPSILON: f32 = 1e-6;
 
-impl Method {
+impl TriangleMethod {
     /// In the chart's order.
-    pub const ALL: [Method; 3] = [
-        Method::MollerTrumbore,
-        Method::MollerTrumboreEpsilon,
-        Method::Watertight,
+    pub const ALL: [TriangleMethod; 3] = [
+        TriangleMethod::MollerTrumbore,
+        TriangleMethod::MollerTrumboreEpsilon,
+        TriangleMethod::Watertight,
     ];
 
     /// The legend's name.
     pub fn name(self) -> &'static str {
         match self {
-            Method::MollerTrumbore => "Moller-Trumbore",
-            Method::MollerTrumboreEpsilon => "Moller-Trumbore, edges widened by 1e-6",
-            Method::Watertight => "watertight (Woop et al.)",
+            TriangleMethod::MollerTrumbore => "Moller-Trumbore",
+            TriangleMethod::MollerTrumboreEpsilon => "Moller-Trumbore, edges widened by 1e-6",
+            TriangleMethod::Watertight => "watertight (Woop et al.)",
         }
     }
 
     /// Does `ray` hit `tri` at some t > 0?
     pub fn hits(self, tri: &Triangle, ray: &Ray) -> bool {
         match self {
-            Method::MollerTrumbore => tri.moller_trumbore(ray, 0.0, f32::INFINITY).is_some(),
-            Method::MollerTrumboreEpsilon => {
+            TriangleMethod::MollerTrumbore => {
+                tri.moller_trumbore(ray, 0.0, f32::INFINITY).is_some()
+            }
+            TriangleMethod::MollerTrumboreEpsilon => {
                 moller_trumbore_epsilon(tri, ray, 0.0, f32::INFINITY).is_some()
             }
-            Method::Watertight => tri.watertight(ray, 0.0, f32::INFINITY).is_some(),
+            TriangleMethod::Watertight => tri.watertight(ray, 0.0, f32::INFINITY).is_some(),
         }
     }
 }
@@ -184,25 +186,25 @@ fn per_edge(quality: Quality) -> usize {
 }
 
 /// How many of `rays` hit no triangle of `tris` by `method`.
-pub fn leaks(method: Method, tris: &[Triangle], rays: &[Ray]) -> usize {
+pub fn leaks(method: TriangleMethod, tris: &[Triangle], rays: &[Ray]) -> usize {
     rays.iter()
         .filter(|ray| !tris.iter().any(|t| method.hits(t, ray)))
         .count()
 }
 
 /// Each method's leak rate (share of the rays that hit no triangle) on the mesh, in
-/// the order of [`Method::ALL`] (no timing: this is what the tests check).
+/// the order of [`TriangleMethod::ALL`] (no timing: this is what the tests check).
 pub fn leak_rates(quality: Quality) -> Result<[f64; 3]> {
     let (tris, rays) = mesh_and_rays(MESH, per_edge(quality))?;
-    Ok(Method::ALL.map(|m| leaks(m, &tris, &rays) as f64 / rays.len() as f64))
+    Ok(TriangleMethod::ALL.map(|m| leaks(m, &tris, &rays) as f64 / rays.len() as f64))
 }
 
 /// Nanoseconds per ray/triangle test of each method, in the order of
-/// [`Method::ALL`]: each ray against every triangle, as in the leak count, the total
+/// [`TriangleMethod::ALL`]: each ray against every triangle, as in the leak count, the total
 /// time divided by the number of tests; the fastest of a few rounds.
 fn times(tris: &[Triangle], rays: &[Ray], quality: Quality) -> [f64; 3] {
     let calls = quality.pick(2, 10) * rays.len() as u32;
-    let per_test = |method: Method| {
+    let per_test = |method: TriangleMethod| {
         ns_per_call(calls, |i| {
             let ray = &rays[i as usize % rays.len()];
             tris.iter().filter(|t| method.hits(t, ray)).count()
@@ -211,9 +213,9 @@ fn times(tris: &[Triangle], rays: &[Ray], quality: Quality) -> [f64; 3] {
     fastest(
         quality.pick(3, 5),
         [
-            &mut || per_test(Method::MollerTrumbore),
-            &mut || per_test(Method::MollerTrumboreEpsilon),
-            &mut || per_test(Method::Watertight),
+            &mut || per_test(TriangleMethod::MollerTrumbore),
+            &mut || per_test(TriangleMethod::MollerTrumboreEpsilon),
+            &mut || per_test(TriangleMethod::Watertight),
         ],
     )
 }
@@ -271,7 +273,7 @@ pub fn box_rejects(quality: Quality) -> Result<(usize, usize, usize, f64, f64)> 
 
 /// The methods not beaten by another on both counts (faster and leaking no more, or
 /// leaking less and no slower).
-fn pareto_front(points: &[(Method, f64, f64)]) -> Vec<Method> {
+fn pareto_front(points: &[(TriangleMethod, f64, f64)]) -> Vec<TriangleMethod> {
     points
         .iter()
         .filter(|&&(_, ns, leak)| {
@@ -288,7 +290,7 @@ fn pareto_front(points: &[(Method, f64, f64)]) -> Vec<Method> {
 pub fn measure(quality: Quality) -> Result<Measured> {
     let (tris, rays) = mesh_and_rays(MESH, per_edge(quality))?;
     let ns = times(&tris, &rays, quality);
-    let points: Vec<(Method, f64, f64)> = Method::ALL
+    let points: Vec<(TriangleMethod, f64, f64)> = TriangleMethod::ALL
         .iter()
         .zip(ns)
         .map(|(&m, ns)| {
@@ -327,7 +329,7 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         format!(
             "Pareto front (no other method both faster and leaking less): {}{}",
             front_names.join(", "),
-            if front.contains(&Method::Watertight) {
+            if front.contains(&TriangleMethod::Watertight) {
                 ""
             } else {
                 " (on this mesh: see the mesh of slivers below)"
@@ -339,9 +341,14 @@ pub fn measure(quality: Quality) -> Result<Measured> {
             SLIVERS.0,
             SLIVERS.1,
             sliver_rays.len(),
-            100.0 * leaks(Method::MollerTrumboreEpsilon, &slivers, &sliver_rays) as f64
+            100.0
+                * leaks(
+                    TriangleMethod::MollerTrumboreEpsilon,
+                    &slivers,
+                    &sliver_rays
+                ) as f64
                 / sliver_rays.len() as f64,
-            100.0 * leaks(Method::Watertight, &slivers, &sliver_rays) as f64
+            100.0 * leaks(TriangleMethod::Watertight, &slivers, &sliver_rays) as f64
                 / sliver_rays.len() as f64,
         ),
         format!(

@@ -5,9 +5,27 @@
 //! example (`examples/NN_*.rs`) builds on these modules, and the book includes their
 //! code by anchor.
 //!
-//! Dependencies flow one way: `transform`, `ray`, `basis` -> `camera`, `shapes` ->
-//! `scene` (and `bvh`, the same questions through a tree) -> renderers (`raycast`,
-//! `render`) -> output (`framebuffer`, `diagram`).
+//! ## The renderer, in layers
+//!
+//! Dependencies flow one way, up this list; a module uses only the layers below
+//! it (`tests/architecture.rs` checks this, and that no two files import each
+//! other):
+//!
+//! 1. `error`: the one typed error, naming the parameter at fault;
+//! 2. `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`:
+//!    the maths of Lectures 3 and 4, and writing files;
+//! 3. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
+//! 4. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
+//!    image in memory;
+//! 5. `bvh`, `lighting`, `render`: the same questions through a tree, the one
+//!    Lambert formula, one ray per pixel in parallel;
+//! 6. `raycast`, `raster`, `pathtrace`: the three renderers;
+//! 7. `scenes`: the lessons' scenes, shared by several lessons.
+//!
+//! ## The course's tools
+//!
+//! [`course`] sits on top: diagrams, charts, tables, the lessons' flags, lesson
+//! 11's measurements and the exercises. Nothing in the renderer imports it.
 
 pub mod basis;
 pub mod bvh;
@@ -26,6 +44,7 @@ pub mod raycast;
 pub mod render;
 pub mod sampling;
 pub mod scene;
+pub mod scenes;
 pub mod shapes;
 pub mod transform;
 

@@ -32,9 +32,9 @@ pub struct Args {
     pub output: Output,
 }
 
-/// The five transformations of the slides, with the lesson's parameters.
-pub fn slide_transforms(args: &Args) -> Result<Vec<(&'static str, Transform)>> {
-    let theta = args.angle.to_radians();
+/// The five transformations of the slides; the rotations turn by `degrees`.
+pub fn slide_transforms(degrees: f32) -> Result<Vec<(&'static str, Transform)>> {
+    let theta = degrees.to_radians();
     Ok(vec![
         ("scale(2, 0.5, 1)", Transform::scale(2.0, 0.5, 1.0)?),
         ("rotation_x(angle)", Transform::rotation_x(theta)?),
@@ -48,9 +48,9 @@ pub fn slide_transforms(args: &Args) -> Result<Vec<(&'static str, Transform)>> {
 }
 
 // ANCHOR: order
-/// Rotate by the angle about Z, and translate by (3, 0, 0): in both orders.
-pub fn two_orders(args: &Args) -> Result<[(&'static str, Transform); 2]> {
-    let rotate = Transform::rotation_z(args.angle.to_radians())?;
+/// Rotate by `degrees` about Z, and translate by (3, 0, 0): in both orders.
+pub fn two_orders(degrees: f32) -> Result<[(&'static str, Transform); 2]> {
+    let rotate = Transform::rotation_z(degrees.to_radians())?;
     let translate = Transform::translation(3.0, 0.0, 0.0)?;
     Ok([
         ("rotate, then translate", rotate.then(translate)),
@@ -59,25 +59,24 @@ pub fn two_orders(args: &Args) -> Result<[(&'static str, Transform); 2]> {
 }
 // ANCHOR_END: order
 
-/// The tables the lesson prints.
-pub fn numbers(args: &Args) -> Result<String> {
-    let p = args.point;
+/// The tables the lesson prints: the point (and vector) `p` under every transformation.
+pub fn numbers(degrees: f32, p: Vec3) -> Result<String> {
     let mut table = Table::new(
         &format!(
             "The slides' matrices applied to the point {0} (w = 1) and the vector {0} (w = 0), angle {1} degrees",
             vec3(p, 3),
-            args.angle
+            degrees
         ),
         &["transform", "point", "vector"],
     );
-    for (name, t) in slide_transforms(args)? {
+    for (name, t) in slide_transforms(degrees)? {
         table.row(vec![name.into(), vec3(t.point(p), 3), vec3(t.vector(p), 3)]);
     }
     let mut order = Table::new(
         &format!("Order matters: the point {} under", vec3(p, 3)),
         &["composition", "point"],
     );
-    for (name, t) in two_orders(args)? {
+    for (name, t) in two_orders(degrees)? {
         order.row(vec![name.into(), vec3(t.point(p), 3)]);
     }
     Ok(format!("{table}\n{order}"))
@@ -91,11 +90,10 @@ pub fn house() -> Vec<Vec3> {
 }
 
 /// The figure: the house, and the house moved by both compositions.
-pub fn order_figure(args: &Args) -> Result<Diagram> {
+pub fn order_figure(degrees: f32) -> Result<Diagram> {
     let mut d = Diagram::new(800, 560, (-2.5, 6.5), (-1.5, 4.2))?;
     d.title(&format!(
-        "Rotate {} degrees about Z and translate by (3, 0, 0): the order matters",
-        args.angle
+        "Rotate {degrees} degrees about Z and translate by (3, 0, 0): the order matters"
     ));
     d.axes((-2.0, 6.0), (-1.0, 3.7), 1.0, ("x", "y"));
     let xy = |p: Vec3| Vec2::new(p.x, p.y);
@@ -103,7 +101,7 @@ pub fn order_figure(args: &Args) -> Result<Diagram> {
     d.fill(&shape, palette::GRID, 200);
     d.outline(&shape, palette::INK, 1.5);
     d.text(Vec2::new(0.5, 0.4), "original", palette::INK, Place::Centre);
-    for ((name, t), color) in two_orders(args)?
+    for ((name, t), color) in two_orders(degrees)?
         .into_iter()
         .zip([palette::RAY, palette::HIT])
     {
@@ -120,10 +118,13 @@ pub fn order_figure(args: &Args) -> Result<Diagram> {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let Args {
+        angle,
+        point,
+        output,
+    } = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers(&args)?);
-        args.output
-            .diagram("01_transform_order.png", &order_figure(&args)?)
+        lesson::print(&numbers(angle, point)?);
+        output.diagram("01_transform_order.png", &order_figure(angle)?)
     })
 }

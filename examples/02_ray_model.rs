@@ -34,10 +34,9 @@ pub struct Args {
 /// The values of t the lesson samples.
 pub const TS: [f32; 6] = [-2.0, -1.0, 0.0, 1.0, 2.5, 4.0];
 
-/// The lesson's table.
-pub fn numbers(args: &Args) -> Result<String> {
+/// The lesson's table: the points of `ray` at the sampled t.
+pub fn numbers(ray: &Ray) -> String {
     // ANCHOR: points
-    let ray = Ray::new(args.origin, args.direction)?;
     let mut table = Table::new(
         &format!(
             "r(t) = o + t d with o = {}, d = {} (unit)",
@@ -63,12 +62,11 @@ pub fn numbers(args: &Args) -> Result<String> {
         ]);
     }
     // ANCHOR_END: points
-    Ok(table.to_string())
+    table.to_string()
 }
 
 /// The figure: the ray in the XY plane with its t ticks; the part behind the origin dashed.
-pub fn ray_figure(args: &Args) -> Result<Diagram> {
-    let ray = Ray::new(args.origin, args.direction)?;
+pub fn ray_figure(ray: &Ray) -> Result<Diagram> {
     let xy = |p: Vec3| Vec2::new(p.x, p.y);
     let (first, last) = (ray.at(TS[0] - 0.5), ray.at(TS[TS.len() - 1] + 0.8));
     let lo = xy(first).min(xy(last)).min(Vec2::ZERO) - 1.0;
@@ -106,7 +104,8 @@ pub fn ray_figure(args: &Args) -> Result<Diagram> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers(&args)?);
-        args.output.diagram("02_ray.png", &ray_figure(&args)?)
+        let ray = Ray::new(args.origin, args.direction)?;
+        lesson::print(&numbers(&ray));
+        args.output.diagram("02_ray.png", &ray_figure(&ray)?)
     })
 }

@@ -11,10 +11,20 @@ use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::ray::Ray;
 
+/// The example's default ray: origin (1, 1, 0), direction (4, 3, 0).
+fn book_ray() -> Ray {
+    Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(4.0, 3.0, 0.0)).unwrap()
+}
+
+#[test]
+fn defaults_are_the_books_values() {
+    let args = lesson::Args::parse_from(["02_ray_model"]);
+    assert_eq!(Ray::new(args.origin, args.direction).unwrap(), book_ray());
+}
+
 #[test]
 fn numbers() {
-    let args = lesson::Args::parse_from(["02_ray_model"]);
-    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+    insta::assert_snapshot!("numbers", lesson::numbers(&book_ray()));
 }
 
 #[test]
@@ -64,7 +74,6 @@ proptest! {
 
 #[test]
 fn figure_draws() {
-    let args = lesson::Args::parse_from(["02_ray_model"]);
-    let rgba = lesson::ray_figure(&args).unwrap().rgba();
+    let rgba = lesson::ray_figure(&book_ray()).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 500, "the ray is drawn in blue");
 }

@@ -39,13 +39,14 @@ pub fn turned_basis(angle_degrees: f32) -> Result<Basis> {
 }
 // ANCHOR_END: basis
 
-/// The lesson's table.
-pub fn numbers(args: &Args) -> Result<String> {
-    let basis = turned_basis(args.angle)?;
+/// The lesson's tables: the basis turned by `degrees`, and the vector whose
+/// coordinates in it are `b`.
+pub fn numbers(degrees: f32, b: Vec3) -> Result<String> {
+    let basis = turned_basis(degrees)?;
     let mut vectors = Table::new(
         &format!(
             "The basis (u, v, w), turned {} degrees about z",
-            num(args.angle as f64, 1)
+            num(degrees as f64, 1)
         ),
         &["vector", "world coordinates"],
     );
@@ -53,7 +54,6 @@ pub fn numbers(args: &Args) -> Result<String> {
         vectors.row(vec![name.into(), vec3(v, 4)]);
     }
     // ANCHOR: round_trip
-    let b = args.b;
     let a = basis.to_world(b); // a = B b
     let back = basis.to_local(a); // b = B^T a
     // ANCHOR_END: round_trip
@@ -89,16 +89,16 @@ pub fn numbers(args: &Args) -> Result<String> {
 
 /// The figure: both frames in the xy plane and the one vector s, with its
 /// coordinates read off along each frame.
-pub fn bases_figure(args: &Args) -> Result<Diagram> {
-    let basis = turned_basis(args.angle)?;
+pub fn bases_figure(degrees: f32, b: Vec3) -> Result<Diagram> {
+    let basis = turned_basis(degrees)?;
     let xy = |p: Vec3| Vec2::new(p.x, p.y);
-    let a = basis.to_world(args.b);
+    let a = basis.to_world(b);
     let extent = a.length().max(1.0) + 1.0;
     let mut d = Diagram::new(760, 640, (-extent, extent), (-extent, extent))?;
     d.title("s = a1 e1 + a2 e2 = b1 u + b2 v: the same arrow in two bases");
     d.axes((-extent, extent), (-extent, extent), 1.0, ("x", "y"));
     // Coordinates along each frame, as dashed guides.
-    let along_u = basis.u() * args.b.x;
+    let along_u = basis.u() * b.x;
     d.dashed(Vec2::ZERO, xy(along_u), palette::CAMERA, 1.5);
     d.dashed(xy(along_u), xy(a), palette::CAMERA, 1.5);
     d.dashed(Vec2::new(a.x, 0.0), xy(a), palette::GRID, 1.5);
@@ -118,18 +118,17 @@ pub fn bases_figure(args: &Args) -> Result<Diagram> {
         "s: a = ({}, {}), b = ({}, {})",
         num(a.x as f64, 2),
         num(a.y as f64, 2),
-        num(args.b.x as f64, 2),
-        num(args.b.y as f64, 2)
+        num(b.x as f64, 2),
+        num(b.y as f64, 2)
     );
     d.text(xy(a), &label, palette::RAY, Place::Right);
     Ok(d)
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let Args { angle, b, output } = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers(&args)?);
-        args.output
-            .diagram("04_two_bases.png", &bases_figure(&args)?)
+        lesson::print(&numbers(angle, b)?);
+        output.diagram("04_two_bases.png", &bases_figure(angle, b)?)
     })
 }

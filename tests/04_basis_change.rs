@@ -11,10 +11,19 @@ use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::basis::Basis;
 
+/// The example's defaults: the basis turned 30 degrees, b = (2, 1, 0).
+const ANGLE: f32 = 30.0;
+const B: Vec3 = Vec3::new(2.0, 1.0, 0.0);
+
+#[test]
+fn defaults_are_the_books_values() {
+    let args = lesson::Args::parse_from(["04_basis_change"]);
+    assert_eq!((args.angle, args.b), (ANGLE, B));
+}
+
 #[test]
 fn numbers() {
-    let args = lesson::Args::parse_from(["04_basis_change"]);
-    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+    insta::assert_snapshot!("numbers", lesson::numbers(ANGLE, B).unwrap());
 }
 
 #[test]
@@ -92,16 +101,14 @@ proptest! {
 
 #[test]
 fn lesson_round_trip_is_exact_enough() {
-    let args = lesson::Args::parse_from(["04_basis_change"]);
-    let basis = lesson::turned_basis(args.angle).unwrap();
-    let back = basis.to_local(basis.to_world(args.b));
-    assert!((back - args.b).length() < 1e-6);
+    let basis = lesson::turned_basis(ANGLE).unwrap();
+    let back = basis.to_local(basis.to_world(B));
+    assert!((back - B).length() < 1e-6);
 }
 
 #[test]
 fn figure_draws() {
-    let args = lesson::Args::parse_from(["04_basis_change"]);
-    let rgba = lesson::bases_figure(&args).unwrap().rgba();
+    let rgba = lesson::bases_figure(ANGLE, B).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 300);
 }
 

@@ -14,9 +14,8 @@ use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::course::diagram::{Diagram, Place, palette};
 use render_lessons::course::lesson::{self, Output};
-use render_lessons::course::report::{Table, num, vec3};
+use render_lessons::course::report::{Table, num, nums, vec3};
 use render_lessons::ray::Ray;
-use render_lessons::shapes::quadric::Roots;
 use render_lessons::shapes::{Aabb, Plane, Quadric, Shape, Sphere, Triangle};
 
 /// The lesson's parameters.
@@ -27,127 +26,55 @@ pub struct Args {
     pub output: Output,
 }
 
-/// One ray against one shape, and how to draw their cross-section.
+/// One ray against one primitive; the name labels the table's row and the figure.
 pub struct Case {
-    /// The figure's file name and the table's row label.
     pub name: &'static str,
-    /// The primitive.
     pub shape: Shape,
-    /// The ray.
     pub ray: Ray,
-    /// The plane of the cross-section: world point to diagram point.
-    pub view: fn(Vec3) -> Vec2,
-    /// The axis names of that plane.
-    pub axes: (&'static str, &'static str),
-    /// The surface's outline in that plane (for the figure only).
-    pub outline: Vec<Vec2>,
-}
-
-fn circle(centre: Vec2, r: f32) -> Vec<Vec2> {
-    (0..=96)
-        .map(|i| centre + r * Vec2::from_angle(i as f32 / 96.0 * std::f32::consts::TAU))
-        .collect()
 }
 
 // ANCHOR: cases
-/// The lesson's five cases: each ray lies in the plane of its figure.
+/// The lesson's five cases. Every ray lies in the plane z = 0, but the paraboloid's,
+/// which lies in y = 0; each figure is a cross-section in that plane.
 pub fn cases() -> Result<Vec<Case>> {
-    let xy = |p: Vec3| Vec2::new(p.x, p.y);
-    let xz = |p: Vec3| Vec2::new(p.x, p.z);
+    let v = Vec3::new;
+    let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)?);
+    let sphere_ray = Ray::new(v(-3.0, 0.5, 0.0), Vec3::X)?;
+    let plane = Shape::Plane(Plane::new(v(0.0, -0.5, 0.0), v(1.0, 2.0, 0.0))?);
+    let plane_ray = Ray::new(v(-2.0, 2.0, 0.0), v(1.0, -1.0, 0.0))?;
+    let cube = Shape::Aabb(Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0))?);
+    let cube_ray = Ray::new(v(-3.0, -0.5, 0.0), v(2.0, 1.0, 0.0))?;
+    let triangle = Triangle::new(v(1.0, -1.0, -1.0), v(1.0, 1.5, 0.0), v(1.0, -1.0, 1.0))?;
+    let triangle_ray = Ray::new(v(-2.0, 0.2, 0.0), v(1.0, 0.1, 0.0))?;
+    let paraboloid = Shape::Quadric(Quadric::paraboloid()?);
+    let paraboloid_ray = Ray::new(v(-2.0, 0.0, 3.0), v(1.0, 0.0, -1.0))?;
+    let case = |name, shape, ray| Case { name, shape, ray };
     Ok(vec![
-        Case {
-            name: "sphere",
-            shape: Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)?),
-            ray: Ray::new(Vec3::new(-3.0, 0.5, 0.0), Vec3::X)?,
-            view: xy,
-            axes: ("x", "y"),
-            outline: circle(Vec2::ZERO, 1.0),
-        },
-        Case {
-            name: "plane",
-            shape: Shape::Plane(Plane::new(
-                Vec3::new(0.0, -0.5, 0.0),
-                Vec3::new(1.0, 2.0, 0.0),
-            )?),
-            ray: Ray::new(Vec3::new(-2.0, 2.0, 0.0), Vec3::new(1.0, -1.0, 0.0))?,
-            view: xy,
-            axes: ("x", "y"),
-            outline: vec![Vec2::new(-2.5, 0.75), Vec2::new(2.5, -1.75)],
-        },
-        Case {
-            name: "box",
-            shape: Shape::Aabb(Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0))?),
-            ray: Ray::new(Vec3::new(-3.0, -0.5, 0.0), Vec3::new(2.0, 1.0, 0.0))?,
-            view: xy,
-            axes: ("x", "y"),
-            outline: [
-                (-1.0, -1.0),
-                (1.0, -1.0),
-                (1.0, 1.0),
-                (-1.0, 1.0),
-                (-1.0, -1.0),
-            ]
-            .map(Vec2::from)
-            .to_vec(),
-        },
-        Case {
-            name: "triangle",
-            shape: Shape::Triangle(Triangle::new(
-                Vec3::new(1.0, -1.0, -1.0),
-                Vec3::new(1.0, 1.5, 0.0),
-                Vec3::new(1.0, -1.0, 1.0),
-            )?),
-            ray: Ray::new(Vec3::new(-2.0, 0.2, 0.0), Vec3::new(1.0, 0.1, 0.0))?,
-            view: xy,
-            axes: ("x", "y"),
-            outline: vec![Vec2::new(1.0, -1.0), Vec2::new(1.0, 1.5)],
-        },
-        Case {
-            name: "paraboloid",
-            shape: Shape::Quadric(Quadric::paraboloid()?),
-            ray: Ray::new(Vec3::new(-2.0, 0.0, 3.0), Vec3::new(1.0, 0.0, -1.0))?,
-            view: xz,
-            axes: ("x", "z"),
-            outline: (0..=80)
-                .map(|i| {
-                    let x = -1.8 + 3.6 * i as f32 / 80.0;
-                    Vec2::new(x, x * x)
-                })
-                .collect(),
-        },
+        case("sphere", sphere, sphere_ray),
+        case("plane", plane, plane_ray),
+        case("box", cube, cube_ray),
+        case("triangle", Shape::Triangle(triangle), triangle_ray),
+        case("paraboloid", paraboloid, paraboloid_ray),
     ])
 }
 // ANCHOR_END: cases
 
 // ANCHOR: crossings
 /// Every crossing of the ray's whole line with the surface, ascending (t < 0 included):
-/// the roots for the sphere and the quadric, the entry and exit for the box, the one
-/// crossing for the plane and the triangle.
+/// each one is the nearest hit beyond the one before, so `hit` finds them all.
 pub fn crossings(shape: &Shape, ray: &Ray) -> Vec<f32> {
-    let all = (f32::NEG_INFINITY, f32::INFINITY);
-    match shape {
-        Shape::Sphere(s) => s.roots_stable(ray).map_or(vec![], |(t0, t1)| vec![t0, t1]),
-        Shape::Plane(p) => p.t(ray).into_iter().collect(),
-        Shape::Aabb(b) => b
-            .slab(ray, all.0, all.1)
-            .map_or(vec![], |(t0, t1)| vec![t0, t1]),
-        Shape::Triangle(t) => t
-            .watertight(ray, all.0, all.1)
-            .map(|h| h.0)
-            .into_iter()
-            .collect(),
-        Shape::Quadric(q) => match q.roots_stable(ray) {
-            Roots::None => vec![],
-            Roots::One(t) => vec![t],
-            Roots::Two(t0, t1) => vec![t0, t1],
-        },
-        _ => vec![],
+    let mut ts = vec![];
+    let mut t_min = f32::NEG_INFINITY;
+    while let Some(hit) = shape.hit(ray, t_min, f32::INFINITY) {
+        ts.push(hit.t);
+        t_min = hit.t;
     }
+    ts
 }
 // ANCHOR_END: crossings
 
-/// The lesson's table.
-pub fn numbers() -> Result<String> {
+/// The lesson's table: each case's crossings, then its nearest hit with t > 0.
+pub fn numbers(cases: &[Case]) -> String {
     let mut table = Table::new(
         "One ray per primitive: every crossing, then the nearest hit with t > 0",
         &[
@@ -160,72 +87,69 @@ pub fn numbers() -> Result<String> {
             "face",
         ],
     );
-    for case in cases()? {
-        let ts: Vec<String> = crossings(&case.shape, &case.ray)
-            .iter()
-            .map(|t| num(*t as f64, 4))
-            .collect();
-        let mut row = vec![
-            case.name.to_string(),
-            vec3(case.ray.origin(), 2),
-            vec3(case.ray.direction(), 4),
-            ts.join(", "),
-        ];
-        match case.shape.hit(&case.ray, 0.0, f32::INFINITY) {
-            Some(hit) => row.extend([
-                vec3(hit.point, 4),
-                vec3(hit.normal, 4),
-                if hit.front_face { "front" } else { "back" }.to_string(),
-            ]),
-            None => row.extend(["miss".to_string(), "-".to_string(), "-".to_string()]),
-        }
+    for Case { name, shape, ray } in cases {
+        let mut row = vec![name.to_string(), vec3(ray.origin(), 2)];
+        row.extend([vec3(ray.direction(), 4), nums(&crossings(shape, ray), 4)]);
+        row.extend(match shape.hit(ray, 0.0, f32::INFINITY) {
+            Some(h) => [vec3(h.point, 4), vec3(h.normal, 4), face(h.front_face)],
+            None => ["miss", "-", "-"].map(String::from),
+        });
         table.row(row);
     }
-    Ok(table.to_string())
+    table.to_string()
 }
 
-/// The cross-section figure of one case.
+/// The side of the surface a ray arrives from.
+fn face(front: bool) -> String {
+    if front { "front" } else { "back" }.into()
+}
+
+/// The cross-section figure of one case: the surface, the ray, every crossing, and the
+/// normal at the nearest hit.
 pub fn figure(case: &Case) -> Result<Diagram> {
-    let view = case.view;
-    let mut d = Diagram::new(600, 460, (-3.2, 3.2), (-2.0, 3.3))?;
+    let (shape, ray) = (&case.shape, &case.ray);
+    // The figure's plane: spanned by x and y, or by x and z for a ray in y = 0.
+    let in_xy = ray.origin().z == 0.0 && ray.direction().z == 0.0;
+    let up = if in_xy { Vec3::Y } else { Vec3::Z };
+    let view = |p: Vec3| Vec2::new(p.x, p.dot(up));
+    let (lo, hi) = (Vec2::new(-3.2, -2.0), Vec2::new(3.2, 3.2));
+    let mut d = Diagram::new(600, 460, (lo.x, hi.x), (lo.y, 3.3))?;
     d.title(&format!(
         "Ray and {}: crossings, and the normal at the nearest hit",
         case.name
     ));
-    d.axes((-3.2, 3.2), (-2.0, 3.2), 1.0, case.axes);
-    for pair in case.outline.windows(2) {
-        d.line(pair[0], pair[1], palette::PLANE, 3.0);
+    let names = ("x", if in_xy { "y" } else { "z" });
+    d.axes((lo.x, hi.x), (lo.y, hi.y), 1.0, names);
+    // The surface's trace in the plane, found by the same `crossings`: a dot wherever a
+    // grid of rays along x and along the plane's second axis crosses it.
+    for i in -400..=400 {
+        let s = i as f32 / 100.0;
+        for (o, dir) in [(up * s, Vec3::X), (Vec3::X * s, up)] {
+            let probe = Ray::new(o, dir)?;
+            for t in crossings(shape, &probe) {
+                let q = view(probe.at(t));
+                if q.clamp(lo, hi) == q {
+                    d.dot(q, 1.5, palette::PLANE);
+                }
+            }
+        }
     }
-    let ts = crossings(&case.shape, &case.ray);
+    let ts = crossings(shape, ray);
     let far = ts.iter().copied().fold(1.0f32, f32::max) + 1.5;
-    d.arrow(
-        view(case.ray.origin()),
-        view(case.ray.at(far)),
-        palette::RAY,
-        2.0,
-    );
-    d.dot(view(case.ray.origin()), 4.0, palette::RAY);
-    d.text(view(case.ray.origin()), "o", palette::RAY, Place::Left);
+    d.arrow(view(ray.origin()), view(ray.at(far)), palette::RAY, 2.0);
+    d.dot(view(ray.origin()), 4.0, palette::RAY);
+    d.text(view(ray.origin()), "o", palette::RAY, Place::Left);
     for (i, t) in ts.iter().enumerate() {
-        let p = view(case.ray.at(*t));
-        d.dot(p, 5.0, palette::HIT);
+        let p = view(ray.at(*t));
         let place = if i == 0 { Place::Below } else { Place::Right };
-        d.text(
-            p,
-            &format!("t = {}", num(*t as f64, 3)),
-            palette::HIT,
-            place,
-        );
+        d.dot(p, 5.0, palette::HIT);
+        let label = format!("t = {}", num(*t as f64, 3));
+        d.text(p, &label, palette::HIT, place);
     }
-    if let Some(hit) = case.shape.hit(&case.ray, 0.0, f32::INFINITY) {
-        let p = view(hit.point);
-        d.arrow(p, p + view(hit.normal) * 0.8, palette::NORMAL, 2.5);
-        d.text(
-            p + view(hit.normal) * 0.8,
-            "n",
-            palette::NORMAL,
-            Place::Right,
-        );
+    if let Some(hit) = shape.hit(ray, 0.0, f32::INFINITY) {
+        let (p, tip) = (view(hit.point), view(hit.point) + view(hit.normal) * 0.8);
+        d.arrow(p, tip, palette::NORMAL, 2.5);
+        d.text(tip, "n", palette::NORMAL, Place::Right);
     }
     Ok(d)
 }
@@ -233,10 +157,11 @@ pub fn figure(case: &Case) -> Result<Diagram> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers()?);
-        for case in cases()? {
-            args.output
-                .diagram(&format!("07_{}.png", case.name), &figure(&case)?)?;
+        let cases = cases()?;
+        lesson::print(&numbers(&cases));
+        for case in &cases {
+            let file = format!("07_{}.png", case.name);
+            args.output.diagram(&file, &figure(case)?)?;
         }
         Ok(())
     })

@@ -14,6 +14,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::ray::Ray;
+use render_lessons::shapes::quadric::Roots;
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 
 fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
@@ -727,7 +728,8 @@ proptest! {
 
 #[test]
 fn numbers() {
-    insta::assert_snapshot!("numbers", lesson::numbers().unwrap());
+    let cases = lesson::cases().unwrap();
+    insta::assert_snapshot!("numbers", lesson::numbers(&cases));
 }
 
 #[test]
@@ -753,6 +755,39 @@ fn lesson_crossings_lie_on_their_surfaces() {
                 case.name
             );
         }
+    }
+}
+
+#[test]
+fn lesson_crossings_are_each_shapes_own_roots() {
+    // `crossings` asks `hit` again and again; it must list exactly the roots of each
+    // shape's own root finder over the whole line, the box's entry and exit included.
+    let all = (f32::NEG_INFINITY, f32::INFINITY);
+    for case in lesson::cases().unwrap() {
+        let (shape, ray) = (&case.shape, &case.ray);
+        let roots = match shape {
+            Shape::Sphere(s) => s.roots_stable(ray).map_or(vec![], |(a, b)| vec![a, b]),
+            Shape::Plane(p) => p.t(ray).into_iter().collect(),
+            Shape::Aabb(b) => b
+                .slab(ray, all.0, all.1)
+                .map_or(vec![], |(a, b)| vec![a, b]),
+            Shape::Triangle(t) => t
+                .watertight(ray, all.0, all.1)
+                .map(|h| vec![h.0])
+                .unwrap_or_default(),
+            Shape::Quadric(q) => match q.roots_stable(ray) {
+                Roots::None => vec![],
+                Roots::One(t) => vec![t],
+                Roots::Two(a, b) => vec![a, b],
+            },
+            _ => panic!("{}: no root finder listed", case.name),
+        };
+        assert_eq!(lesson::crossings(shape, ray), roots, "{}", case.name);
+        assert!(
+            !roots.is_empty(),
+            "{}: the lesson's ray crosses its shape",
+            case.name
+        );
     }
 }
 

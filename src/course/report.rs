@@ -22,6 +22,12 @@ pub fn vec3(v: Vec3, decimals: usize) -> String {
     format!("({x}, {y}, {z})")
 }
 
+/// Numbers as `a, b, c`, each with `decimals` digits (see [`num`]).
+pub fn nums(values: &[f32], decimals: usize) -> String {
+    let cells: Vec<String> = values.iter().map(|&x| num(x as f64, decimals)).collect();
+    cells.join(", ")
+}
+
 /// A small text table: a header row and rows of cells, columns padded to align.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Table {

@@ -88,3 +88,28 @@ pub fn parse_finite(s: &str) -> std::result::Result<f32, String> {
         Err(_) => Err(format!("'{s}' is not a number")),
     }
 }
+
+/// The signature of coding exercise 3.1, `pixel_to_plane(x, y, width, height, px, py)`.
+pub type PixelToPlane = fn((f32, f32), (f32, f32), u32, u32, u32, u32) -> glam::Vec2;
+
+/// The student's `pixel_to_plane` for lesson 03's `--mine`, once it passes its check
+/// (coding exercise 3.1); otherwise an error that says what to do: fix the exercise,
+/// or turn the `exercises` feature on.
+pub fn my_pixel_to_plane() -> Result<PixelToPlane> {
+    #[cfg(feature = "exercises")]
+    {
+        use crate::course::exercises::{ch03, check};
+        match check::check_pixel_to_plane(ch03::pixel_to_plane) {
+            check::Outcome::Pass => Ok(ch03::pixel_to_plane),
+            outcome => Err(crate::Error::Exercise {
+                report: check::PIXEL_TO_PLANE.report(&outcome),
+            }),
+        }
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(crate::Error::Exercise {
+        report: "--mine runs your code for coding exercise 3.1; turn the exercises on: \
+                 cargo run --features exercises --example 03_ortho_camera -- --mine"
+            .into(),
+    })
+}

@@ -13,7 +13,7 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Film, OrthoCamera};
-use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::diagram::{CameraRays, Diagram, View};
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
@@ -49,48 +49,27 @@ pub struct Args {
     pub output: Output,
 }
 
-/// The plane of the flags, cut into `width` x `height` pixels.
-pub fn film(args: &Args, width: u32, height: u32) -> Result<Film> {
-    Film::new(
-        width,
-        height,
-        (args.x_min, args.x_max),
-        (args.y_min, args.y_max),
-    )
-}
-
 // ANCHOR: camera
-/// The lesson's camera: at the origin, looking down -Z, over the given plane.
-pub fn camera(args: &Args) -> Result<OrthoCamera> {
-    let film = Film::new(
-        args.width,
-        args.height,
-        (args.x_min, args.x_max),
-        (args.y_min, args.y_max),
-    )?;
-    Ok(OrthoCamera::at_origin(film))
+/// The lesson's camera: at the origin, looking down -Z, over the plane `x` by `y`
+/// (x_min, x_max and y_min, y_max) cut into `width` x `height` pixels.
+pub fn camera(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<OrthoCamera> {
+    Ok(OrthoCamera::at_origin(Film::new(width, height, x, y)?))
 }
 // ANCHOR_END: camera
 
 /// Most rows the table prints before it stops listing pixels.
 pub const MAX_ROWS: u32 = 24;
 
-/// The lesson's table: each pixel's ray.
-pub fn numbers(args: &Args) -> Result<String> {
-    let cam = camera(args)?;
+/// The lesson's table: each pixel's ray, row by row from the top.
+pub fn numbers(cam: &OrthoCamera) -> String {
     let film = cam.film();
-    let mut table = Table::new(
-        &format!(
-            "Orthographic camera: plane [{}, {}] x [{}, {}], {} x {} pixels, row 0 at the top",
-            num(film.x_extent().0 as f64, 2),
-            num(film.x_extent().1 as f64, 2),
-            num(film.y_extent().0 as f64, 2),
-            num(film.y_extent().1 as f64, 2),
-            film.width(),
-            film.height()
-        ),
-        &["pixel", "ray origin", "ray direction"],
+    let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
+    let (w, h) = (film.width(), film.height());
+    let [x0, x1, y0, y1] = [x0, x1, y0, y1].map(|e| num(e as f64, 2));
+    let title = format!(
+        "Orthographic camera: plane [{x0}, {x1}] x [{y0}, {y1}], {w} x {h} pixels, row 0 at the top"
     );
+    let mut table = Table::new(&title, &["pixel", "ray origin", "ray direction"]);
     // ANCHOR: table
     let pixels = (0..film.height()).flat_map(|y| (0..film.width()).map(move |x| (x, y)));
     for (x, y) in pixels.take(MAX_ROWS as usize) {
@@ -102,116 +81,49 @@ pub fn numbers(args: &Args) -> Result<String> {
         ]);
     }
     // ANCHOR_END: table
-    let shown = (film.width() * film.height()).min(MAX_ROWS);
-    let mut text = table.to_string();
-    if shown < film.width() * film.height() {
-        text.push_str(&format!(
-            "... ({} more pixels)\n",
-            film.width() * film.height() - shown
-        ));
+    match (w * h).saturating_sub(MAX_ROWS) {
+        0 => table.to_string(),
+        more => format!("{table}... ({more} more pixels)\n"),
     }
-    Ok(text)
 }
 
 /// The front view: the projection plane, its pixel grid and every pixel centre.
-pub fn plane_figure(args: &Args) -> Result<Diagram> {
-    let cam = camera(args)?;
-    let film = cam.film();
+pub fn plane_figure(film: &Film) -> Result<Diagram> {
     let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
     let pad = 0.15 * (x1 - x0).max(y1 - y0);
-    let mut d = Diagram::new(800, 620, (x0 - pad, x1 + pad), (y0 - pad, y1 + pad))?;
+    let (x, y) = ((x0 - pad, x1 + pad), (y0 - pad, y1 + pad));
+    let mut d = Diagram::new(800, 620, x, y)?;
     d.title("The projection plane seen from the camera: pixel centres are the ray origins");
-    d.axes(
-        (x0 - pad, x1 + pad),
-        (y0 - pad, y1 + pad),
-        (x1 - x0) / 4.0,
-        ("x", "y"),
-    );
-    let corners = [
-        Vec2::new(x0, y0),
-        Vec2::new(x1, y0),
-        Vec2::new(x1, y1),
-        Vec2::new(x0, y1),
-    ];
-    d.fill(&corners, palette::PLANE, 40);
-    d.outline(&corners, palette::PLANE, 2.0);
-    let (cw, ch) = (
-        (x1 - x0) / film.width() as f32,
-        (y1 - y0) / film.height() as f32,
-    );
-    for i in 1..film.width() {
-        let x = x0 + i as f32 * cw;
-        d.line(Vec2::new(x, y0), Vec2::new(x, y1), palette::PLANE, 1.0);
-    }
-    for j in 1..film.height() {
-        let y = y0 + j as f32 * ch;
-        d.line(Vec2::new(x0, y), Vec2::new(x1, y), palette::PLANE, 1.0);
-    }
-    let labelled = film.width() * film.height() <= 48;
-    for y in 0..film.height() {
-        for x in 0..film.width() {
-            let o = cam.ray(x, y).origin();
-            d.dot(o.truncate(), 4.0, palette::HIT);
-            if labelled {
-                let at = format!("({}, {})", num(o.x as f64, 1), num(o.y as f64, 1));
-                d.text(
-                    o.truncate(),
-                    &format!("pixel ({x},{y})"),
-                    palette::INK,
-                    Place::Above,
-                );
-                d.text(o.truncate(), &at, palette::HIT, Place::Below);
-            }
-        }
-    }
+    d.axes(x, y, (x1 - x0) / 4.0, ("x", "y"));
+    d.film(film);
     Ok(d)
 }
 
+// ANCHOR: rays_figure
 /// The side view (z to the right, y up): parallel rays leave the plane along -Z.
-pub fn rays_figure(args: &Args) -> Result<Diagram> {
-    let cam = camera(args)?;
-    let film = cam.film();
-    let (y0, y1) = film.y_extent();
-    let length = 1.2 * (y1 - y0);
-    let zy = |p: Vec3| Vec2::new(p.z, p.y);
-    let pad = 0.15 * (y1 - y0);
-    let mut d = Diagram::new(800, 620, (-length - pad, 2.0 * pad), (y0 - pad, y1 + pad))?;
+pub fn rays_figure(cam: &OrthoCamera) -> Result<Diagram> {
+    let (y0, y1) = cam.film().y_extent();
+    let (length, pad) = (1.2 * (y1 - y0), 0.15 * (y1 - y0));
+    let (z, y) = ((-length - pad, 2.0 * pad), (y0 - pad, y1 + pad));
+    let mut d = Diagram::new(800, 620, z, y)?;
     d.title("Seen from the side: every ray starts on z = 0 and travels along (0, 0, -1)");
-    d.axes(
-        (-length - pad, 2.0 * pad),
-        (y0 - pad, y1 + pad),
-        ((y1 - y0) / 6.0).max(0.5).round(),
-        ("z", "y"),
-    );
-    d.line(Vec2::new(0.0, y0), Vec2::new(0.0, y1), palette::PLANE, 4.0);
-    d.text(
-        Vec2::new(0.0, y0),
-        "projection plane z = 0",
-        palette::PLANE,
-        Place::Below,
-    );
-    let column = 0;
-    for y in 0..film.height() {
-        let ray = cam.ray(column, y);
-        d.arrow(zy(ray.origin()), zy(ray.at(length)), palette::RAY, 2.0);
-        d.dot(zy(ray.origin()), 4.0, palette::HIT);
-        d.text(
-            zy(ray.origin()),
-            &format!("row {y}"),
-            palette::INK,
-            Place::Right,
-        );
-    }
+    let step = ((y1 - y0) / 6.0).max(0.5).round();
+    d.axes(z, y, step, View::Side.axis_names());
+    CameraRays::side(*cam, length)
+        .column(0)
+        .plane("projection plane z = 0")
+        .labels(|_, y| format!("row {y}"))
+        .draw(&mut d);
     Ok(d)
 }
+// ANCHOR_END: rays_figure
 
 // ANCHOR: origin_image
 /// An image whose colour encodes each pixel's ray origin: red grows with x, green
 /// with y, across the plane. Row 0, at the top of the file, is the top of the plane.
-pub fn origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer> {
-    let film = film(args, width, height)?;
-    let cam = OrthoCamera::at_origin(film);
-    colour_by_origin(&film, |x, y| cam.ray(x, y).origin().truncate())
+pub fn origin_image(film: &Film) -> Result<Framebuffer> {
+    let cam = OrthoCamera::at_origin(*film);
+    colour_by_origin(film, |x, y| cam.ray(x, y).origin().truncate())
 }
 
 /// Colours each pixel by where `origin(x, y)` lies on the film's plane.
@@ -226,43 +138,26 @@ pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Resul
 
 /// The origin image drawn with the student's own `pixel_to_plane`, once it passes its
 /// check (coding exercise 3.1, `src/course/exercises/ch03.rs`).
-pub fn my_origin_image(args: &Args, width: u32, height: u32) -> Result<Framebuffer> {
-    let film = film(args, width, height)?;
-    #[cfg(feature = "exercises")]
-    {
-        use render_lessons::course::exercises::{ch03, check};
-        let outcome = check::check_pixel_to_plane(ch03::pixel_to_plane);
-        if !matches!(outcome, check::Outcome::Pass) {
-            let report = check::PIXEL_TO_PLANE.report(&outcome);
-            return Err(render_lessons::Error::Exercise { report });
-        }
-        let (x, y) = (film.x_extent(), film.y_extent());
-        colour_by_origin(&film, |px, py| {
-            ch03::pixel_to_plane(x, y, width, height, px, py)
-        })
-    }
-    #[cfg(not(feature = "exercises"))]
-    {
-        let _ = film;
-        Err(render_lessons::Error::Exercise {
-            report: "--mine runs your code for coding exercise 3.1; turn the exercises on: \
-                     cargo run --features exercises --example 03_ortho_camera -- --mine"
-                .into(),
-        })
-    }
+pub fn my_origin_image(f: &Film) -> Result<Framebuffer> {
+    let mine = lesson::my_pixel_to_plane()?;
+    colour_by_origin(f, |x, y| {
+        mine(f.x_extent(), f.y_extent(), f.width(), f.height(), x, y)
+    })
 }
 
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers(&args)?);
-        args.output.diagram("03_plane.png", &plane_figure(&args)?)?;
-        args.output.diagram("03_rays.png", &rays_figure(&args)?)?;
-        args.output
-            .image("03_origins.png", &origin_image(&args, 320, 240)?)?;
+        let (x, y) = ((args.x_min, args.x_max), (args.y_min, args.y_max));
+        let cam = camera(args.width, args.height, x, y)?;
+        lesson::print(&numbers(&cam));
+        let out = &args.output;
+        out.diagram("03_plane.png", &plane_figure(cam.film())?)?;
+        out.diagram("03_rays.png", &rays_figure(&cam)?)?;
+        let picture = Film::new(320, 240, x, y)?;
+        out.image("03_origins.png", &origin_image(&picture)?)?;
         if args.mine {
-            args.output
-                .image("03_origins_mine.png", &my_origin_image(&args, 320, 240)?)?;
+            out.image("03_origins_mine.png", &my_origin_image(&picture)?)?;
         }
         Ok(())
     })

@@ -17,8 +17,23 @@ fn slide_camera() -> OrthoCamera {
 
 #[test]
 fn numbers() {
+    insta::assert_snapshot!("numbers", lesson::numbers(&slide_camera()));
+}
+
+#[test]
+fn the_flags_default_to_the_slide_camera() {
     let args = lesson::Args::parse_from(["03_ortho_camera"]);
-    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+    let (x, y) = ((args.x_min, args.x_max), (args.y_min, args.y_max));
+    let cam = lesson::camera(args.width, args.height, x, y).unwrap();
+    assert_eq!(cam, slide_camera());
+}
+
+#[test]
+fn a_long_table_says_how_many_pixels_it_leaves_out() {
+    let cam = OrthoCamera::at_origin(Film::new(8, 6, (-8.0, 8.0), (-6.0, 6.0)).unwrap());
+    let text = lesson::numbers(&cam);
+    assert_eq!(text.lines().filter(|l| l.starts_with('(')).count(), 24);
+    assert!(text.ends_with("... (24 more pixels)\n"));
 }
 
 #[test]
@@ -114,8 +129,8 @@ proptest! {
 
 #[test]
 fn origin_image_is_green_at_the_top_and_red_at_the_right() {
-    let args = lesson::Args::parse_from(["03_ortho_camera"]);
-    let image = lesson::origin_image(&args, 32, 24).unwrap();
+    let film = Film::new(32, 24, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
+    let image = lesson::origin_image(&film).unwrap();
     let (top_left, bottom_left, top_right) = (
         image.get(0, 0).unwrap(),
         image.get(0, 23).unwrap(),
@@ -127,10 +142,10 @@ fn origin_image_is_green_at_the_top_and_red_at_the_right() {
 
 #[test]
 fn figures_draw() {
-    let args = lesson::Args::parse_from(["03_ortho_camera"]);
+    let cam = slide_camera();
     for d in [
-        lesson::plane_figure(&args).unwrap(),
-        lesson::rays_figure(&args).unwrap(),
+        lesson::plane_figure(cam.film()).unwrap(),
+        lesson::rays_figure(&cam).unwrap(),
     ] {
         assert!(common::red_pixels(&d.rgba()) > 200);
     }

@@ -13,7 +13,7 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Film, Frame, OrthoCamera};
-use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::diagram::{CameraRays, Diagram, Place, View, extent};
 use render_lessons::course::lesson::{self, Output, parse_vec3};
 use render_lessons::course::report::{Table, vec3};
 
@@ -43,24 +43,21 @@ pub struct Args {
 
 // ANCHOR: camera
 /// The lesson's camera: lesson 03's plane [-8, 8] x [-6, 6], placed by p, d and k.
-pub fn camera(args: &Args) -> Result<OrthoCamera> {
-    let film = Film::new(args.width, args.height, (-8.0, 8.0), (-6.0, 6.0))?;
-    let frame = Frame::look(args.position, args.direction, args.up)?;
+pub fn camera(width: u32, height: u32, p: Vec3, d: Vec3, k: Vec3) -> Result<OrthoCamera> {
+    let film = Film::new(width, height, (-8.0, 8.0), (-6.0, 6.0))?;
+    let frame = Frame::look(p, d, k)?;
     Ok(OrthoCamera::new(film, frame))
 }
 // ANCHOR_END: camera
 
-/// The lesson's tables: the basis, then every pixel's ray in both spaces.
-pub fn numbers(args: &Args) -> Result<String> {
-    let cam = camera(args)?;
+/// The lesson's tables: the basis built from d and k, then every pixel's ray (at most
+/// 6 x 6) in camera space and in the world.
+pub fn numbers(cam: &OrthoCamera, d: Vec3, k: Vec3) -> String {
     let b = cam.frame().basis();
+    let p = cam.frame().position();
+    let (p, d, k) = (vec3(p, 3), vec3(d, 3), vec3(k, 3));
     let mut basis = Table::new(
-        &format!(
-            "Camera basis from p = {}, d = {}, k = {}",
-            vec3(args.position, 3),
-            vec3(args.direction, 3),
-            vec3(args.up, 3)
-        ),
+        &format!("Camera basis from p = {p}, d = {d}, k = {k}"),
         &["vector", "formula", "world coordinates"],
     );
     basis.row(vec!["w".into(), "-d/|d|".into(), vec3(b.w(), 4)]);
@@ -82,63 +79,33 @@ pub fn numbers(args: &Args) -> Result<String> {
             ]);
         }
     }
-    Ok(format!("{basis}\n{rays}"))
+    format!("{basis}\n{rays}")
 }
 
 /// The figure, seen from above (x to the right, -z up the page): the world axes, the
 /// camera with its u and w, the plane edge-on, and the parallel rays of one image row.
-pub fn top_figure(args: &Args) -> Result<Diagram> {
-    let cam = camera(args)?;
-    let frame = cam.frame();
-    let top = |p: Vec3| Vec2::new(p.x, -p.z);
-    let length = 14.0;
-    let row = cam.film().height() / 2;
-    let mut points = vec![Vec2::ZERO, top(frame.position())];
-    for x in 0..cam.film().width() {
-        let ray = cam.ray(x, row);
-        points.extend([top(ray.origin()), top(ray.at(length))]);
-    }
-    let lo = points
-        .iter()
-        .copied()
-        .fold(Vec2::splat(f32::MAX), Vec2::min)
-        - 2.0;
-    let hi = points
-        .iter()
-        .copied()
-        .fold(Vec2::splat(f32::MIN), Vec2::max)
-        + 2.0;
-    let mut d = Diagram::new(800, 700, (lo.x, hi.x), (lo.y, hi.y))?;
+pub fn top_figure(cam: &OrthoCamera) -> Result<Diagram> {
+    let sketch = CameraRays::top(*cam, 14.0)
+        .basis(3.0)
+        .eye("p", Place::Below)
+        .sizes(1.5, 3.5);
+    let mut points = vec![Vec2::ZERO];
+    points.extend(sketch.points());
+    let (x, y) = extent(&points, 2.0);
+    let mut d = Diagram::new(800, 700, x, y)?;
     d.title("Seen from above: the camera basis and the rays of one image row, in world space");
-    d.axes((lo.x, hi.x), (lo.y, hi.y), 2.0, ("x", "-z"));
-    let (x0, x1) = cam.film().x_extent();
-    let edge = [x0, x1].map(|x| top(frame.point_to_world(Vec3::new(x, 0.0, 0.0))));
-    d.line(edge[0], edge[1], palette::PLANE, 4.0);
-    d.text(edge[0], "projection plane", palette::PLANE, Place::Below);
-    for x in 0..cam.film().width() {
-        let ray = cam.ray(x, row);
-        d.arrow(top(ray.origin()), top(ray.at(length)), palette::RAY, 1.5);
-        d.dot(top(ray.origin()), 3.5, palette::HIT);
-    }
-    let p = top(frame.position());
-    let basis = frame.basis();
-    for (v, name, color) in [
-        (basis.u(), "u", palette::X_AXIS),
-        (basis.w(), "w", palette::Z_AXIS),
-    ] {
-        d.arrow(p, p + top(v) * 3.0, color, 3.5);
-        d.text(p + top(v) * 3.0, name, color, Place::Right);
-    }
-    d.dot(p, 6.0, palette::CAMERA);
-    d.text(p, "p", palette::CAMERA, Place::Below);
+    d.axes(x, y, 2.0, View::Top.axis_names());
+    sketch.draw(&mut d);
     Ok(d)
 }
 
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers(&args)?);
-        args.output
-            .diagram("05_camera_from_above.png", &top_figure(&args)?)
+        let (p, d, k) = (args.position, args.direction, args.up);
+        let cam = camera(args.width, args.height, p, d, k)?;
+        lesson::print(&numbers(&cam, d, k));
+        let figure = top_figure(&cam)?;
+        args.output.diagram("05_camera_from_above.png", &figure)
     })
 }

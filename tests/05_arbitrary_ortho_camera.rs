@@ -12,10 +12,20 @@ use render_lessons::Error;
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Film, Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide};
 
+/// The example's camera, from its default flags.
+fn default_camera() -> (OrthoCamera, lesson::Args) {
+    let args = lesson::Args::parse_from(["05_arbitrary_ortho_camera"]);
+    let (p, d, k) = (args.position, args.direction, args.up);
+    (
+        lesson::camera(args.width, args.height, p, d, k).unwrap(),
+        args,
+    )
+}
+
 #[test]
 fn numbers() {
-    let args = lesson::Args::parse_from(["05_arbitrary_ortho_camera"]);
-    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+    let (cam, args) = default_camera();
+    insta::assert_snapshot!("numbers", lesson::numbers(&cam, args.direction, args.up));
 }
 
 #[test]
@@ -141,7 +151,6 @@ fn bad_camera_input_names_the_parameter() {
 
 #[test]
 fn figure_draws() {
-    let args = lesson::Args::parse_from(["05_arbitrary_ortho_camera"]);
-    let rgba = lesson::top_figure(&args).unwrap().rgba();
+    let rgba = lesson::top_figure(&default_camera().0).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 300);
 }

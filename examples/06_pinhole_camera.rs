@@ -10,10 +10,10 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
-use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
 use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
@@ -43,96 +43,6 @@ pub struct Args {
     pub output: Output,
 }
 
-// ANCHOR: camera
-/// The pinhole camera at the origin: lesson 03's 4 x 3 film as a screen at z = -s.
-pub fn camera_at_origin(args: &Args) -> Result<PinholeCamera> {
-    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0))?;
-    PinholeCamera::at_origin(film, args.screen_distance)
-}
-// ANCHOR_END: camera
-
-/// The arbitrary pinhole camera: the same film, placed by p, d and k.
-pub fn camera_placed(args: &Args) -> Result<PinholeCamera> {
-    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0))?;
-    let frame = Frame::look(args.position, args.direction, args.up)?;
-    PinholeCamera::new(film, args.screen_distance, frame)
-}
-
-/// The lesson's tables.
-pub fn numbers(args: &Args) -> Result<String> {
-    let cam = camera_at_origin(args)?;
-    let mut at_origin = Table::new(
-        &format!(
-            "Pinhole camera at the origin: eye e = (0, 0, 0), screen at z = -{}",
-            num(args.screen_distance as f64, 2)
-        ),
-        &["pixel", "screen point s", "ray direction (s - e)/|s - e|"],
-    );
-    for (x, y) in [(0, 0), (1, 0), (2, 1), (3, 2)] {
-        at_origin.row(vec![
-            format!("({x}, {y})"),
-            vec3(cam.screen_point(x, y), 3),
-            vec3(cam.ray(x, y).direction(), 4),
-        ]);
-    }
-    let placed = camera_placed(args)?;
-    let mut arbitrary = Table::new(
-        &format!(
-            "Placed: p = {}, d = {}, k = {}",
-            vec3(args.position, 3),
-            vec3(args.direction, 3),
-            vec3(args.up, 3)
-        ),
-        &["pixel", "world origin", "world direction"],
-    );
-    for (x, y) in [(0, 0), (1, 0), (2, 1), (3, 2)] {
-        let ray = placed.ray(x, y);
-        arbitrary.row(vec![
-            format!("({x}, {y})"),
-            vec3(ray.origin(), 3),
-            vec3(ray.direction(), 4),
-        ]);
-    }
-    Ok(format!("{at_origin}\n{arbitrary}"))
-}
-
-/// The figure, seen from the side (z to the right, y up): rays of one image column
-/// fan out from the eye through their screen points.
-pub fn fan_figure(args: &Args) -> Result<Diagram> {
-    let cam = camera_at_origin(args)?;
-    let s = cam.screen_distance();
-    let (y0, y1) = cam.film().y_extent();
-    let reach = 2.0 * s;
-    let zy = |p: Vec3| Vec2::new(p.z, p.y);
-    let spread = (y1 - y0) / s * reach * 0.5 + 1.0;
-    let mut d = Diagram::new(800, 620, (-reach - 1.0, 2.0), (-spread, spread))?;
-    d.title("Seen from the side: rays leave the eye e and pass through the screen points s");
-    d.axes((-reach - 1.0, 2.0), (-spread, spread), 2.0, ("z", "y"));
-    d.line(Vec2::new(-s, y0), Vec2::new(-s, y1), palette::PLANE, 4.0);
-    d.text(
-        Vec2::new(-s, y0),
-        &format!("screen z = -{}", num(s as f64, 1)),
-        palette::PLANE,
-        Place::Below,
-    );
-    for y in 0..cam.film().height() {
-        let ray = cam.ray(1, y);
-        let through = cam.screen_point(1, y);
-        let t_end = reach / -ray.direction().z;
-        d.arrow(zy(ray.origin()), zy(ray.at(t_end)), palette::RAY, 2.0);
-        d.dot(zy(through), 4.5, palette::HIT);
-        d.text(
-            zy(through),
-            &format!("s, row {y}"),
-            palette::INK,
-            Place::Right,
-        );
-    }
-    d.dot(Vec2::ZERO, 6.0, palette::CAMERA);
-    d.text(Vec2::ZERO, "e", palette::CAMERA, Place::Right);
-    Ok(d)
-}
-
 // ANCHOR: floor
 /// The colour seen along a ray: a checkerboard on the floor y = 0 (squares of side 1),
 /// found by solving o_y + t d_y = 0 for t; the sky where the ray never reaches it.
@@ -152,18 +62,86 @@ pub fn floor_colour(ray: &Ray) -> Vec3 {
 }
 // ANCHOR_END: floor
 
+// ANCHOR: camera
+/// The lesson's two pinhole cameras, with lesson 03's 4 x 3 film [-8, 8] x [-6, 6] as
+/// their screen at distance `s` from the eye: one at the origin, one placed by `frame`.
+pub fn cameras(s: f32, frame: Frame) -> Result<[PinholeCamera; 2]> {
+    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0))?;
+    Ok([
+        PinholeCamera::at_origin(film, s)?,
+        PinholeCamera::new(film, s, frame)?,
+    ])
+}
+// ANCHOR_END: camera
+
+/// The lesson's tables: the pinhole at the origin (screen points and directions), then
+/// the placed camera's world rays; `d` and `k` are the placed camera's flags.
+pub fn numbers(at_origin: &PinholeCamera, placed: &PinholeCamera, d: Vec3, k: Vec3) -> String {
+    let s = num(at_origin.screen_distance() as f64, 2);
+    let mut origin_table = Table::new(
+        &format!("Pinhole camera at the origin: eye e = (0, 0, 0), screen at z = -{s}"),
+        &["pixel", "screen point s", "ray direction (s - e)/|s - e|"],
+    );
+    let p = placed.frame().position();
+    let (p, d, k) = (vec3(p, 3), vec3(d, 3), vec3(k, 3));
+    let mut placed_table = Table::new(
+        &format!("Placed: p = {p}, d = {d}, k = {k}"),
+        &["pixel", "world origin", "world direction"],
+    );
+    for (x, y) in [(0, 0), (1, 0), (2, 1), (3, 2)] {
+        origin_table.row(vec![
+            format!("({x}, {y})"),
+            vec3(at_origin.screen_point(x, y), 3),
+            vec3(at_origin.ray(x, y).direction(), 4),
+        ]);
+        let ray = placed.ray(x, y);
+        placed_table.row(vec![
+            format!("({x}, {y})"),
+            vec3(ray.origin(), 3),
+            vec3(ray.direction(), 4),
+        ]);
+    }
+    format!("{origin_table}\n{placed_table}")
+}
+
+/// The figure, seen from the side (z to the right, y up): rays of one image column
+/// fan out from the eye through their screen points.
+pub fn fan_figure(cam: &PinholeCamera) -> Result<Diagram> {
+    let s = cam.screen_distance();
+    let (y0, y1) = cam.film().y_extent();
+    let reach = 2.0 * s;
+    let spread = (y1 - y0) / s * reach * 0.5 + 1.0;
+    let (z, y) = ((-reach - 1.0, 2.0), (-spread, spread));
+    let mut d = Diagram::new(800, 620, z, y)?;
+    d.title("Seen from the side: rays leave the eye e and pass through the screen points s");
+    d.axes(z, y, 2.0, View::Side.axis_names());
+    CameraRays::side(*cam, reach)
+        .column(1)
+        .plane(format!("screen z = -{}", num(s as f64, 1)))
+        .labels(|_, y| format!("s, row {y}"))
+        .eye("e", Place::Right)
+        .sizes(2.0, 4.5)
+        .draw(&mut d);
+    Ok(d)
+}
+
 // ANCHOR: side_by_side
-/// The same floor through both cameras, from the same place: orthographic on the
-/// left, pinhole on the right. The orthographic view keeps every square the same
-/// size; the pinhole view shrinks squares with distance and makes parallel lines meet.
-pub fn side_by_side(args: &Args) -> Result<Framebuffer> {
-    let (w, h) = (args.view_width, args.view_width * 3 / 4);
-    let film = Film::new(w, h, (-4.0, 4.0), (-3.0, 3.0))?;
-    let frame = Frame::look(args.position, args.direction, args.up)?;
-    let cameras: [Camera; 2] = [
+/// The two cameras of the comparison, placed by the same frame: orthographic and
+/// pinhole (screen distance `s`), each with `width` x 3/4 `width` pixels over the
+/// film [-4, 4] x [-3, 3].
+pub fn views(frame: Frame, width: u32, s: f32) -> Result<[Camera; 2]> {
+    let film = Film::new(width, width * 3 / 4, (-4.0, 4.0), (-3.0, 3.0))?;
+    Ok([
         OrthoCamera::new(film, frame).into(),
-        PinholeCamera::new(film, args.screen_distance * 0.5, frame)?.into(),
-    ];
+        PinholeCamera::new(film, s, frame)?.into(),
+    ])
+}
+
+/// The same floor through both cameras, side by side: orthographic on the left,
+/// pinhole on the right. The orthographic view keeps every square the same size; the
+/// pinhole view shrinks squares with distance and makes parallel lines meet.
+pub fn side_by_side(cameras: &[Camera; 2]) -> Result<Framebuffer> {
+    let (w, h) = (cameras[0].film().width(), cameras[0].film().height());
     Framebuffer::from_fn(2 * w, h, |x, y| {
         let camera = &cameras[(x / w) as usize];
         floor_colour(&camera.ray(x % w, y))
@@ -174,10 +152,13 @@ pub fn side_by_side(args: &Args) -> Result<Framebuffer> {
 fn main() -> ExitCode {
     let args = Args::parse();
     lesson::run(|| {
-        lesson::print(&numbers(&args)?);
-        args.output
-            .diagram("06_pinhole_rays.png", &fan_figure(&args)?)?;
-        args.output
-            .image("06_ortho_vs_pinhole.png", &side_by_side(&args)?)
+        let (s, d, k) = (args.screen_distance, args.direction, args.up);
+        let frame = Frame::look(args.position, d, k)?;
+        let [at_origin, placed] = cameras(s, frame)?;
+        lesson::print(&numbers(&at_origin, &placed, d, k));
+        let out = &args.output;
+        out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
+        let views = views(frame, args.view_width, s * 0.5)?;
+        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)
     })
 }

@@ -15,10 +15,21 @@ fn film() -> Film {
     Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap()
 }
 
+/// The example's flags with `extra` added, the frame they give and its two 4 x 3 cameras
+/// (at the origin, and placed by the frame).
+fn example(extra: &[&str]) -> (lesson::Args, Frame, PinholeCamera, PinholeCamera) {
+    let args = lesson::Args::parse_from([&["06_pinhole_camera"], extra].concat());
+    let frame = Frame::look(args.position, args.direction, args.up).unwrap();
+    let [at_origin, placed] = lesson::cameras(args.screen_distance, frame).unwrap();
+    assert_eq!(at_origin, PinholeCamera::at_origin(film(), 8.0).unwrap());
+    (args, frame, at_origin, placed)
+}
+
 #[test]
 fn numbers() {
-    let args = lesson::Args::parse_from(["06_pinhole_camera"]);
-    insta::assert_snapshot!("numbers", lesson::numbers(&args).unwrap());
+    let (args, _, at_origin, placed) = example(&[]);
+    let text = lesson::numbers(&at_origin, &placed, args.direction, args.up);
+    insta::assert_snapshot!("numbers", text);
 }
 
 #[test]
@@ -149,8 +160,9 @@ proptest! {
 
 #[test]
 fn side_by_side_orthographic_sees_only_floor_and_pinhole_sees_the_sky() {
-    let args = lesson::Args::parse_from(["06_pinhole_camera", "--view-width", "64"]);
-    let image = lesson::side_by_side(&args).unwrap();
+    let (args, frame, ..) = example(&["--view-width", "64"]);
+    let views = lesson::views(frame, args.view_width, args.screen_distance * 0.5).unwrap();
+    let image = lesson::side_by_side(&views).unwrap();
     let sky = glam::Vec3::new(0.6, 0.75, 0.95);
     // Every orthographic ray points along d = (0, -1, -2): all of them reach the floor.
     assert!((0..64).all(|x| image.get(x, 0).unwrap() != sky));
@@ -160,7 +172,6 @@ fn side_by_side_orthographic_sees_only_floor_and_pinhole_sees_the_sky() {
 
 #[test]
 fn figure_draws() {
-    let args = lesson::Args::parse_from(["06_pinhole_camera"]);
-    let rgba = lesson::fan_figure(&args).unwrap().rgba();
+    let rgba = lesson::fan_figure(&example(&[]).2).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 300);
 }

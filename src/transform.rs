@@ -7,6 +7,8 @@
 //! Every matrix below is written out row by row, exactly as the slides print it;
 //! `tests/01_transforms.rs` checks each one against glam's own constructors.
 
+use std::ops::Mul;
+
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::error::{Error, Result, finite, finite3};
@@ -134,6 +136,13 @@ impl Transform {
     }
     // ANCHOR_END: then
 
+    /// Wraps a matrix the crate has built from finite parts and knows to be finite
+    /// (checked in debug builds only).
+    pub(crate) fn from_finite_matrix(matrix: Mat4) -> Transform {
+        debug_assert!(matrix.is_finite());
+        Transform { matrix }
+    }
+
     /// The transformation that undoes this one, or [`Error::Singular`] (e.g. a scale by 0).
     pub fn inverse(self) -> Result<Transform> {
         let det = self.matrix.determinant();
@@ -173,3 +182,19 @@ impl Transform {
         finite3("normal", inv.matrix.transpose().transform_vector3(n))
     }
 }
+
+// ANCHOR: mul
+/// `a * b` is the matrix product A B, written in the order of the paper: applied to
+/// a point, `b` acts first and `a` last, so `c * b * a` means "first a, then b,
+/// then c", and `a * b == b.then(a)`. This is how most books write chains of
+/// transforms (The Ray Tracer Challenge, ch. 4, "Chaining Transformations":
+/// T = C B A). There is no `Transform * Vec3`: say [`Transform::point`] or
+/// [`Transform::vector`], so that a translation's effect is never a guess.
+impl Mul for Transform {
+    type Output = Transform;
+
+    fn mul(self, rhs: Transform) -> Transform {
+        rhs.then(self)
+    }
+}
+// ANCHOR_END: mul

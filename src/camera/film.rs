@@ -80,6 +80,16 @@ impl Film {
         (self.y_min, self.y_max)
     }
 
+    /// The width and height of one pixel on the plane:
+    /// ((x_max - x_min) / resolution_x, (y_max - y_min) / resolution_y), the steps
+    /// between neighbouring pixel centres in [`Film::pixel_to_plane`].
+    pub fn pixel_size(&self) -> Vec2 {
+        Vec2::new(
+            (self.x_max - self.x_min) / self.width as f32,
+            (self.y_max - self.y_min) / self.height as f32,
+        )
+    }
+
     // ANCHOR: row_flip
     /// The slides count pixel rows from the bottom of the image; image files (and
     /// this crate) count them from the top. This is the one place that converts.

@@ -5,6 +5,7 @@ use glam::Vec3;
 
 use crate::basis::Basis;
 use crate::error::{Error, Result, finite3, unit};
+use crate::transform::{Transform, from_rows};
 
 /// Below this sine of the angle between up and the view direction, the up vector no
 /// longer fixes the camera's roll and [`camera_basis`] refuses (STABILITY S10).
@@ -75,6 +76,28 @@ impl Frame {
         })
     }
 
+    /// A camera at `eye` looking at the point `target`, with `up` towards the top of
+    /// the image: [`Frame::look`] with direction `target - eye`, the form of
+    /// gluLookAt and of The Ray Tracer Challenge's `view_transform(from, to, up)`.
+    ///
+    /// Errors name `eye` or `target` (not finite, or `target == eye`: no direction),
+    /// `up` (zero, not finite, or parallel to the view direction).
+    pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Result<Frame> {
+        let eye = finite3("eye", eye)?;
+        let target = finite3("target", target)?;
+        let direction = target - eye;
+        if !direction.is_finite() {
+            return Err(Error::NotFinite { param: "target" });
+        }
+        if direction.normalize_or_zero() == Vec3::ZERO {
+            return Err(Error::Invalid {
+                param: "target",
+                reason: "must differ from eye (no view direction)",
+            });
+        }
+        Frame::look(eye, direction, up)
+    }
+
     /// A frame from a basis built elsewhere (for example [`camera_basis_as_on_slide`]).
     pub fn from_basis(position: Vec3, basis: Basis) -> Result<Frame> {
         Ok(Frame {
@@ -108,5 +131,56 @@ impl Frame {
     /// A world-space point in camera space: B^T (x - p).
     pub fn point_to_camera(&self, x: Vec3) -> Vec3 {
         self.basis.to_local(x - self.position)
+    }
+
+    // ANCHOR: world_to_camera
+    /// The view matrix, world to camera space: the inverse of x_world = B x_cam + p,
+    /// i.e. x_cam = B^T (x_world - p). Row by row:
+    ///
+    /// ```text
+    /// | u_x u_y u_z  -u.p |
+    /// | v_x v_y v_z  -v.p |
+    /// | w_x w_y w_z  -w.p |
+    /// |  0   0   0     1  |
+    /// ```
+    ///
+    /// B^T undoes B because B is orthonormal (Lecture 4, "Coordinate System Change");
+    /// this is the matrix of gluLookAt and of The Ray Tracer Challenge's
+    /// `view_transform` (whose u and v rows are not normalised, so they differ from
+    /// these by a factor when up is not perpendicular to the view direction).
+    ///
+    /// Fails, naming `position`, only when a product u.p overflows f32.
+    pub fn world_to_camera(&self) -> Result<Transform> {
+        let b = self.basis;
+        let (u, v, w, p) = (b.u(), b.v(), b.w(), self.position);
+        Transform::from_matrix(from_rows([
+            [u.x, u.y, u.z, -u.dot(p)],
+            [v.x, v.y, v.z, -v.dot(p)],
+            [w.x, w.y, w.z, -w.dot(p)],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
+        .map_err(|_| Error::NotFinite { param: "position" })
+    }
+    // ANCHOR_END: world_to_camera
+
+    /// Camera to world space, x_world = B x_cam + p: the columns are u, v, w and p.
+    ///
+    /// ```text
+    /// | u_x v_x w_x p_x |
+    /// | u_y v_y w_y p_y |
+    /// | u_z v_z w_z p_z |
+    /// |  0   0   0   1  |
+    /// ```
+    ///
+    /// The inverse of [`Frame::world_to_camera`]; always finite, so it cannot fail.
+    pub fn camera_to_world(&self) -> Transform {
+        let b = self.basis;
+        let (u, v, w, p) = (b.u(), b.v(), b.w(), self.position);
+        Transform::from_finite_matrix(from_rows([
+            [u.x, v.x, w.x, p.x],
+            [u.y, v.y, w.y, p.y],
+            [u.z, v.z, w.z, p.z],
+            [0.0, 0.0, 0.0, 1.0],
+        ]))
     }
 }

@@ -4,7 +4,7 @@
 use glam::{Vec2, Vec3};
 
 use super::{Film, Frame};
-use crate::error::{Result, positive};
+use crate::error::{Error, Result, finite, positive};
 use crate::ray::Ray;
 
 /// A pinhole camera: eye at the camera origin, screen on the plane z = -s, its
@@ -31,6 +31,52 @@ impl PinholeCamera {
             frame,
         })
     }
+
+    // ANCHOR: look_at
+    /// A `width` x `height` pinhole camera at `eye` looking at `target`, `up` towards
+    /// the top of the image, with a vertical field of view of `vfov_degrees`.
+    ///
+    /// The screen sits at distance s = 1 (as in The Ray Tracer Challenge and in
+    /// Shirley's Ray Tracing in One Weekend), so its half-height is h = tan(vfov/2)
+    /// and its half-width h * width/height (square pixels): the film spans
+    /// [-h w/H, h w/H] x [-h, h], and [`Film::pixel_size`] is 2h/height both ways.
+    ///
+    /// The field of view is vertical. A course whose field of view spans the longer
+    /// side (The Ray Tracer Challenge) converts for a wide image with
+    /// vfov = 2 atan(tan(fov/2) height/width).
+    ///
+    /// Errors name the parameter at fault: `eye`, `target`, `up` (see
+    /// [`Frame::look_at`]), `vfov_degrees` (not finite, or outside 0 < vfov < 180),
+    /// `width` and `height` (0 or above [`crate::camera::MAX_RESOLUTION`]).
+    pub fn look_at(
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        vfov_degrees: f32,
+        width: u32,
+        height: u32,
+    ) -> Result<PinholeCamera> {
+        let frame = Frame::look_at(eye, target, up)?;
+        let vfov = positive("vfov_degrees", finite("vfov_degrees", vfov_degrees)?)?;
+        // tan in f64, rounded once: below 180 degrees the half angle stays below pi/2.
+        let half_height = (f64::from(vfov).to_radians() / 2.0).tan() as f32;
+        if vfov >= 180.0 || !(half_height.is_finite() && half_height > 0.0) {
+            return Err(Error::Invalid {
+                param: "vfov_degrees",
+                reason: "must be below 180 degrees",
+            });
+        }
+        let aspect = width as f32 / height.max(1) as f32;
+        let half_width = half_height * aspect;
+        let film = Film::new(
+            width,
+            height,
+            (-half_width, half_width),
+            (-half_height, half_height),
+        )?;
+        PinholeCamera::new(film, 1.0, frame)
+    }
+    // ANCHOR_END: look_at
 
     /// The screen rectangle and resolution.
     pub fn film(&self) -> &Film {

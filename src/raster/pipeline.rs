@@ -102,15 +102,11 @@ impl Pipeline {
 /// | w_x w_y w_z  -w.p |
 /// |  0   0   0     1  |
 /// ```
+///
+/// The matrix belongs to the camera, so the frame builds it
+/// ([`Frame::world_to_camera`]); the pipeline only asks for it.
 pub fn view(frame: &Frame) -> Result<Transform> {
-    let b = frame.basis();
-    let (u, v, w, p) = (b.u(), b.v(), b.w(), frame.position());
-    Transform::from_matrix(from_rows([
-        [u.x, u.y, u.z, -u.dot(p)],
-        [v.x, v.y, v.z, -v.dot(p)],
-        [w.x, w.y, w.z, -w.dot(p)],
-        [0.0, 0.0, 0.0, 1.0],
-    ]))
+    frame.world_to_camera()
 }
 // ANCHOR_END: view
 

@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use crate::error::{Error, Result, finite3};
 use crate::ray::Ray;
-use crate::shapes::{Hit, in_open_range};
+use crate::shapes::{Crossings, Hit, in_open_range};
 
 /// The box of points with `min <= p <= max` on every axis (a closed set).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -195,6 +195,34 @@ impl Aabb {
         Some(Hit::new(ray, t, point, normal))
     }
     // ANCHOR_END: box_hit
+
+    /// Both crossings of the ray's line with the box surface, entry and exit: the
+    /// slab interval [t0, t1] over the whole line (equal where the ray touches an edge
+    /// or a corner).
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        self.span(ray, f32::NEG_INFINITY, f32::INFINITY, 1.0)
+            .map_or(Crossings::NONE, |s| Crossings::two(s.t0, s.t1))
+    }
+
+    /// The outward unit normal of the face nearest `p`. On each axis i the distance
+    /// from p to the nearer of the two faces is h_i - |p_i - c_i| (c the centre, h the
+    /// half size); the axis with the smallest wins, ties to the first (x, then y, then
+    /// z, as The Ray Tracer Challenge's cube at its edges and corners), and the normal
+    /// is +-e_i on the side of the centre p lies (+ when p_i = c_i).
+    pub fn normal_at(&self, p: Vec3) -> Vec3 {
+        let (c, h) = (self.centre(), 0.5 * (self.max - self.min));
+        let offset = p - c;
+        let gap = h - offset.abs();
+        let mut axis = 0;
+        for i in 1..3 {
+            if gap[i] < gap[axis] {
+                axis = i;
+            }
+        }
+        let mut n = Vec3::ZERO;
+        n[axis] = if offset[axis] < 0.0 { -1.0 } else { 1.0 };
+        n
+    }
 }
 
 /// `t` moved away from the box by the factor `widen >= 1`: multiplied if positive,

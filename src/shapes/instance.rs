@@ -12,7 +12,7 @@ use glam::{Mat4, Vec3};
 use crate::error::{Error, Result};
 use crate::ray::Ray;
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Aabb, Hit, Shape};
+use crate::shapes::{Aabb, Crossings, Hit, Shape};
 use crate::transform::Transform;
 
 /// The relative margin around an instance's world box: 16 gamma(3), about 3e-6.
@@ -119,4 +119,30 @@ impl Instance {
         Some(Hit::new(ray, t, point, normal))
     }
     // ANCHOR_END: instance_hit
+
+    /// Every crossing of the world ray's line, ascending, `t` measured along the world
+    /// ray: the shape's crossings of the object-space ray o' = M^-1 o, d' = M^-1 d / s
+    /// (s = |M^-1 d|), each divided by s, as in [`Instance::hit`].
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        let origin = self.to_object.point(ray.origin());
+        let direction = self.to_object.vector(ray.direction());
+        let s = direction.length();
+        let unit = direction.normalize_or_zero();
+        if !origin.is_finite() || unit == Vec3::ZERO || !(s.is_finite() && s > 0.0) {
+            return Crossings::NONE;
+        }
+        let object_ray = Ray::from_checked(origin, unit);
+        self.shape.crossings(&object_ray).map(|t| t / s)
+    }
+
+    /// The outward unit normal at the world point `p`: the shape's normal at the
+    /// object point M^-1 p, taken back by the inverse transpose (M^-1)^T and normalised
+    /// (The Ray Tracer Challenge, ch. 6, "Transforming Normals"); the zero vector
+    /// where the shape has none.
+    pub fn normal_at(&self, p: Vec3) -> Vec3 {
+        let local = self.shape.normal_at(self.to_object.point(p));
+        self.normal_matrix
+            .transform_vector3(local)
+            .normalize_or_zero()
+    }
 }

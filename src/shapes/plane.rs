@@ -4,7 +4,7 @@ use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
 use crate::ray::Ray;
-use crate::shapes::{Hit, in_open_range};
+use crate::shapes::{Crossings, Hit, in_open_range};
 
 /// The infinite plane through `point` with unit `normal`; the normal's side is the
 /// front.
@@ -57,4 +57,15 @@ impl Plane {
         Some(Hit::new(ray, t, ray.at(t), self.normal))
     }
     // ANCHOR_END: plane_hit
+
+    /// The crossing of the ray's line, [`Plane::t`]: one, or none for a ray parallel
+    /// to the plane (in it or not).
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        self.t(ray).map_or(Crossings::NONE, Crossings::one)
+    }
+
+    /// The unit normal n, the same at every point `_p` of the plane.
+    pub fn normal_at(&self, _p: Vec3) -> Vec3 {
+        self.normal
+    }
 }

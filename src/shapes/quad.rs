@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
 use crate::ray::Ray;
-use crate::shapes::{Aabb, Hit, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
 
 /// The parallelogram with corner `corner` and edges `a`, `b`; its normal is
 /// (a x b)/|a x b|.
@@ -90,4 +90,16 @@ impl Quad {
         inside.then(|| Hit::new(ray, t, point, self.normal))
     }
     // ANCHOR_END: quad_hit
+
+    /// The crossing of the ray's line inside the parallelogram, if any:
+    /// [`Quad::hit`] over the whole line, -inf < t < inf.
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        self.hit(ray, f32::NEG_INFINITY, f32::INFINITY)
+            .map_or(Crossings::NONE, |h| Crossings::one(h.t))
+    }
+
+    /// The unit normal (a x b)/|a x b|, the same at every point `_p`.
+    pub fn normal_at(&self, _p: Vec3) -> Vec3 {
+        self.normal
+    }
 }

@@ -14,9 +14,9 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::error::{Error, Result, positive};
+use crate::error::{Error, Result, positive, unit};
 use crate::ray::Ray;
-use crate::shapes::{Hit, in_open_range};
+use crate::shapes::{Crossings, Hit, in_open_range};
 
 /// Largest asymmetry |Q_ij - Q_ji| accepted, relative to the largest |Q_ij|: a few
 /// f32 roundings, so that a matrix computed as M^-T Q M^-1 still passes.
@@ -137,6 +137,35 @@ impl Quadric {
         Quadric::new(Mat4::from_diagonal(Vec4::new(1.0, 1.0, -s2, 0.0)))
     }
 
+    // ANCHOR: along_axis
+    /// The infinite circular cylinder of radius `radius` about the line through the
+    /// origin along `axis` (normalised here to a): the points whose distance from the
+    /// axis, |x|^2 - (a.x)^2, squared, is r^2. So Q's upper-left 3x3 block is
+    /// I - a a^T and Q_33 = -r^2; `cylinder_along(Vec3::Z, r)` is [`Quadric::cylinder`].
+    /// A cylinder elsewhere is an [`crate::shapes::Instance`] of this one, translated.
+    ///
+    /// The Ray Tracer Challenge's cylinder (ch. 13) is `cylinder_along(Vec3::Y, 1.0)`,
+    /// without its caps. Errors name `axis` (zero or not finite) and `radius`.
+    pub fn cylinder_along(axis: Vec3, radius: f32) -> Result<Quadric> {
+        let a = unit("axis", axis)?;
+        let r2 = positive("radius", positive("radius", radius)? * radius)?;
+        Quadric::new(along(a, 0.0, -r2))
+    }
+
+    /// The infinite double cone about the line through the origin along `axis`
+    /// (normalised to a), apex at the origin, radius `slope` times the height along a:
+    /// |x|^2 - (a.x)^2 = s^2 (a.x)^2, so Q's upper-left block is I - a a^T - s^2 a a^T
+    /// and Q_33 = 0; `cone_along(Vec3::Z, s)` is [`Quadric::cone`].
+    ///
+    /// The Ray Tracer Challenge's cone (ch. 13) is `cone_along(Vec3::Y, 1.0)`, without
+    /// its caps. Errors name `axis` and `slope`.
+    pub fn cone_along(axis: Vec3, slope: f32) -> Result<Quadric> {
+        let a = unit("axis", axis)?;
+        let s2 = positive("slope", positive("slope", slope)? * slope)?;
+        Quadric::new(along(a, s2, 0.0))
+    }
+    // ANCHOR_END: along_axis
+
     /// The paraboloid z = x^2 + y^2, a bowl opening towards +Z; x^T Q x = x^2 + y^2 - z
     /// with Q_00 = Q_11 = 1 and Q_23 = Q_32 = -1/2 (the linear term -z w is split
     /// between the two symmetric entries).
@@ -242,6 +271,36 @@ impl Quadric {
         Some(Hit::new(ray, t, point, normal))
     }
     // ANCHOR_END: quadric_hit
+
+    /// Every crossing of the ray's line, ascending, from [`Quadric::roots_stable`]:
+    /// two, one (a ray parallel to a cone's generator or a paraboloid's axis), or none.
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        self.roots_stable(ray).into()
+    }
+
+    /// The unit normal at the surface point `p`: the normalised gradient, the xyz part
+    /// of 2 Q (p, 1), pointing to where x^T Q x > 0; the zero vector where the
+    /// gradient vanishes (a cone's apex).
+    pub fn normal_at(&self, p: Vec3) -> Vec3 {
+        self.gradient(p).normalize_or_zero()
+    }
+}
+
+/// The symmetric matrix with upper-left block (delta_ij - a_i a_j) - k a_i a_j, zero
+/// linear part and Q_33 = `w`: a cylinder (k = 0) or cone (k = s^2) about the unit
+/// axis `a`. Each entry is a product a_i a_j rounded once, so Q is exactly symmetric,
+/// and for a = e_z the entries are exactly those of diag(1, 1, -k, w).
+fn along(a: Vec3, k: f32, w: f32) -> Mat4 {
+    let mut m = [[0.0_f32; 4]; 4];
+    for (i, row) in m.iter_mut().enumerate().take(3) {
+        for (j, entry) in row.iter_mut().enumerate().take(3) {
+            let delta = if i == j { 1.0 } else { 0.0 };
+            let aa = a[i] * a[j];
+            *entry = (delta - aa) - k * aa;
+        }
+    }
+    m[3][3] = w;
+    Mat4::from_cols_array_2d(&m)
 }
 
 /// a b - c d with one rounding error instead of two: the product c d is rounded, its

@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::error::{Result, finite3, positive};
 use crate::ray::Ray;
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Aabb, Hit, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,6 +111,21 @@ impl Sphere {
         Some(Hit::new(ray, t, point, normal))
     }
     // ANCHOR_END: sphere_hit
+
+    /// Both crossings of the ray's line, ascending, from [`Sphere::roots_stable`]:
+    /// entry and exit, negative behind the origin, equal for a tangent ray.
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        match self.roots_stable(ray) {
+            Some((t0, t1)) => Crossings::two(t0, t1),
+            None => Crossings::NONE,
+        }
+    }
+
+    /// The outward unit normal at `p`: (p - c) / r, normalised (p on the surface makes
+    /// it unit already); the zero vector at the centre.
+    pub fn normal_at(&self, p: Vec3) -> Vec3 {
+        ((p - self.centre) / self.radius).normalize_or_zero()
+    }
 }
 
 /// `(t0, t1)` in ascending order, or `None` if either overflowed or is NaN.

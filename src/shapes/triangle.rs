@@ -5,7 +5,7 @@ use glam::{DVec3, Vec3};
 
 use crate::error::{Error, Result, finite3};
 use crate::ray::Ray;
-use crate::shapes::{Aabb, Hit, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
 
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
 /// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
@@ -141,6 +141,21 @@ impl Triangle {
         Some(Hit::new(ray, t, point, self.normal()))
     }
     // ANCHOR_END: triangle_hit
+
+    /// The crossing of the ray's line with the triangle, if any:
+    /// [`Triangle::watertight`] over the whole line, -inf < t < inf.
+    pub fn crossings(&self, ray: &Ray) -> Crossings {
+        self.watertight(ray, f32::NEG_INFINITY, f32::INFINITY)
+            .map_or(Crossings::NONE, |(t, ..)| Crossings::one(t))
+    }
+
+    /// The unit normal normalize(e1 x e2), e1 = v1 - v0, e2 = v2 - v0, the same at
+    /// every point `_p` (see [`Triangle::normal`]). A left-handed course such as The
+    /// Ray Tracer Challenge writes e2 x e1: list its corners as v0, v2, v1 here to keep
+    /// its normal.
+    pub fn normal_at(&self, _p: Vec3) -> Vec3 {
+        self.normal()
+    }
 }
 
 /// The axis indices (kx, ky, kz) with kz the largest |d| component, kx and ky the next

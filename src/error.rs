@@ -61,6 +61,14 @@ pub enum Error {
         param: &'static str,
         reason: &'static str,
     },
+    /// A parameter asks for more than the machine can give: `needed` units where
+    /// `limit` are allowed (`unit` is "bytes", "threads", ...).
+    TooMuch {
+        param: &'static str,
+        needed: u64,
+        limit: u64,
+        unit: &'static str,
+    },
     /// An OBJ file could not be turned into a mesh; `line` (1-based) when known.
     Obj {
         path: String,
@@ -86,7 +94,8 @@ impl Error {
             | Error::NotSymmetric { param, .. }
             | Error::Singular { param }
             | Error::TooFew { param, .. }
-            | Error::Invalid { param, .. } => param,
+            | Error::Invalid { param, .. }
+            | Error::TooMuch { param, .. } => param,
             Error::UpParallelToDirection => "up",
             Error::NonFinitePixel { .. } => "pixel",
             Error::Io { path, .. } | Error::Obj { path, .. } => path,
@@ -140,6 +149,26 @@ impl fmt::Display for Error {
                 write!(f, "{param} must be at least {min} (got {value})")
             }
             Error::Invalid { param, reason } => write!(f, "{param} {reason}"),
+            Error::TooMuch {
+                param,
+                needed,
+                limit,
+                unit: "bytes",
+            } => write!(
+                f,
+                "{param} would need {} of memory, more than the {} this machine allows",
+                bytes(*needed),
+                bytes(*limit)
+            ),
+            Error::TooMuch {
+                param,
+                needed,
+                limit,
+                unit,
+            } => write!(
+                f,
+                "{param} asks for {needed} {unit}, more than the limit of {limit}"
+            ),
             Error::VertexIndex {
                 triangle,
                 index,
@@ -163,6 +192,17 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// A byte count in the unit a person reads: "3.2 GiB", "512 MiB".
+fn bytes(n: u64) -> String {
+    const MIB: f64 = 1024.0 * 1024.0;
+    let n = n as f64;
+    if n >= 1024.0 * MIB {
+        format!("{:.1} GiB", n / (1024.0 * MIB))
+    } else {
+        format!("{:.0} MiB", (n / MIB).ceil())
+    }
+}
 
 /// `value` itself if it is finite, else [`Error::NotFinite`] naming `param`.
 pub fn finite(param: &'static str, value: f32) -> Result<f32> {

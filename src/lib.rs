@@ -12,8 +12,8 @@
 //! other):
 //!
 //! 1. `error`: the one typed error, naming the parameter at fault;
-//! 2. `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`:
-//!    the maths of Lectures 3 and 4, and writing files;
+//! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`:
+//!    what the machine can give, the maths of Lectures 3 and 4, writing files;
 //! 3. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
 //! 4. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
 //!    image in memory;
@@ -28,6 +28,7 @@
 //! 11's measurements and the exercises. Nothing in the renderer imports it.
 
 pub mod basis;
+pub mod budget;
 pub mod bvh;
 pub mod camera;
 pub mod course;

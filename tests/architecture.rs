@@ -12,6 +12,7 @@ use std::path::Path;
 const LAYERS: &[&[&str]] = &[
     &["error"],
     &[
+        "budget",
         "transform",
         "ray",
         "basis",

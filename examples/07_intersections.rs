@@ -59,20 +59,6 @@ pub fn cases() -> Result<Vec<Case>> {
 }
 // ANCHOR_END: cases
 
-// ANCHOR: crossings
-/// Every crossing of the ray's whole line with the surface, ascending (t < 0 included):
-/// each one is the nearest hit beyond the one before, so `hit` finds them all.
-pub fn crossings(shape: &Shape, ray: &Ray) -> Vec<f32> {
-    let mut ts = vec![];
-    let mut t_min = f32::NEG_INFINITY;
-    while let Some(hit) = shape.hit(ray, t_min, f32::INFINITY) {
-        ts.push(hit.t);
-        t_min = hit.t;
-    }
-    ts
-}
-// ANCHOR_END: crossings
-
 /// The lesson's table: each case's crossings, then its nearest hit with t > 0.
 pub fn numbers(cases: &[Case]) -> String {
     let mut table = Table::new(
@@ -89,7 +75,7 @@ pub fn numbers(cases: &[Case]) -> String {
     );
     for Case { name, shape, ray } in cases {
         let mut row = vec![name.to_string(), vec3(ray.origin(), 2)];
-        row.extend([vec3(ray.direction(), 4), nums(&crossings(shape, ray), 4)]);
+        row.extend([vec3(ray.direction(), 4), nums(&shape.crossings(ray), 4)]);
         row.extend(match shape.hit(ray, 0.0, f32::INFINITY) {
             Some(h) => [vec3(h.point, 4), vec3(h.normal, 4), face(h.front_face)],
             None => ["miss", "-", "-"].map(String::from),
@@ -120,13 +106,13 @@ pub fn figure(case: &Case) -> Result<Diagram> {
     ));
     let names = ("x", if in_xy { "y" } else { "z" });
     d.axes((lo.x, hi.x), (lo.y, hi.y), 1.0, names);
-    // The surface's trace in the plane, found by the same `crossings`: a dot wherever a
+    // The surface's trace in the plane, found by the same `Shape::crossings`: a dot wherever a
     // grid of rays along x and along the plane's second axis crosses it.
     for i in -400..=400 {
         let s = i as f32 / 100.0;
         for (o, dir) in [(up * s, Vec3::X), (Vec3::X * s, up)] {
             let probe = Ray::new(o, dir)?;
-            for t in crossings(shape, &probe) {
+            for &t in shape.crossings(&probe).iter() {
                 let q = view(probe.at(t));
                 if q.clamp(lo, hi) == q {
                     d.dot(q, 1.5, palette::PLANE);
@@ -134,7 +120,7 @@ pub fn figure(case: &Case) -> Result<Diagram> {
             }
         }
     }
-    let ts = crossings(shape, ray);
+    let ts = shape.crossings(ray);
     let far = ts.iter().copied().fold(1.0f32, f32::max) + 1.5;
     d.arrow(view(ray.origin()), view(ray.at(far)), palette::RAY, 2.0);
     d.dot(view(ray.origin()), 4.0, palette::RAY);

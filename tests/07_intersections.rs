@@ -737,7 +737,7 @@ fn lesson_crossings_lie_on_their_surfaces() {
     // Each crossing the lesson lists, put back into r(t), is on the surface: checked
     // with each shape's own implicit equation, written here independently.
     for case in lesson::cases().unwrap() {
-        for t in lesson::crossings(&case.shape, &case.ray) {
+        for &t in case.shape.crossings(&case.ray).iter() {
             let p = case.ray.at(t);
             let residual = match case.name {
                 "sphere" => p.length() - 1.0,
@@ -782,7 +782,7 @@ fn lesson_crossings_are_each_shapes_own_roots() {
             },
             _ => panic!("{}: no root finder listed", case.name),
         };
-        assert_eq!(lesson::crossings(shape, ray), roots, "{}", case.name);
+        assert_eq!(shape.crossings(ray).as_slice(), roots, "{}", case.name);
         assert!(
             !roots.is_empty(),
             "{}: the lesson's ray crosses its shape",

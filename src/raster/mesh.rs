@@ -173,7 +173,10 @@ impl Mesh {
             .iter()
             .map(|t| {
                 let [a, b, c] = t.map(|i| self.positions[i as usize]);
-                Ok(Object::diffuse(Shape::Triangle(Triangle::new(a, b, c)?), colour))
+                Ok(Object::diffuse(
+                    Shape::Triangle(Triangle::new(a, b, c)?),
+                    colour,
+                ))
             })
             .collect()
     }

@@ -10,19 +10,23 @@
 //! threads.
 
 pub mod clip;
+pub mod compare;
 pub mod mesh;
 pub mod pipeline;
 pub mod rasterize;
 pub mod shade;
 pub mod shadow_map;
+pub mod tessellate;
 pub mod vertex;
 
 pub use clip::clip_triangle;
+pub use compare::{Agreement, Reference, TOLERANCE, agreement, difference, reference};
 pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
 pub use pipeline::{DepthRange, Pipeline};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
 pub use shade::{Shading, Viewer, shade};
 pub use shadow_map::{ShadowMap, Shadows};
+pub use tessellate::{FLOOR_DEPTH, FLOOR_SIZE, tessellate};
 pub use vertex::{ClipVertex, Varyings};
 
 use std::ops::Range;
@@ -34,7 +38,7 @@ use crate::camera::Camera;
 use crate::error::{Result, finite3};
 use crate::framebuffer::Framebuffer;
 use crate::render::in_pool;
-use crate::scene::PointLight;
+use crate::scene::{Object, PointLight};
 use crate::transform::Transform;
 
 /// Rows per band of the parallel fragment stage.
@@ -60,6 +64,16 @@ impl Instance {
             colour,
         }
     }
+
+    /// The mesh as the ray caster sees it, placed in the world: one triangle
+    /// primitive per triangle, coloured [`Instance::colour`].
+    pub fn objects(&self) -> Result<Vec<Object>> {
+        let mut world = self.mesh.clone();
+        for p in &mut world.positions {
+            *p = self.model.point(*p);
+        }
+        world.objects(self.colour)
+    }
 }
 
 /// Everything about a rasterization that is not the scene or the camera.
@@ -75,6 +89,17 @@ pub struct Settings {
     pub background: Vec3,
     /// A shadow map to build and use, or none: every surface facing the light is lit.
     pub shadows: Option<Shadows>,
+}
+
+impl Settings {
+    /// These settings with `shading` and `shadows` instead.
+    pub fn with(self, shading: Shading, shadows: Option<Shadows>) -> Settings {
+        Settings {
+            shading,
+            shadows,
+            ..self
+        }
+    }
 }
 
 impl Default for Settings {

@@ -33,6 +33,13 @@ pub struct Shadows {
     pub radius: f32,
 }
 
+impl Shadows {
+    /// The same map with another bias.
+    pub fn with_bias(self, bias: f32) -> Shadows {
+        Shadows { bias, ..self }
+    }
+}
+
 /// Distances from the light to the nearest surface, one per texel, and the light's
 /// camera that maps world points to texels.
 #[derive(Clone, Debug, PartialEq)]

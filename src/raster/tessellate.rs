@@ -1,0 +1,42 @@
+//! Tessellation: a scene of analytic primitives (lesson 08's) as triangle meshes,
+//! the only thing a rasterizer draws.
+
+use super::{DepthRange, Instance, Mesh};
+use crate::error::{Error, Result};
+use crate::scene::Scene;
+use crate::shapes::Shape;
+
+/// Side of the square that stands in for an infinite floor.
+pub const FLOOR_SIZE: f32 = 1e4;
+
+/// A rasterization needs a far plane; this one lies beyond the far edge of a floor
+/// of [`FLOOR_SIZE`] seen from near its centre.
+pub const FLOOR_DEPTH: DepthRange = DepthRange {
+    near: 0.1,
+    far: 2e4,
+};
+
+// ANCHOR: tessellate
+/// The scene as triangle meshes, object by object in the same order: a sphere
+/// becomes a uv sphere of `segments` x `segments / 2`, a box 12 triangles, a plane
+/// a square of side [`FLOOR_SIZE`], a triangle itself.
+pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Instance>> {
+    let mut instances = Vec::new();
+    for object in scene.objects() {
+        let mesh = match &object.shape {
+            Shape::Sphere(s) => Mesh::uv_sphere(s.centre(), s.radius(), segments, segments / 2)?,
+            Shape::Aabb(b) => Mesh::cuboid(b.min(), b.max())?,
+            Shape::Plane(p) => Mesh::floor(p.point(), FLOOR_SIZE)?,
+            Shape::Triangle(t) => Mesh::new(t.vertices().to_vec(), vec![[0, 1, 2]])?,
+            _ => {
+                return Err(Error::Invalid {
+                    param: "scene",
+                    reason: "may hold only spheres, boxes, planes and triangles to be tessellated",
+                });
+            }
+        };
+        instances.push(Instance::new(mesh, object.colour()));
+    }
+    Ok(instances)
+}
+// ANCHOR_END: tessellate

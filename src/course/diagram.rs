@@ -244,11 +244,13 @@ impl Diagram {
         self.text(Vec2::new(0.0, y.1), names.1, palette::INK, Place::Right);
         let tick = 4.0 / self.scale;
         let ticks = |lo: f32, hi: f32| {
-            let first = (lo / step).ceil() as i32;
-            let last = (hi / step).floor() as i32;
+            let step = tick_step(step, lo, hi);
+            let first = (lo / step).ceil() as i64;
+            let last = (hi / step).floor() as i64;
             (first..=last)
                 .filter(|i| *i != 0)
                 .map(move |i| i as f32 * step)
+                .take(MAX_TICKS)
         };
         for t in ticks(x.0, x.1 - step * 0.5) {
             self.line(Vec2::new(t, -tick), Vec2::new(t, tick), palette::INK, 1.0);
@@ -335,6 +337,34 @@ impl Diagram {
     /// The RGBA bytes of the canvas (for tests).
     pub fn rgba(&self) -> Vec<u8> {
         self.pixmap.clone().take_demultiplied()
+    }
+}
+
+/// The most ticks an axis gets before [`tick_step`] widens the step.
+const MAX_TICKS: usize = 20;
+
+/// The tick step for an axis over [lo, hi]: `wanted` while that gives between one
+/// and [`MAX_TICKS`] ticks, else a "nice" step (1, 2 or 5 times a power of ten) that
+/// gives about ten, whatever the range (a range of 1e7 units or of 1e-30).
+fn tick_step(wanted: f32, lo: f32, hi: f32) -> f32 {
+    let span = hi - lo;
+    if !span.is_finite() || span <= 0.0 {
+        return f32::INFINITY;
+    }
+    if wanted > 0.0 && (1.0..=MAX_TICKS as f32).contains(&(span / wanted)) {
+        return wanted;
+    }
+    let rough = span / 10.0;
+    let power = 10f32.powf(rough.log10().floor());
+    let nice = [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * power)
+        .find(|s| *s >= rough)
+        .unwrap_or(10.0 * power);
+    if nice > 0.0 && nice.is_finite() {
+        nice
+    } else {
+        f32::INFINITY
     }
 }
 
@@ -585,6 +615,51 @@ impl Diagram {
                 self.text(o, &format!("pixel ({x},{y})"), palette::INK, Place::Above);
                 self.text(o, &at, palette::HIT, Place::Below);
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tick_step;
+
+    #[test]
+    fn the_asked_step_stays_while_it_gives_few_ticks() {
+        assert_eq!(tick_step(1.0, -8.0, 8.0), 1.0);
+        assert_eq!(tick_step(0.5, -2.0, 2.0), 0.5);
+    }
+
+    #[test]
+    fn huge_and_tiny_ranges_get_about_ten_nice_ticks() {
+        for (wanted, lo, hi) in [
+            (1.0, -1e7, 1e7),
+            (1.0, 0.0, 3e38),
+            (1.0, 1e-30, 2e-30),
+            (0.0, 1e-30, 2e-30),
+            (1.0, -5.0, 1e5),
+        ] {
+            let step = tick_step(wanted, lo, hi);
+            let count = (hi - lo) / step;
+            assert!((4.0..=20.0).contains(&count), "{lo}..{hi}: step {step}");
+            let mantissa = step / 10f32.powf(step.log10().floor());
+            assert!(
+                [1.0, 2.0, 5.0, 10.0]
+                    .iter()
+                    .any(|m| (mantissa - m).abs() < 1e-3),
+                "{step} is not 1, 2 or 5 times a power of ten"
+            );
+        }
+    }
+
+    #[test]
+    fn an_empty_or_broken_range_gets_no_ticks() {
+        for (lo, hi) in [
+            (1.0, 1.0),
+            (2.0, 1.0),
+            (0.0, f32::INFINITY),
+            (f32::NAN, 1.0),
+        ] {
+            assert_eq!(tick_step(1.0, lo, hi), f32::INFINITY, "{lo}..{hi}");
         }
     }
 }

@@ -122,7 +122,7 @@ fn main() -> ExitCode {
         angle,
         point,
         output,
-    } = Args::parse();
+    } = lesson::parse::<Args>();
     lesson::run(|| {
         lesson::print(&numbers(angle, point)?);
         output.diagram("01_transform_order.png", &order_figure(angle)?)

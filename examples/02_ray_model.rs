@@ -102,7 +102,7 @@ pub fn ray_figure(ray: &Ray) -> Result<Diagram> {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let ray = Ray::new(args.origin, args.direction)?;
         lesson::print(&numbers(&ray));

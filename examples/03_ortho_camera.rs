@@ -146,7 +146,7 @@ pub fn my_origin_image(f: &Film) -> Result<Framebuffer> {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let (x, y) = ((args.x_min, args.x_max), (args.y_min, args.y_max));
         let cam = camera(args.width, args.height, x, y)?;

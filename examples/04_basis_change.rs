@@ -126,7 +126,7 @@ pub fn bases_figure(degrees: f32, b: Vec3) -> Result<Diagram> {
 }
 
 fn main() -> ExitCode {
-    let Args { angle, b, output } = Args::parse();
+    let Args { angle, b, output } = lesson::parse::<Args>();
     lesson::run(|| {
         lesson::print(&numbers(angle, b)?);
         output.diagram("04_two_bases.png", &bases_figure(angle, b)?)

@@ -100,7 +100,7 @@ pub fn top_figure(cam: &OrthoCamera) -> Result<Diagram> {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let (p, d, k) = (args.position, args.direction, args.up);
         let cam = camera(args.width, args.height, p, d, k)?;

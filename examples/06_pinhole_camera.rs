@@ -150,7 +150,7 @@ pub fn side_by_side(cameras: &[Camera; 2]) -> Result<Framebuffer> {
 // ANCHOR_END: side_by_side
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let (s, d, k) = (args.screen_distance, args.direction, args.up);
         let frame = Frame::look(args.position, d, k)?;

@@ -141,7 +141,7 @@ pub fn figure(case: &Case) -> Result<Diagram> {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let cases = cases()?;
         lesson::print(&numbers(&cases));

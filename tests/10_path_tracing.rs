@@ -4,22 +4,27 @@
 #[allow(dead_code)]
 mod lesson;
 
+#[path = "../book/figures/src/lesson10.rs"]
+#[allow(dead_code)]
+mod figures;
+
 use clap::Parser;
 
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
-use render_lessons::camera::{Film, PinholeCamera};
+use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Error;
-use render_lessons::offset::Offset;
-use render_lessons::pathtrace::light;
 use render_lessons::material::{Material, fresnel};
+use render_lessons::offset::Offset;
+use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
+use render_lessons::pathtrace::light;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::pathtrace::{
-    Accumulator, LensCamera, PixelSampling, Rng, Sampling, Settings, SphereSampling,
-    radiance,
+    Accumulator, LensCamera, Passes, PathCamera, PixelSampling, RecordedPath, Rng, Sampling,
+    Settings, SphereSampling, radiance, radiance_observed, record_path,
 };
 use render_lessons::ray::Ray;
 use render_lessons::scene::{Object, Scene};
@@ -45,17 +50,44 @@ fn small_args(extra: &[&str]) -> lesson::Args {
     lesson::Args::parse_from(argv)
 }
 
+/// What `main` does with the flags: the scene, the study, and its images.
+fn render(args: &lesson::Args) -> render_lessons::Result<(Study, Renders)> {
+    let size = (args.width, args.height);
+    let (scene, camera) = lesson::scene(args.scene, size, args.aperture, args.focus)?;
+    let study = Study {
+        settings: Settings {
+            sampling: args.sampling,
+            max_depth: Some(args.max_depth),
+            russian_roulette: !args.no_rr,
+            ..Settings::default()
+        },
+        ladder: ladder(args.spp)?,
+        passes: Passes {
+            pixels: PixelSampling::jittered(args.jitter),
+            seed: args.seed,
+            threads: args.threads,
+        },
+        reference_spp: args.reference_spp,
+    };
+    let mut samples = 0;
+    let renders = study.render(&scene, &camera, |_, pass| {
+        samples += u64::from(pass.added);
+        Ok(())
+    })?;
+    assert_eq!(samples, study.samples(), "the progress bar's total");
+    Ok((study, renders))
+}
+
 #[test]
 fn numbers() {
     let args = small_args(&[]);
-    let renders = lesson::render_all(&args, &indicatif::ProgressBar::hidden()).unwrap();
+    let (study, renders) = render(&args).unwrap();
     assert_eq!(renders.non_finite, 0);
-    insta::assert_snapshot!("numbers", lesson::numbers(&args, &renders).unwrap());
+    insta::assert_snapshot!("numbers", lesson::numbers(args.scene, &study, &renders));
 }
 
 #[test]
 fn the_lesson_refuses_bad_flags_naming_them() {
-    let hidden = indicatif::ProgressBar::hidden();
     let cases: [(&[&str], &str); 5] = [
         (&["--spp", "0"], "spp"),
         (&["--reference-spp", "0"], "reference-spp"),
@@ -64,12 +96,12 @@ fn the_lesson_refuses_bad_flags_naming_them() {
         (&["--jitter", "--spp", "8"], "spp"),
     ];
     for (extra, name) in cases {
-        let err = lesson::render_all(&small_args(extra), &hidden)
-            .err()
-            .unwrap();
+        let err = render(&small_args(extra)).err().unwrap();
         assert_eq!(err.param(), name, "{extra:?}: {err}");
     }
     assert!(lesson::Args::try_parse_from(["x", "--sampling", "best"]).is_err());
+    let nee = lesson::Args::try_parse_from(["x", "--sampling", "nee"]).unwrap();
+    assert_eq!(nee.sampling, Sampling::NextEvent);
 }
 
 #[test]
@@ -82,9 +114,8 @@ fn rr_flags_the_last_one_wins() {
 
 #[test]
 fn the_lesson_is_the_same_with_jitter_on_any_thread_count() {
-    let hidden = indicatif::ProgressBar::hidden();
-    let a = lesson::render_all(&small_args(&["--jitter", "--threads", "1"]), &hidden).unwrap();
-    let b = lesson::render_all(&small_args(&["--jitter", "--threads", "2"]), &hidden).unwrap();
+    let (_, a) = render(&small_args(&["--jitter", "--threads", "1"])).unwrap();
+    let (_, b) = render(&small_args(&["--jitter", "--threads", "2"])).unwrap();
     for ((n, x), (m, y)) in a.ladder.iter().zip(&b.ladder) {
         assert_eq!((n, x), (m, y));
     }
@@ -92,6 +123,14 @@ fn the_lesson_is_the_same_with_jitter_on_any_thread_count() {
         a.ladder.iter().map(|(n, _)| *n).collect::<Vec<_>>(),
         [1, 4, 16]
     );
+}
+
+#[test]
+fn the_ladder_is_powers_of_4_then_spp() {
+    assert_eq!(ladder(64).unwrap(), [1, 4, 16, 64]);
+    assert_eq!(ladder(100).unwrap(), [1, 4, 16, 64, 100]);
+    assert_eq!(ladder(1).unwrap(), [1]);
+    assert_eq!(ladder(0).unwrap_err().param(), "spp");
 }
 
 fn settings(sampling: Sampling, max_depth: Option<u32>, rr: bool) -> Settings {
@@ -809,7 +848,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
     );
     assert_eq!(
         param(Scene::new(vec![], Vec3::splat(f32::INFINITY)).unwrap_err()),
-        "environment"
+        "background"
     );
     assert_eq!(
         param(Material::diffuse(Vec3::splat(1.5)).unwrap_err()),
@@ -843,39 +882,148 @@ fn bad_input_is_an_error_naming_the_parameter() {
 
 // ---------------------------------------------------------------- figures
 
-/// The path figure's recorder draws the same random numbers as the estimator and
-/// follows the same bounces: its radiance is the estimator's sample for the same
-/// pixel, seed and settings.
+/// The path figure's paths are recorded from the estimator itself: a recorded path's
+/// radiance is, bit for bit, the sample `radiance` returns for the same pixel, seed
+/// and settings, the first sample the accumulator adds to that pixel, and recording
+/// leaves the random stream where `radiance` leaves it.
 #[test]
 fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
     let (scene, camera) = cornell(160, 120).unwrap();
-    let s = settings(Sampling::NextEvent, Some(8), true);
-    let mut compared = 0;
-    for y in (0..120).step_by(3) {
-        for x in (0..160).step_by(3) {
-            let path = lesson::record_path(&scene, &camera, &s, 1, (x, y));
-            let mut rng = Rng::for_pixel(1, x, y);
-            let position = Vec2::new(x as f32, y as f32) + rng.next_vec2();
-            let ray = camera.ray(position, rng.next_vec2());
-            let expected = radiance(&scene, ray, &mut rng, &s);
-            let tolerance = 1e-4 * expected.max_element() + 1e-6;
-            assert!(
-                (path.radiance - expected).abs().max_element() <= tolerance,
-                "pixel ({x}, {y}): recorded {} vs estimator {expected}",
-                path.radiance
-            );
-            assert!(!path.vertices.is_empty() || path.escaped.is_some());
-            compared += 1;
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    for s in [
+        settings(Sampling::NextEvent, Some(8), true),
+        Settings::default(),
+    ] {
+        let mut acc = Accumulator::new(&camera, 1);
+        let first = acc
+            .render_pass(&scene, &camera, &s, PixelSampling::Independent, 1, None)
+            .unwrap();
+        let mut compared = 0;
+        for y in (0..120).step_by(3) {
+            for x in (0..160).step_by(3) {
+                let path = record_path(&scene, &camera, &s, 1, (x, y));
+                let mut rng = Rng::for_pixel(1, x, y);
+                let position = Vec2::new(x as f32, y as f32) + rng.next_vec2();
+                let ray = camera.ray(position, rng.next_vec2());
+                assert_eq!(path.eye, ray.origin());
+                let mut watched = rng;
+                let expected = radiance(&scene, ray, &mut rng, &s);
+                let mut recorder = RecordedPath::default();
+                let recorded = radiance_observed(&scene, ray, &mut watched, &s, &mut recorder);
+                assert_eq!(bits(path.radiance), bits(expected), "pixel ({x}, {y})");
+                assert_eq!(bits(recorded), bits(expected), "pixel ({x}, {y})");
+                assert_eq!(watched.next_u32(), rng.next_u32(), "pixel ({x}, {y})");
+                assert_eq!(recorder.vertices, path.vertices);
+                assert_eq!(bits(first.get(x, y).unwrap()), bits(expected));
+                assert!(!path.vertices.is_empty() || path.escaped.is_some());
+                compared += 1;
+            }
+        }
+        assert_eq!(compared, 54 * 40);
+    }
+}
+
+/// What the recorder records: vertices in the box, light samples only at
+/// diffuse vertices and only with a strategy that samples lights.
+#[test]
+fn recorded_paths_lie_on_their_objects_and_sample_lights_at_diffuse_vertices() {
+    let (scene, camera) = cornell(40, 30).unwrap();
+    for sampling in Sampling::ALL {
+        let s = settings(sampling, Some(8), true);
+        let mut light_samples = 0;
+        for (x, y) in [(5, 5), (20, 15), (30, 25), (10, 28), (35, 3)] {
+            let path = record_path(&scene, &camera, &s, 7, (x, y));
+            for v in &path.vertices {
+                let object = &scene.objects()[v.object];
+                // Inside the box: between the side walls, floor and ceiling, in
+                // front of the back wall (up to rounding).
+                let p = v.point;
+                let inside = (1.0 - 1e-3..=99.0 + 1e-3).contains(&p.x)
+                    && (-1e-3..=81.6 + 1e-3).contains(&p.y)
+                    && p.z >= -1e-3;
+                assert!(inside, "{sampling:?} {v:?}");
+                let diffuse = matches!(object.material, Material::Diffuse { .. });
+                let lights = matches!(sampling, Sampling::NextEvent | Sampling::Mis);
+                if v.light_sample.is_some() {
+                    assert!(diffuse && lights, "{sampling:?} {v:?}");
+                    light_samples += 1;
+                }
+            }
+        }
+        let lights = matches!(sampling, Sampling::NextEvent | Sampling::Mis);
+        assert_eq!(light_samples > 0, lights, "{sampling:?}");
+    }
+}
+
+/// The path tracer renders through the cameras of Lecture 4 too: the grey furnace
+/// through an orthographic camera is 0.5 wherever the pixel sees only the sphere and
+/// 1 (the environment) wherever it sees none of it; at pixel centres its rays are the
+/// camera's own, bit for bit.
+#[test]
+fn the_grey_furnace_renders_through_an_orthographic_camera() {
+    let (scene, _) = grey_furnace(4, 4, Vec3::ZERO).unwrap();
+    let film = Film::new(24, 24, (-1.5, 1.5), (-1.5, 1.5)).unwrap();
+    let frame = Frame::look(3.0 * Vec3::Z, -Vec3::Z, Vec3::Y).unwrap();
+    let camera = Camera::Ortho(OrthoCamera::new(film, frame));
+    let centre = |x: u32, y: u32| Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
+    for (x, y) in [(0, 0), (5, 17), (23, 23), (12, 11)] {
+        assert_eq!(
+            camera.sample_ray(centre(x, y), Vec2::splat(0.3)),
+            camera.ray(x, y)
+        );
+    }
+    let s = settings(Sampling::Cosine, Some(8), false);
+    let mut acc = Accumulator::new(&camera, 3);
+    let image = acc
+        .render_pass(&scene, &camera, &s, PixelSampling::Jittered, 16, Some(2))
+        .unwrap();
+    assert_eq!(acc.non_finite(), 0);
+    let (mut inside, mut outside) = (0, 0);
+    for y in 0..24 {
+        for x in 0..24 {
+            // The pixel's nearest and farthest points from the axis, in world units.
+            let p = (centre(x, y) - Vec2::splat(12.0)) * 0.125;
+            let (near, far) = (p.abs() - Vec2::splat(0.0625), p.abs() + Vec2::splat(0.0625));
+            let value = image.get(x, y).unwrap();
+            if far.length() < 1.0 {
+                assert!(
+                    (value - Vec3::splat(0.5)).abs().max_element() < 1e-6,
+                    "{value}"
+                );
+                inside += 1;
+            } else if near.max(Vec2::ZERO).length() > 1.0 {
+                assert_eq!(value, Vec3::ONE, "({x}, {y})");
+                outside += 1;
+            }
         }
     }
-    assert_eq!(compared, 54 * 40);
+    assert!(
+        inside > 150 && outside > 150,
+        "{inside} inside, {outside} outside"
+    );
+    // The sphere covers pi of the film's 9 square units: the mean is 1 - 0.5 pi / 9.
+    let exact = 1.0 - 0.5 * std::f64::consts::PI / 9.0;
+    assert!(
+        (image.mean() - exact).abs() < 0.01,
+        "{} vs {exact}",
+        image.mean()
+    );
+    // A pinhole `Camera` renders as the lens camera of aperture 0, bit for bit.
+    let pinhole =
+        PinholeCamera::at_origin(Film::new(8, 6, (-1.0, 1.0), (-0.75, 0.75)).unwrap(), 1.0)
+            .unwrap();
+    let (u, pixel) = (Vec2::new(0.2, 0.9), Vec2::new(3.3, 4.7));
+    assert_eq!(
+        Camera::Pinhole(pinhole).sample_ray(pixel, u),
+        LensCamera::pinhole(pinhole).ray(pixel, u)
+    );
 }
 
 #[test]
 fn the_figures_draw_paths_and_samples() {
-    let rgba = lesson::path_figure().unwrap().rgba();
+    let rgba = figures::path_figure().unwrap().rgba();
     assert!(common_blue(&rgba) > 2000, "the paths");
-    let rgba = lesson::hemisphere_figure().unwrap().rgba();
+    let rgba = figures::hemisphere_figure().unwrap().rgba();
     assert!(common_blue(&rgba) > 2000, "the uniform samples");
 }
 

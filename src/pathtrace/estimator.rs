@@ -22,16 +22,17 @@
 use glam::Vec3;
 
 use crate::basis::Basis;
-use crate::pathtrace::light;
 use crate::material::Material;
+use crate::pathtrace::light;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::next_event::{Start, direct_light};
+use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
-use crate::scene::Scene;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
+use crate::scene::Scene;
 use crate::shapes::Hit;
 
 /// How the emission found at the next vertex is weighted, decided by the bounce
@@ -50,6 +51,18 @@ enum Previous {
 // ANCHOR: radiance
 /// One sample of the radiance arriving along `ray`: a path, traced iteratively.
 pub fn radiance(scene: &Scene, ray: Ray, rng: &mut Rng, settings: &Settings) -> Vec3 {
+    radiance_observed(scene, ray, rng, settings, &mut ())
+}
+
+/// [`radiance`], telling `observer` every vertex of the path as it is traced. The
+/// observer only watches: the random numbers and the sample are the same.
+pub fn radiance_observed(
+    scene: &Scene,
+    ray: Ray,
+    rng: &mut Rng,
+    settings: &Settings,
+    observer: &mut impl PathObserver,
+) -> Vec3 {
     let mut sum = Vec3::ZERO;
     let mut beta = Vec3::ONE;
     let (mut ray, mut t_min) = (ray, 0.0);
@@ -58,8 +71,10 @@ pub fn radiance(scene: &Scene, ray: Ray, rng: &mut Rng, settings: &Settings) -> 
     loop {
         let Some((hit, index)) = scene.closest(&ray, t_min, f32::INFINITY) else {
             sum += beta * scene.background();
+            observer.escaped(ray.direction());
             break;
         };
+        observer.vertex(hit.point, index);
         let object = &scene.objects()[index];
         if object.is_emissive() {
             let weight = emission_weight(scene, index, &hit, previous, settings);
@@ -70,7 +85,8 @@ pub fn radiance(scene: &Scene, ray: Ray, rng: &mut Rng, settings: &Settings) -> 
         if settings.max_depth.is_some_and(|m| bounce >= m) || !hit.point.is_finite() {
             break;
         }
-        let Some(next) = scatter(scene, object.material, &ray, &hit, rng, settings) else {
+        let material = object.material;
+        let Some(next) = scatter(scene, material, &ray, &hit, rng, settings, observer) else {
             break;
         };
         sum += beta * next.direct;
@@ -111,12 +127,13 @@ fn scatter(
     hit: &Hit,
     rng: &mut Rng,
     s: &Settings,
+    observer: &mut impl PathObserver,
 ) -> Option<Bounce> {
     let facing = hit.facing();
     match material {
         Material::Diffuse { albedo } => {
             let start = Start::new(hit.point, facing, s.offset);
-            let direct = direct_light(scene, start, facing, albedo, rng, s);
+            let direct = direct_light(scene, start, facing, albedo, rng, s, observer);
             let (direction, weight, pdf) = diffuse_bounce(facing, albedo, rng, s);
             Some(Bounce {
                 direct,

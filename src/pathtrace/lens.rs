@@ -8,7 +8,7 @@
 
 use glam::{Vec2, Vec3};
 
-use crate::camera::{Film, PinholeCamera};
+use crate::camera::{Camera, Film, PinholeCamera};
 use crate::error::{Error, Result, finite, positive};
 use crate::ray::Ray;
 use crate::sampling::uniform_disc;
@@ -85,6 +85,50 @@ impl LensCamera {
     }
     // ANCHOR_END: ray
 }
+
+// ANCHOR: path_camera
+/// A camera the path tracer can render through: a film, and a ray through any point
+/// of a pixel, not only its centre (and through the lens point chosen by `lens`).
+pub trait PathCamera: Sync {
+    /// The film: resolution and screen rectangle.
+    fn film(&self) -> &Film;
+    /// The ray through the continuous pixel position `pixel` (column, row from the
+    /// top), `lens` in the unit square choosing a point of the lens if there is one.
+    fn sample_ray(&self, pixel: Vec2, lens: Vec2) -> Ray;
+}
+
+impl PathCamera for LensCamera {
+    fn film(&self) -> &Film {
+        self.pinhole.film()
+    }
+
+    fn sample_ray(&self, pixel: Vec2, lens: Vec2) -> Ray {
+        self.ray(pixel, lens)
+    }
+}
+
+/// The cameras of Lecture 4: a pinhole is a lens of aperture 0; an orthographic
+/// camera's ray starts at the screen point and runs along the camera's -Z.
+impl PathCamera for Camera {
+    fn film(&self) -> &Film {
+        Camera::film(self)
+    }
+
+    fn sample_ray(&self, pixel: Vec2, lens: Vec2) -> Ray {
+        match self {
+            Camera::Pinhole(c) => LensCamera::pinhole(*c).ray(pixel, lens),
+            Camera::Ortho(c) => {
+                let origin = screen_point(c.film(), pixel).extend(0.0);
+                let frame = c.frame();
+                Ray::from_checked(
+                    frame.point_to_world(origin),
+                    frame.vector_to_world(Vec3::NEG_Z),
+                )
+            }
+        }
+    }
+}
+// ANCHOR_END: path_camera
 
 /// The screen-plane point of a continuous pixel position, the inverse of
 /// [`Film::plane_to_pixel`]; at a pixel centre it is bit for bit

@@ -6,29 +6,38 @@
 //! - [`light`]: choosing points on lights (area, cone);
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
 //! - [`estimator`]: the path loop;
+//! - [`observer`]: a hook that sees every vertex of a path, and [`record`], which
+//!   records paths with it for figures;
 //! - [`next_event`]: light samples with shadow rays;
 //! - [`mis`]: the power heuristic that combines light and BRDF samples;
 //! - [`roulette`]: Russian roulette;
-//! - [`lens`]: the thin-lens camera;
+//! - [`lens`]: the thin-lens camera, and the cameras a path can start from;
 //! - [`progressive`]: sample passes accumulated into an image;
+//! - [`convergence`]: the lesson's experiment, a ladder of sample counts, every
+//!   strategy, and a reference;
 //! - [`pfm`]: the floating-point image file;
 //! - [`scenes`]: the Cornell box, the furnaces, the two-light scene.
 
+pub mod convergence;
 pub mod estimator;
 pub mod lens;
 pub mod light;
 pub mod mis;
 pub mod next_event;
+pub mod observer;
 pub mod pfm;
 pub mod progressive;
+pub mod record;
 pub mod rng;
 pub mod roulette;
 pub mod scenes;
 pub mod settings;
 
-pub use estimator::radiance;
-pub use lens::LensCamera;
+pub use estimator::{radiance, radiance_observed};
+pub use lens::{LensCamera, PathCamera};
 pub use light::SphereSampling;
-pub use progressive::{Accumulator, PixelSampling};
+pub use observer::PathObserver;
+pub use progressive::{Accumulator, Passes, PixelSampling};
+pub use record::{PathVertex, RecordedPath, record_path};
 pub use rng::Rng;
 pub use settings::{Sampling, Settings};

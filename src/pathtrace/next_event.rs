@@ -4,14 +4,15 @@
 
 use glam::Vec3;
 
+use crate::material::diffuse_brdf;
 use crate::offset::Offset;
 use crate::pathtrace::light;
-use crate::material::diffuse_brdf;
 use crate::pathtrace::mis::power_heuristic;
+use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
-use crate::scene::Scene;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
+use crate::scene::Scene;
 
 /// Where the rays leaving a diffuse vertex start (the hit point moved off the
 /// surface by the offset) and the t they must exceed. Light samples are drawn from
@@ -43,6 +44,7 @@ pub(super) fn direct_light(
     albedo: Vec3,
     rng: &mut Rng,
     s: &Settings,
+    observer: &mut impl PathObserver,
 ) -> Vec3 {
     if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.lights().is_empty() {
         return Vec3::ZERO;
@@ -54,7 +56,9 @@ pub(super) fn direct_light(
     let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
         return Vec3::ZERO;
     };
-    let Some(cos) = unoccluded(scene, from, n, y.point, y.normal, s.offset) else {
+    let seen = unoccluded(scene, from, n, y.point, y.normal, s.offset);
+    observer.light_sample(y.point, seen.is_some());
+    let Some(cos) = seen else {
         return Vec3::ZERO;
     };
     let pdf = y.pdf / count as f32;

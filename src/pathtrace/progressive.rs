@@ -15,11 +15,12 @@ use rayon::prelude::*;
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::estimator::radiance;
-use crate::pathtrace::lens::LensCamera;
+use crate::pathtrace::lens::PathCamera;
 use crate::pathtrace::rng::Rng;
-use crate::scene::Scene;
 use crate::pathtrace::settings::Settings;
+use crate::ray::Ray;
 use crate::render::in_pool;
+use crate::scene::Scene;
 
 /// Where in its pixel each sample's camera ray passes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,6 +30,17 @@ pub enum PixelSampling {
     /// Jittered (stratified): the pixel cut into sqrt(spp) x sqrt(spp) cells, one
     /// uniform sample in each; spp must be a square number.
     Jittered,
+}
+
+impl PixelSampling {
+    /// `Jittered` if `jitter`, else `Independent` (as a flag chooses).
+    pub fn jittered(jitter: bool) -> PixelSampling {
+        if jitter {
+            PixelSampling::Jittered
+        } else {
+            PixelSampling::Independent
+        }
+    }
 }
 
 /// Per-pixel sums of radiance samples, and the random streams that continue them.
@@ -44,7 +56,7 @@ pub struct Accumulator {
 
 impl Accumulator {
     /// Empty sums for `camera`'s film, streams seeded from (`seed`, x, y).
-    pub fn new(camera: &LensCamera, seed: u64) -> Accumulator {
+    pub fn new(camera: &impl PathCamera, seed: u64) -> Accumulator {
         let (width, height) = (camera.film().width(), camera.film().height());
         let rngs = (0..height)
             .flat_map(|y| (0..width).map(move |x| Rng::for_pixel(seed, x, y)))
@@ -76,7 +88,7 @@ impl Accumulator {
     pub fn render_pass(
         &mut self,
         scene: &Scene,
-        camera: &LensCamera,
+        camera: &impl PathCamera,
         settings: &Settings,
         pixels: PixelSampling,
         spp: u32,
@@ -88,9 +100,8 @@ impl Accumulator {
             let mut bad = 0;
             for (x, (sum, rng)) in sums.iter_mut().zip(rngs).enumerate() {
                 for i in 0..spp {
-                    let offset = pixel_offset(pixels, spp, i, rng);
-                    let position = Vec2::new(x as f32, y as f32) + offset;
-                    let ray = camera.ray(position, rng.next_vec2());
+                    let pixel = Vec2::new(x as f32, y as f32);
+                    let ray = pixel_ray(camera, pixel, pixels, spp, i, rng);
                     let sample = radiance(scene, ray, rng, settings);
                     // A documented guard, not a fix: counted, and tested to stay 0.
                     if sample.is_finite() {
@@ -126,7 +137,7 @@ impl Accumulator {
 
 fn check_pass(
     acc: &Accumulator,
-    camera: &LensCamera,
+    camera: &impl PathCamera,
     settings: &Settings,
     pixels: PixelSampling,
     spp: u32,
@@ -172,6 +183,20 @@ fn strata(spp: u32) -> u32 {
     n
 }
 
+/// The camera ray of sample `i` of `spp` in the pixel whose corner is `pixel`: a
+/// point in the pixel, then a point on the lens, both drawn from `rng`.
+pub fn pixel_ray(
+    camera: &impl PathCamera,
+    pixel: Vec2,
+    pixels: PixelSampling,
+    spp: u32,
+    i: u32,
+    rng: &mut Rng,
+) -> Ray {
+    let position = pixel + pixel_offset(pixels, spp, i, rng);
+    camera.sample_ray(position, rng.next_vec2())
+}
+
 // ANCHOR: pixel_offset
 /// Where sample `i` of `spp` falls in its pixel, in [0, 1)^2.
 fn pixel_offset(pixels: PixelSampling, spp: u32, i: u32, rng: &mut Rng) -> Vec2 {
@@ -187,6 +212,61 @@ fn pixel_offset(pixels: PixelSampling, spp: u32, i: u32, rng: &mut Rng) -> Vec2 
     }
 }
 // ANCHOR_END: pixel_offset
+
+/// How the passes of a progressive render are run: where samples fall in their
+/// pixel, the seed of the pixels' streams, and the worker threads (`None`: all cores).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Passes {
+    /// Where in its pixel each sample's camera ray passes.
+    pub pixels: PixelSampling,
+    /// The seed of the per-pixel streams.
+    pub seed: u64,
+    /// Worker threads (`None`: every core); the images do not depend on it.
+    pub threads: Option<usize>,
+}
+
+/// One finished pass of [`render_progressive`].
+#[derive(Clone, Debug)]
+pub struct Pass {
+    /// Samples per pixel so far.
+    pub samples: u32,
+    /// Samples per pixel this pass added.
+    pub added: u32,
+    /// The mean image so far.
+    pub image: Framebuffer,
+}
+
+// ANCHOR: render_progressive
+/// A progressive render from one accumulator: passes that end at each of `stops`
+/// samples per pixel (increasing), `each` called after every pass. Returns the
+/// number of samples dropped as NaN or infinite.
+pub fn render_progressive(
+    scene: &Scene,
+    camera: &impl PathCamera,
+    settings: &Settings,
+    passes: Passes,
+    stops: &[u32],
+    mut each: impl FnMut(Pass) -> Result<()>,
+) -> Result<u64> {
+    let mut acc = Accumulator::new(camera, passes.seed);
+    for &stop in stops {
+        let Some(added) = stop.checked_sub(acc.samples()) else {
+            return Err(Error::Invalid {
+                param: "stops",
+                reason: "must increase",
+            });
+        };
+        let (pixels, threads) = (passes.pixels, passes.threads);
+        let image = acc.render_pass(scene, camera, settings, pixels, added, threads)?;
+        each(Pass {
+            samples: stop,
+            added,
+            image,
+        })?;
+    }
+    Ok(acc.non_finite())
+}
+// ANCHOR_END: render_progressive
 
 /// The root mean square difference between two images of the same size, over all
 /// channels, in f64.

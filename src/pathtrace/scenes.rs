@@ -5,10 +5,23 @@ use glam::Vec3;
 
 use crate::camera::{Film, Frame, PinholeCamera};
 use crate::error::Result;
-use crate::pathtrace::lens::LensCamera;
 use crate::material::Material;
+use crate::pathtrace::lens::LensCamera;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
+
+/// The lesson's scenes, by the names its `--scene` flag takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum SceneName {
+    /// smallpt's Cornell box, walls as planes, a square ceiling light.
+    Cornell,
+    /// A floor under a small and a large spherical light.
+    TwoLights,
+    /// Inside a glowing sphere of albedo 0.5 (STABILITY S16).
+    Furnace,
+    /// A grey sphere in a white environment (STABILITY S17).
+    GreyFurnace,
+}
 
 /// A pinhole camera at `eye` looking at `target` (up +Y), its screen at distance 1
 /// spanning `half_height` above and below the centre, width by the aspect ratio.

@@ -18,6 +18,47 @@ pub enum Sampling {
     Mis,
 }
 
+impl Sampling {
+    /// All four, worst first.
+    pub const ALL: [Sampling; 4] = [
+        Sampling::UniformHemisphere,
+        Sampling::Cosine,
+        Sampling::NextEvent,
+        Sampling::Mis,
+    ];
+
+    /// The strategy's name in tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            Sampling::UniformHemisphere => "uniform hemisphere",
+            Sampling::Cosine => "cosine",
+            Sampling::NextEvent => "next event",
+            Sampling::Mis => "MIS",
+        }
+    }
+
+    /// Its value after the lesson's `--sampling`, also used in file names.
+    pub fn flag(self) -> &'static str {
+        match self {
+            Sampling::UniformHemisphere => "uniform",
+            Sampling::Cosine => "cosine",
+            Sampling::NextEvent => "nee",
+            Sampling::Mis => "mis",
+        }
+    }
+}
+
+/// `--sampling uniform|cosine|nee|mis`.
+impl clap::ValueEnum for Sampling {
+    fn value_variants<'a>() -> &'a [Sampling] {
+        &Sampling::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.flag()).help(self.name()))
+    }
+}
+
 /// Everything that chooses how a path is traced.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {

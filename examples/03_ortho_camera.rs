@@ -148,7 +148,8 @@ pub fn my_origin_image(f: &Film) -> Result<Framebuffer> {
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
-        let (x, y) = ((args.x_min, args.x_max), (args.y_min, args.y_max));
+        let x = lesson::extent("--x-min/--x-max", args.x_min, args.x_max)?;
+        let y = lesson::extent("--y-min/--y-max", args.y_min, args.y_max)?;
         let cam = camera(args.width, args.height, x, y)?;
         lesson::print(&numbers(&cam));
         let out = &args.output;

@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::Vec3;
 use render_lessons::Result;
-use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+use render_lessons::camera::{Camera, Film, Frame, MAX_RESOLUTION, OrthoCamera, PinholeCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
 use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::course::report::{Table, num, vec3};
@@ -155,10 +155,11 @@ fn main() -> ExitCode {
         let (s, d, k) = (args.screen_distance, args.direction, args.up);
         let frame = Frame::look(args.position, d, k)?;
         let [at_origin, placed] = cameras(s, frame)?;
+        let view_width = lesson::pixels("--view-width", args.view_width, MAX_RESOLUTION / 2)?;
+        let views = views(frame, view_width, s * 0.5)?;
         lesson::print(&numbers(&at_origin, &placed, d, k));
         let out = &args.output;
         out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
-        let views = views(frame, args.view_width, s * 0.5)?;
         out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)
     })
 }

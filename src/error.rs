@@ -224,10 +224,17 @@ pub fn finite3(param: &'static str, v: Vec3) -> Result<Vec3> {
 
 /// `v / |v|` if `v` is finite and not zero.
 ///
-/// A vector so short that normalising it overflows counts as zero length.
+/// A vector too long or too short to normalise directly in f32 (beyond about
+/// 1.8e19 or below 1e-19) is scaled first, so only a zero vector is rejected as
+/// having zero length.
 pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
     let v = finite3(param, v)?;
-    let n = v.normalize_or_zero();
+    // |v| overflows past 1.8e19 and underflows below 1e-19 in f32: divide by the
+    // largest component first, which changes nothing for a vector of sane length.
+    let n = match v.normalize_or_zero() {
+        Vec3::ZERO => (v / v.abs().max_element()).normalize_or_zero(),
+        n => n,
+    };
     if n == Vec3::ZERO {
         Err(Error::ZeroLength { param })
     } else {

@@ -50,11 +50,23 @@ fn bad_rays_name_their_parameter() {
         Ray::new(Vec3::ZERO, Vec3::new(0.0, f32::INFINITY, 0.0)),
         Err(Error::NotFinite { param: "direction" })
     );
-    // So short that normalising underflows: refused, not a NaN direction.
-    assert_eq!(
-        Ray::new(Vec3::ZERO, Vec3::splat(1e-30)),
-        Err(Error::ZeroLength { param: "direction" })
-    );
+}
+
+#[test]
+fn very_short_and_very_long_directions_are_normalised_not_refused() {
+    // |d| underflows (1e-30 squared is 0 in f32) or overflows (3e38 squared is
+    // infinite): the direction is still well defined, and Ray::new scales it first.
+    let diagonal = Vec3::splat(1.0 / 3f32.sqrt());
+    for d in [
+        Vec3::splat(1e-30),
+        Vec3::splat(3e38),
+        Vec3::splat(f32::MIN_POSITIVE),
+    ] {
+        let ray = Ray::new(Vec3::ZERO, d).unwrap();
+        assert!((ray.direction() - diagonal).length() < 1e-6, "{d}");
+    }
+    let tilted = Ray::new(Vec3::ZERO, Vec3::new(3e38, 3e38, 0.0)).unwrap();
+    assert!((tilted.direction() - Vec3::new(1.0, 1.0, 0.0).normalize()).length() < 1e-6);
 }
 
 fn finite_vec(range: f32) -> impl Strategy<Value = Vec3> {

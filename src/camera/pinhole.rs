@@ -24,12 +24,27 @@ impl PinholeCamera {
     }
 
     /// A pinhole camera placed and turned by `frame`.
+    ///
+    /// Rejects a screen distance that is not finite and positive, and one so large
+    /// (or a film so wide) that |s - e| of a corner overflows f32: no ray of such a
+    /// camera could be normalised.
     pub fn new(film: Film, screen_distance: f32, frame: Frame) -> Result<PinholeCamera> {
-        Ok(PinholeCamera {
+        let camera = PinholeCamera {
             film,
             screen_distance: positive("screen distance", screen_distance)?,
             frame,
-        })
+        };
+        let corners = [(0, 0), (film.width() - 1, film.height() - 1)];
+        if corners
+            .iter()
+            .any(|&(x, y)| !camera.screen_point(x, y).length_squared().is_finite())
+        {
+            return Err(Error::Invalid {
+                param: "screen distance",
+                reason: "is too large for the film: a ray's length |s - e| overflows f32",
+            });
+        }
+        Ok(camera)
     }
 
     // ANCHOR: look_at

@@ -399,6 +399,21 @@ impl View {
     }
 }
 
+/// The most rays a [`CameraRays`] figure draws: beyond that a figure is a smear.
+const MAX_RAYS: u32 = 32;
+
+/// `0..n`, or [`MAX_RAYS`] indices spread evenly over it, first and last included.
+fn spread(n: u32) -> impl Iterator<Item = u32> {
+    let shown = n.min(MAX_RAYS);
+    (0..shown).map(move |i| {
+        if shown == n {
+            i
+        } else {
+            (u64::from(i) * u64::from(n - 1) / u64::from(shown - 1)) as u32
+        }
+    })
+}
+
 /// The standard picture of a camera and its rays, drawn by [`CameraRays::draw`]:
 /// the projection plane edge-on, one arrow per chosen pixel from the ray's origin to
 /// `reach` units in front of the camera, a dot where each ray crosses the plane (the
@@ -434,8 +449,8 @@ impl CameraRays {
         let film = camera.film();
         let (w, h) = (film.width(), film.height());
         let pixels = match view {
-            View::Side => (0..h).map(|y| (w / 2, y)).collect(),
-            View::Top => (0..w).map(|x| (x, h / 2)).collect(),
+            View::Side => spread(h).map(|y| (w / 2, y)).collect(),
+            View::Top => spread(w).map(|x| (x, h / 2)).collect(),
         };
         CameraRays {
             camera,
@@ -453,13 +468,15 @@ impl CameraRays {
 
     /// Draws the rays of every pixel of image column `x` instead.
     pub fn column(mut self, x: u32) -> CameraRays {
-        self.pixels = (0..self.camera.film().height()).map(|y| (x, y)).collect();
+        self.pixels = spread(self.camera.film().height())
+            .map(|y| (x, y))
+            .collect();
         self
     }
 
     /// Draws the rays of every pixel of image row `y` instead.
     pub fn row(mut self, y: u32) -> CameraRays {
-        self.pixels = (0..self.camera.film().width()).map(|x| (x, y)).collect();
+        self.pixels = spread(self.camera.film().width()).map(|x| (x, y)).collect();
         self
     }
 
@@ -598,6 +615,16 @@ impl Diagram {
         self.fill(&corners, palette::PLANE, 40);
         self.outline(&corners, palette::PLANE, 2.0);
         let (w, h) = (film.width(), film.height());
+        if w > MAX_FILM_SIDE || h > MAX_FILM_SIDE {
+            let note = format!("{w} x {h} pixels: too many to draw one by one");
+            self.text(
+                Vec2::new(0.5 * (x0 + x1), y0),
+                &note,
+                palette::INK,
+                Place::Below,
+            );
+            return;
+        }
         let cell = Vec2::new((x1 - x0) / w as f32, (y1 - y0) / h as f32);
         for i in 1..w {
             let x = x0 + i as f32 * cell.x;
@@ -618,6 +645,9 @@ impl Diagram {
         }
     }
 }
+
+/// The most pixels a side of [`Diagram::film`] draws one by one.
+const MAX_FILM_SIDE: u32 = 64;
 
 #[cfg(test)]
 mod tests {

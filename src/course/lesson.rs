@@ -45,9 +45,26 @@ pub fn run(body: impl FnOnce() -> Result<()>) -> ExitCode {
     match body() {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("error: {}", as_typed(&e));
             ExitCode::from(2)
         }
+    }
+}
+
+/// The long flags of the command [`parse`] read, to name them in errors.
+static FLAGS: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+
+/// The error's message, its parameter written as the flag the user typed when the
+/// lesson has one of that name: "screen distance must ..." becomes
+/// "--screen-distance must ...".
+fn as_typed(e: &crate::error::Error) -> String {
+    let message = e.to_string();
+    let param = e.param();
+    let flag = param.replace(' ', "-");
+    let known = FLAGS.get().is_some_and(|flags| flags.contains(&flag));
+    match message.strip_prefix(param) {
+        Some(rest) if known => format!("--{flag}{rest}"),
+        _ => message,
     }
 }
 
@@ -69,6 +86,8 @@ pub fn print(text: &str) {
 /// as clap does.
 pub fn parse<A: clap::Parser>() -> A {
     let command = A::command();
+    let flags = command.get_arguments().filter_map(|a| a.get_long());
+    let _ = FLAGS.set(flags.map(str::to_string).collect());
     let args = negative_values(&command, std::env::args_os().collect());
     let matches = command.get_matches_from(args);
     if let Some(out) = matches.try_get_one::<PathBuf>("out").ok().flatten()
@@ -125,6 +144,39 @@ fn writable(dir: &Path) -> std::result::Result<(), String> {
         .tempfile_in(dir)
         .map(drop)
         .map_err(|e| format!("cannot write in it ({e})"))
+}
+
+/// `value` if it lies in 1..=`max` pixels; otherwise an error naming the flag
+/// (e.g. `--view-width`) that asked for it.
+pub fn pixels(flag: &'static str, value: u32, max: u32) -> Result<u32> {
+    if (1..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(crate::error::Error::Resolution {
+            param: flag,
+            value,
+            max,
+        })
+    }
+}
+
+/// `(min, max)` if `min < max` and the span between them is a finite number; the
+/// error names `flags`, the two flags that set them (`"--x-min/--x-max"`).
+pub fn extent(flags: &'static str, min: f32, max: f32) -> Result<(f32, f32)> {
+    if !(min < max) {
+        return Err(crate::error::Error::EmptyRange {
+            param: flags,
+            min,
+            max,
+        });
+    }
+    if !(max - min).is_finite() {
+        return Err(crate::error::Error::Invalid {
+            param: flags,
+            reason: "span more than the largest f32 (3.4e38)",
+        });
+    }
+    Ok((min, max))
 }
 
 /// Prints where a file was written.

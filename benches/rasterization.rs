@@ -19,6 +19,7 @@ use render_lessons::raster::{Cull, Instance, Mesh, Settings, rasterize};
 use render_lessons::raycast::lit_unshadowed;
 use render_lessons::render::render;
 use render_lessons::scene::{PointLight, Scene};
+use render_lessons::scenes::TORUS_OBJ;
 
 const WIDTH: u32 = 1920;
 const HEIGHT: u32 = 1080;
@@ -49,14 +50,15 @@ fn camera() -> Camera {
 }
 
 fn torus() -> Mesh {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/meshes/torus.obj");
-    Mesh::from_obj(std::path::Path::new(path)).expect("the lesson's torus")
+    Mesh::from_obj(std::path::Path::new(TORUS_OBJ)).expect("the lesson's torus")
 }
 
 /// The mesh as a list of triangle primitives, for the ray caster.
 fn triangle_scene(mesh: &Mesh) -> Scene {
     let objects = mesh.objects(Vec3::new(0.8, 0.5, 0.3)).expect("triangles");
-    Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(LIGHT)).expect("scene")
+    Scene::new(objects, Vec3::ZERO)
+        .and_then(|s| s.with_light(LIGHT))
+        .expect("scene")
 }
 
 fn raster(c: &mut Criterion) {

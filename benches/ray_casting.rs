@@ -3,20 +3,15 @@
 //!
 //!     cargo bench --bench ray_casting
 
-#[path = "../examples/08_ray_casting.rs"]
-#[allow(dead_code)]
-mod lesson;
-
-use clap::Parser;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
+use render_lessons::scenes::{lesson08, lesson08_pinhole};
 
 fn bench(c: &mut Criterion) {
-    let args = lesson::Args::parse_from(["08_ray_casting", "--width", "1920", "--height", "1080"]);
-    let scene = lesson::scene(Vec3::ZERO).expect("the lesson's scene");
-    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).expect("the lesson's cameras");
+    let scene = lesson08(Vec3::ZERO).expect("the lesson's scene");
+    let pinhole = lesson08_pinhole(1920, 1080).expect("the lesson's camera");
     let mut group = c.benchmark_group("primary rays, lesson 08 scene, 1920x1080");
     group.sample_size(10);
     group.throughput(Throughput::Elements(1920 * 1080));

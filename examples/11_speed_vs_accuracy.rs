@@ -19,13 +19,11 @@ use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
-use render_lessons::raster::{Cull, Settings, Shading, rasterize};
+use render_lessons::raster::{FLOOR_DEPTH, Settings, Shading, agreement, rasterize, reference};
+use render_lessons::raster::{TOLERANCE, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-
-#[path = "09_rasterization.rs"]
-#[allow(dead_code)]
-mod lesson09;
+use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows};
 
 /// The lesson's parameters.
 #[derive(Parser, Debug)]
@@ -110,38 +108,32 @@ fn best_ms<T>(repeats: u32, mut work: impl FnMut() -> Result<T>) -> Result<(f64,
 /// ray-traced image with shadow rays. The rasterizer's two knobs are swept: the
 /// tessellation of the spheres, and the resolution of the shadow map.
 pub fn lessons(quality: Quality) -> Result<Measured> {
-    let args = lesson09::Args::parse_from(["09_rasterization"]);
-    let scene = lesson09::scene()?;
-    let camera = lesson09::camera(&args)?;
+    let scene = lesson08(glam::Vec3::ZERO)?;
+    let camera = lesson08_pinhole(480, 270)?;
     let light = scene.light().ok_or(Error::Invalid {
         param: "scene",
         reason: "lesson 11 needs a point light",
     })?;
-    let mask = lesson09::silhouettes(&scene, &camera, None)?;
+    let mask = reference(&scene, &camera, None)?.silhouettes;
     let repeats = quality.pick(2, 5);
-    let (traced_ms, reference) = best_ms(repeats, || {
+    let (traced_ms, traced) = best_ms(repeats, || {
         render(&camera, None, |r| lit(&scene, r, Offset::Scaled))
     })?;
     let raster = |segments: u32, shadows| -> Result<(f64, f64)> {
-        let instances = lesson09::tessellate(&scene, segments)?;
+        let instances = tessellate(&scene, segments)?;
         let settings = Settings {
-            depth: lesson09::DEPTH,
-            shading: Shading::PerPixel,
-            cull: Cull::None,
+            depth: FLOOR_DEPTH,
             background: scene.background(),
-            shadows,
-        };
+            ..Settings::default()
+        }
+        .with(Shading::PerPixel, shadows);
         let (ms, image) = best_ms(repeats, || {
             rasterize(&instances, &camera, &light, &settings, None)
         })?;
-        let a = lesson09::agreement(&image, &reference, &mask);
+        let a = agreement(&image, &traced, &mask, TOLERANCE);
         Ok((ms, 100.0 - a.percent_agreeing()))
     };
-    let map = |size: u32| {
-        let mut s = lesson09::shadows(&args, 1.0);
-        s.size = size;
-        Some(s)
-    };
+    let map = |size: u32| Some(lesson08_shadows(size, 1.0));
     let segments = [8, 16, 32, 64, 128]
         .into_iter()
         .map(|n| raster(n, map(1024)))

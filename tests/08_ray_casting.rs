@@ -6,7 +6,6 @@ mod lesson;
 
 use std::path::Path;
 
-use clap::Parser;
 use glam::Vec3;
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Camera, Film, OrthoCamera};
@@ -16,25 +15,33 @@ use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
 use render_lessons::sampling::{cosine_hemisphere, grid};
 use render_lessons::scene::{Object, PointLight, Scene};
+use render_lessons::scenes::{lesson08, lesson08_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
 
-fn small_args(extra: &[&str]) -> lesson::Args {
-    let mut argv = vec!["08_ray_casting", "--width", "96", "--height", "54"];
-    argv.extend(extra);
-    lesson::Args::parse_from(argv)
-}
+/// The lesson's defaults: the book's size, the fixed epsilon and the far shift.
+const BOOK: (u32, u32) = (480, 270);
+const EPSILON: f32 = 1e-4;
+const FAR: Vec3 = Vec3::new(1e4, 0.0, 0.0);
+/// A small image for the tests that need no book numbers.
+const SMALL: (u32, u32) = (96, 54);
 
 #[test]
 fn numbers() {
-    let args = lesson::Args::parse_from(["08_ray_casting"]);
-    let images = lesson::images(&args).unwrap();
-    insta::assert_snapshot!("numbers", lesson::numbers(&args, &images).unwrap());
+    let images = lesson::images(BOOK, EPSILON, FAR, None).unwrap();
+    let numbers = lesson::numbers(BOOK, EPSILON, FAR, &images).unwrap();
+    insta::assert_snapshot!("numbers", numbers);
 }
 
 #[test]
 fn closest_hit_wins_whatever_the_list_order() {
-    let near = Object::diffuse(Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0).unwrap()), Vec3::X);
-    let far = Object::diffuse(Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -8.0), 1.0).unwrap()), Vec3::Y);
+    let near = Object::diffuse(
+        Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0).unwrap()),
+        Vec3::X,
+    );
+    let far = Object::diffuse(
+        Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -8.0), 1.0).unwrap()),
+        Vec3::Y,
+    );
     let light = PointLight {
         position: Vec3::ZERO,
         intensity: Vec3::ONE,
@@ -44,14 +51,18 @@ fn closest_hit_wins_whatever_the_list_order() {
         vec![near.clone(), far.clone()],
         vec![far.clone(), near.clone()],
     ] {
-        let scene = Scene::new(objects, Vec3::Z).and_then(|s| s.with_light(light)).unwrap();
+        let scene = Scene::new(objects, Vec3::Z)
+            .and_then(|s| s.with_light(light))
+            .unwrap();
         let (hit, object) = scene.closest_hit(&ray, 0.0, f32::INFINITY).unwrap();
         assert_eq!(hit.t, 2.0);
         assert_eq!(object.colour(), Vec3::X);
         assert_eq!(shadowless(&scene, &ray), Vec3::X);
     }
     // A ray that misses everything sees the background.
-    let scene = Scene::new(vec![near, far], Vec3::Z).and_then(|s| s.with_light(light)).unwrap();
+    let scene = Scene::new(vec![near, far], Vec3::Z)
+        .and_then(|s| s.with_light(light))
+        .unwrap();
     assert_eq!(
         shadowless(&scene, &Ray::new(Vec3::ZERO, Vec3::Y).unwrap()),
         Vec3::Z
@@ -60,9 +71,8 @@ fn closest_hit_wins_whatever_the_list_order() {
 
 #[test]
 fn the_same_image_whatever_the_thread_count() {
-    let args = small_args(&[]);
-    let scene = lesson::scene(Vec3::ZERO).unwrap();
-    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let scene = lesson08(Vec3::ZERO).unwrap();
+    let [_, pinhole] = lesson08_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
     let shade = |r: &Ray| render_lessons::raycast::lit(&scene, r, Offset::Scaled);
     let one = render(&pinhole, Some(1), shade).unwrap();
     for threads in [Some(2), Some(3), None] {
@@ -78,9 +88,8 @@ fn the_same_image_whatever_the_thread_count() {
 fn the_lambert_image_matches_the_book_within_one_level() {
     // The committed figure is the reference; a render on this machine may differ from
     // it by rounding in the last bit, never by more than one 8-bit level per channel.
-    let args = lesson::Args::parse_from(["08_ray_casting"]);
-    let scene = lesson::scene(Vec3::ZERO).unwrap();
-    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let scene = lesson08(Vec3::ZERO).unwrap();
+    let [_, pinhole] = lesson08_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
     let ours = render(&pinhole, None, |r| {
         render_lessons::raycast::lit(&scene, r, Offset::Scaled)
     })
@@ -103,8 +112,8 @@ fn the_lambert_image_matches_the_book_within_one_level() {
 
 #[test]
 fn every_pixel_is_finite_and_in_range() {
-    let args = small_args(&[]);
-    for (name, image) in lesson::images(&args).unwrap() {
+    let images = lesson::images(SMALL, EPSILON, FAR, None).unwrap();
+    for (name, image) in lesson::IMAGES.iter().zip(images) {
         for y in 0..image.height() {
             for x in 0..image.width() {
                 let c = image.get(x, y).unwrap();
@@ -119,9 +128,8 @@ fn every_pixel_is_finite_and_in_range() {
 
 #[test]
 fn orthographic_sees_no_sky_and_pinhole_does() {
-    let args = small_args(&[]);
-    let scene = lesson::scene(Vec3::ZERO).unwrap();
-    let [ortho, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let scene = lesson08(Vec3::ZERO).unwrap();
+    let [ortho, pinhole] = lesson08_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
     let sky = |camera: &Camera| {
         render(camera, None, |r| shadowless(&scene, r))
             .unwrap()
@@ -222,7 +230,10 @@ fn ray_casting_an_orthographic_disc() {
     // pi / 16 of the pixels, up to the pixels cut by the silhouette.
     let film = Film::new(200, 200, (-2.0, 2.0), (-2.0, 2.0)).unwrap();
     let camera: Camera = OrthoCamera::at_origin(film).into();
-    let sphere = Object::diffuse(Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0).unwrap()), Vec3::ONE);
+    let sphere = Object::diffuse(
+        Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0).unwrap()),
+        Vec3::ONE,
+    );
     let scene = Scene::new(vec![sphere], Vec3::ZERO).unwrap();
     let image = render(&camera, None, |r| shadowless(&scene, r)).unwrap();
     let covered = (0..200)
@@ -240,9 +251,8 @@ fn ray_casting_an_orthographic_disc() {
 fn a_point_in_shadow_gets_only_the_ambient_share() {
     // Pixel (76, 162) of the default image lies in the red sphere's shadow on the floor
     // (albedo 0.75, 0.75, 0.7): its colour is the albedo times AMBIENT, nothing more.
-    let args = lesson::Args::parse_from(["08_ray_casting"]);
-    let scene = lesson::scene(Vec3::ZERO).unwrap();
-    let [_, pinhole] = lesson::cameras(&args, Vec3::ZERO).unwrap();
+    let scene = lesson08(Vec3::ZERO).unwrap();
+    let [_, pinhole] = lesson08_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
     let c = render_lessons::raycast::lit(&scene, &pinhole.ray(76, 162), Offset::Scaled);
     let expected = Vec3::new(0.75, 0.75, 0.7) * render_lessons::lighting::AMBIENT;
     assert!(

@@ -11,6 +11,7 @@ use clap::Parser;
 use render_lessons::Result;
 use render_lessons::course::lesson::{self, Output};
 
+mod lesson09;
 mod lesson10;
 
 /// Writes every book-only figure into `--out`.
@@ -25,7 +26,10 @@ struct Args {
 type Figures = fn(&Output) -> Result<()>;
 
 /// Every lesson that has book-only figures, in lesson order.
-const LESSONS: &[(&str, Figures)] = &[("lesson 10", lesson10::figures)];
+const LESSONS: &[(&str, Figures)] = &[
+    ("lesson 09", lesson09::figures),
+    ("lesson 10", lesson10::figures),
+];
 
 fn main() -> ExitCode {
     let args = Args::parse();

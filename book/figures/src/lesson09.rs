@@ -1,0 +1,178 @@
+//! Lesson 09's book-only figures: the pipeline on one triangle, and the lesson's
+//! images side by side (ray cast | per pixel | per vertex, the shadows both ways, the
+//! shadow map's bias both ways wrong, the mesh both ways), rendered at the book's
+//! settings from the same core calls as the lesson.
+
+use glam::{Vec2, Vec3};
+use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
+use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
+use render_lessons::course::lesson::Output;
+use render_lessons::framebuffer::{Framebuffer, to_srgb8};
+use render_lessons::offset::Offset;
+use render_lessons::raster::Shading::{PerPixel, PerVertex};
+use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
+use render_lessons::raster::{FLOOR_DEPTH, Instance, Pipeline, Settings, Shadows};
+use render_lessons::raster::{rasterize, rasterize_triangle, reference, tessellate};
+use render_lessons::raycast::lit;
+use render_lessons::render::render;
+use render_lessons::scenes::{TORUS_OBJ, lesson08, lesson08_pinhole, lesson08_shadows};
+use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
+use render_lessons::transform::Transform;
+use render_lessons::{Error, Result};
+
+/// Writes `09_side_by_side.png`, `09_shadows.png`, `09_shadow_bias.png`,
+/// `09_mesh.png` and `09_pipeline_stages.png`: lesson 09 at its defaults (480 x 270,
+/// spheres of 64 segments, a 1024^2 shadow map, a bias of one texel footprint).
+pub fn figures(output: &Output) -> Result<()> {
+    let scene = lesson08(Vec3::ZERO)?;
+    let camera = lesson08_pinhole(480, 270)?;
+    let shadows = lesson08_shadows(1024, 1.0);
+    let mesh = lesson09_mesh(std::path::Path::new(TORUS_OBJ))?;
+    let instances = tessellate(&scene, 64)?;
+    let light = scene.light().ok_or(Error::Invalid {
+        param: "scene",
+        reason: "needs a point light for lesson 09",
+    })?;
+    let book = Settings {
+        depth: FLOOR_DEPTH,
+        background: scene.background(),
+        ..Settings::default()
+    };
+    let draw = |instances: &[Instance], shading, shadows: Option<Shadows>| {
+        rasterize(
+            instances,
+            &camera,
+            &light,
+            &book.with(shading, shadows),
+            None,
+        )
+    };
+    let mapped = |bias| draw(&instances, PerPixel, Some(shadows.with_bias(bias)));
+    let ray_cast = reference(&scene, &camera, None)?.image;
+    let per_pixel = draw(&instances, PerPixel, None)?;
+    let per_vertex = draw(&instances, PerVertex, None)?;
+    let traced = render(&camera, None, |r| lit(&scene, r, Offset::Scaled))?;
+    let (shadow_map, acne, peter_pan) = (mapped(1.0)?, mapped(0.0)?, mapped(50.0)?);
+    let mesh_cast = reference(&lesson09_mesh_scene(&scene, &mesh)?, &camera, None)?.image;
+    let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
+    let panels = [
+        (
+            "09_side_by_side.png",
+            vec![&ray_cast, &per_pixel, &per_vertex],
+        ),
+        ("09_shadows.png", vec![&traced, &shadow_map]),
+        ("09_shadow_bias.png", vec![&acne, &peter_pan]),
+        ("09_mesh.png", vec![&mesh_cast, &mesh_raster]),
+    ];
+    for (name, images) in panels {
+        output.image(name, &Framebuffer::beside(&images, 8)?)?;
+    }
+    output.diagram("09_pipeline_stages.png", &stages()?)
+}
+
+/// The figure: Lecture 2's pipeline on one triangle, in four panels. The triangle's
+/// vertices in the world, the same vertices in clip space divided by w (NDC), the
+/// pixel centres the rasterizer finds inside it, and the colours interpolated
+/// between its three vertex colours.
+fn stages() -> Result<Diagram> {
+    let film = Film::new(16, 12, (-0.6, 0.6), (-0.45, 0.45))?;
+    let frame = Frame::look(
+        Vec3::new(0.0, 1.0, 4.0),
+        Vec3::new(0.0, -0.25, -1.0),
+        Vec3::Y,
+    )?;
+    let camera: Camera = PinholeCamera::new(film, 1.0, frame)?.into();
+    let pipeline = Pipeline::new(
+        &camera,
+        DepthRange {
+            near: 0.5,
+            far: 20.0,
+        },
+    )?;
+    let world = [
+        Vec3::new(-1.5, 0.0, 0.5),
+        Vec3::new(1.6, 0.2, -0.5),
+        Vec3::new(-0.2, 1.7, -1.0),
+    ];
+    let colours = [Vec3::X, Vec3::Y, Vec3::Z];
+    let vertex = |i: usize| ClipVertex {
+        clip: pipeline.to_clip(&Transform::IDENTITY, world[i]),
+        varyings: Varyings {
+            world: world[i],
+            normal: Vec3::Z,
+            colour: colours[i],
+        },
+    };
+    let screen = [0, 1, 2].map(|i| ScreenVertex::from_clip(&pipeline, &vertex(i)));
+    let [Some(a), Some(b), Some(c)] = screen else {
+        return Err(Error::NotPositive {
+            param: "w of a stage-figure vertex",
+            value: 0.0,
+        });
+    };
+    let mut fragments = Vec::new();
+    rasterize_triangle(&[a, b, c], Cull::None, 16, 0..12, |f| fragments.push(f));
+    stage_panels(&world, &[a, b, c], &fragments)
+}
+
+fn stage_panels(
+    world: &[Vec3; 3],
+    screen: &[ScreenVertex; 3],
+    fragments: &[Fragment],
+) -> Result<Diagram> {
+    // Four panels side by side in one coordinate system, each 20 units wide; the
+    // pixel grid of panels 3 and 4 is 16 x 12 units, row 0 at the top.
+    let mut d = Diagram::new(1600, 360, (0.0, 80.0), (-2.0, 16.0))?;
+    d.title("One triangle through the pipeline");
+    let at = |k: f32, x: f32, y: f32| Vec2::new(20.0 * k + 2.0 + x, 2.0 + y);
+    let label =
+        |d: &mut Diagram, k: f32, s: &str| d.text(at(k, 8.0, -1.0), s, palette::INK, Place::Below);
+    // 1: world (x, y), scaled to fit.
+    let w2 = world.map(|v| at(0.0, 5.0 * (v.x + 1.6), 5.0 * (v.y + 0.5)));
+    d.outline(&w2, palette::INK, 2.0);
+    for (i, p) in w2.iter().enumerate() {
+        d.dot(*p, 5.0, palette::INK);
+        d.text(*p, &format!("v{i}"), palette::INK, Place::Above);
+    }
+    label(&mut d, 0.0, "1. three vertices (world x, y)");
+    // 2: NDC: the square [-1, 1]^2 drawn 16 x 12.
+    let ndc = |x: f32, y: f32| at(1.0, 8.0 + 8.0 * x, 6.0 + 6.0 * y);
+    let square = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| ndc(x, y));
+    for i in 0..4 {
+        d.dashed(square[i], square[(i + 1) % 4], palette::GRID, 1.0);
+    }
+    let n2 = screen.map(|v| ndc(v.pixel.x / 8.0 - 1.0, 1.0 - v.pixel.y / 6.0));
+    d.outline(&n2, palette::INK, 2.0);
+    for p in &n2 {
+        d.dot(*p, 5.0, palette::INK);
+    }
+    label(&mut d, 1.0, "2. P V x, divided by w (NDC)");
+    // 3 and 4: the pixel grid and the triangle in pixels.
+    let pixel = |k: f32, x: f32, y: f32| at(k, x, 12.0 - y);
+    for k in [2.0, 3.0] {
+        for x in 0..=16 {
+            let x = x as f32;
+            d.line(pixel(k, x, 0.0), pixel(k, x, 12.0), palette::GRID, 1.0);
+        }
+        for y in 0..=12 {
+            let y = y as f32;
+            d.line(pixel(k, 0.0, y), pixel(k, 16.0, y), palette::GRID, 1.0);
+        }
+    }
+    for f in fragments {
+        let (x, y) = (f.x as f32, f.y as f32);
+        d.dot(pixel(2.0, x + 0.5, y + 0.5), 4.0, palette::HIT);
+        let cell = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .map(|(dx, dy)| pixel(3.0, x + dx, y + dy));
+        let c = f.varyings.colour;
+        let rgb = Rgb(to_srgb8(c.x), to_srgb8(c.y), to_srgb8(c.z));
+        d.fill(&cell, rgb, 255);
+    }
+    for k in [2.0, 3.0] {
+        let tri = screen.map(|v| pixel(k, v.pixel.x, v.pixel.y));
+        d.outline(&tri, palette::INK, 1.5);
+    }
+    label(&mut d, 2.0, "3. pixel centres inside (edge functions)");
+    label(&mut d, 3.0, "4. colours interpolated (barycentric)");
+    Ok(d)
+}

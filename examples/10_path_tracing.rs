@@ -15,16 +15,14 @@ use std::time::Instant;
 
 use clap::Parser;
 use indicatif::ProgressBar;
-use render_lessons::Result;
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::convergence::{Part, Renders, Study, ladder};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
-use render_lessons::pathtrace::scenes::{self, SceneName};
-use render_lessons::pathtrace::{LensCamera, Passes, PixelSampling, Sampling, Settings};
-use render_lessons::scene::Scene;
+use render_lessons::pathtrace::scenes::SceneName;
+use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
@@ -77,28 +75,6 @@ pub struct Args {
     pub output: Output,
 }
 
-// ANCHOR: setup
-/// The scene `which` at `width` x `height` pixels and its camera, with a lens of
-/// radius `aperture` focused at `focus` (aperture 0: the scene's pinhole camera).
-pub fn scene(
-    which: SceneName,
-    (width, height): (u32, u32),
-    aperture: f32,
-    focus: f32,
-) -> Result<(Scene, LensCamera)> {
-    let (scene, camera) = match which {
-        SceneName::Cornell => scenes::cornell(width, height)?,
-        SceneName::TwoLights => scenes::two_lights(width, height)?,
-        SceneName::Furnace => scenes::interior_furnace(width, height)?,
-        SceneName::GreyFurnace => scenes::grey_furnace(width, height, glam::Vec3::ZERO)?,
-    };
-    match aperture {
-        0.0 => Ok((scene, camera)),
-        _ => Ok((scene, camera.with_lens(aperture, focus)?)),
-    }
-}
-// ANCHOR_END: setup
-
 // ANCHOR: numbers
 /// The lesson's tables for the `scene`: error against the reference as samples grow,
 /// and the four strategies side by side. Independent of timing and thread count.
@@ -138,12 +114,15 @@ pub fn numbers(scene: SceneName, study: &Study, renders: &Renders) -> String {
 // ANCHOR_END: numbers
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let start = Instant::now();
-        let size = (args.width, args.height);
-        let (scene, camera) = scene(args.scene, size, args.aperture, args.focus)?;
         // ANCHOR: render
+        let (scene, pinhole) = args.scene.build(args.width, args.height)?;
+        let camera = match args.aperture {
+            0.0 => pinhole,
+            aperture => pinhole.with_lens(aperture, args.focus)?,
+        };
         let study = Study {
             settings: Settings {
                 sampling: args.sampling,

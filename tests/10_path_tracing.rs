@@ -52,8 +52,11 @@ fn small_args(extra: &[&str]) -> lesson::Args {
 
 /// What `main` does with the flags: the scene, the study, and its images.
 fn render(args: &lesson::Args) -> render_lessons::Result<(Study, Renders)> {
-    let size = (args.width, args.height);
-    let (scene, camera) = lesson::scene(args.scene, size, args.aperture, args.focus)?;
+    let (scene, pinhole) = args.scene.build(args.width, args.height)?;
+    let camera = match args.aperture {
+        0.0 => pinhole,
+        aperture => pinhole.with_lens(aperture, args.focus)?,
+    };
     let study = Study {
         settings: Settings {
             sampling: args.sampling,

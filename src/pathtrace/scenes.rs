@@ -23,6 +23,18 @@ pub enum SceneName {
     GreyFurnace,
 }
 
+impl SceneName {
+    /// The scene at `width` x `height` pixels, and its pinhole camera.
+    pub fn build(self, width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+        match self {
+            SceneName::Cornell => cornell(width, height),
+            SceneName::TwoLights => two_lights(width, height),
+            SceneName::Furnace => interior_furnace(width, height),
+            SceneName::GreyFurnace => grey_furnace(width, height, Vec3::ZERO),
+        }
+    }
+}
+
 /// A pinhole camera at `eye` looking at `target` (up +Y), its screen at distance 1
 /// spanning `half_height` above and below the centre, width by the aspect ratio.
 pub fn look_camera(

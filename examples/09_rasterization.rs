@@ -1,10 +1,9 @@
 //! Lesson 09: the rasterization pipeline of Lecture 2, side by side with ray casting.
 //!
-//! Lesson 08's scene again, drawn triangle by triangle: the spheres become meshes
-//! (a rasterizer only draws triangles), the infinite floor a large square. The ray
-//! caster's image of the true scene is the reference. The lesson measures the
-//! lecture's claim: rasterization is fast, but not realistic. It has no shadows
-//! until a second trick (a shadow map) adds them, with artefacts of its own.
+//! Lesson 08's scene drawn triangle by triangle (the spheres become meshes, the
+//! infinite floor a large square) and compared with the ray caster's image of the
+//! true scene. The lecture's claim, measured: rasterization is fast but not realistic;
+//! it has no shadows until a second trick (a shadow map) adds them, with artefacts.
 //!
 //!     cargo run --release --example 09_rasterization
 //!     cargo run --release --example 09_rasterization -- --width 1920 --height 1080
@@ -15,20 +14,15 @@ use std::time::Instant;
 
 use clap::Parser;
 use glam::Vec3;
-use render_lessons::camera::Camera;
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num};
-use render_lessons::framebuffer::Framebuffer;
-use render_lessons::offset::Offset;
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
-use render_lessons::raster::{Agreement, FLOOR_DEPTH, Instance, Settings, Shadows};
-use render_lessons::raster::{TOLERANCE, agreement, difference, rasterize, reference, tessellate};
-use render_lessons::raycast::lit;
-use render_lessons::render::render;
-use render_lessons::scene::Scene;
+use render_lessons::raster::{Agreement, Instance, Shadows, TOLERANCE, agreement, difference};
+use render_lessons::raster::{floor_settings, point_light, rasterize, reference, tessellate};
 use render_lessons::scenes::{LESSON08_OBJECTS, TORUS_OBJ, lesson08, lesson08_pinhole};
 use render_lessons::scenes::{lesson08_shadows, lesson09_mesh, lesson09_mesh_scene};
-use render_lessons::{Error, Result};
+use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, offset::Offset};
+use render_lessons::{raycast::lit, render::render, scene::Scene};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
@@ -61,12 +55,11 @@ struct Args {
 }
 
 /// What the lesson produces: its images by file name, each rasterized image against
-/// its ray-cast reference away from silhouettes, and how long each renderer took.
+/// its ray-cast reference away from silhouettes (label, reference, agreement), and
+/// how long each renderer took, in seconds.
 pub struct Lesson {
     pub images: Vec<(&'static str, Framebuffer)>,
-    /// Label, reference image, agreement.
     pub agreements: Vec<(&'static str, &'static str, Agreement)>,
-    /// What was timed, and how long it took in seconds.
     pub times: Times,
 }
 
@@ -79,7 +72,6 @@ fn timed<T>(times: &mut Times, what: &'static str, work: impl FnOnce() -> T) -> 
     result
 }
 
-// ANCHOR: images
 /// Renders everything: the ray-cast reference, the scene tessellated with `segments`
 /// and rasterized (per pixel, per vertex), the shadows both ways (the map with its
 /// bias, none, and 50 times too much), and the floor with `mesh`, both ways.
@@ -92,39 +84,29 @@ pub fn images(
     threads: Option<usize>,
 ) -> Result<Lesson> {
     let instances = tessellate(scene, segments)?;
-    let light = scene.light().ok_or(Error::Invalid {
-        param: "scene",
-        reason: "needs a point light for lesson 09",
-    })?;
-    let lesson = Settings {
-        depth: FLOOR_DEPTH,
-        background: scene.background(),
-        ..Settings::default()
-    };
+    let light = point_light(scene)?;
     let draw = |instances: &[Instance], shading, shadows| {
-        let settings = lesson.with(shading, shadows);
+        let settings = floor_settings(scene).with(shading, shadows);
         rasterize(instances, camera, &light, &settings, threads)
     };
-    let lit_pixels = |instances: &[Instance], shadows| draw(instances, PerPixel, shadows);
     let cast = |scene| reference(scene, camera, threads);
     let traced = || render(camera, threads, |r| lit(scene, r, Offset::Scaled));
-    let mapped = |bias| lit_pixels(&instances, Some(shadows.with_bias(bias)));
+    let mapped = |bias| draw(&instances, PerPixel, Some(shadows.with_bias(bias)));
     let meshed = lesson09_mesh_scene(scene, mesh)?;
     let floor_and_mesh = [instances[0].clone(), mesh.clone()];
-    let bias = shadows.bias;
     let t = &mut Vec::new();
     let ray_cast = timed(t, "ray cast, analytic scene", || cast(scene))?;
     let per_vertex = draw(&instances, PerVertex, None)?;
     let per_pixel = timed(t, "rasterized, per-pixel shading", || {
-        lit_pixels(&instances, None)
+        draw(&instances, PerPixel, None)
     })?;
     let shadow_ray = timed(t, "ray cast with shadow rays", traced)?;
-    let shadow_map = timed(t, "rasterized with a shadow map", || mapped(bias))?;
+    let shadow_map = timed(t, "rasterized with a shadow map", || mapped(shadows.bias))?;
     let mesh_ray_cast = timed(t, "ray cast, floor + mesh", || cast(&meshed))?;
     let mesh_raster = timed(t, "rasterized, floor + mesh", || {
-        lit_pixels(&floor_and_mesh, None)
+        draw(&floor_and_mesh, PerPixel, None)
     })?;
-    let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * bias)?);
+    let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
     // Each rasterized image against its ray-cast counterpart, away from silhouettes.
     let mask = &ray_cast.silhouettes;
     let cast = ("ray_cast.png", &ray_cast.image, mask);
@@ -158,7 +140,6 @@ pub fn images(
         times: std::mem::take(t),
     })
 }
-// ANCHOR_END: images
 
 /// The lesson's tables: the scene as triangles, and how far each rasterized image is
 /// from its ray-cast counterpart. No timings: they go to the terminal only.
@@ -175,17 +156,14 @@ pub fn numbers(scene: &Scene, segments: u32, mesh: &Instance, lesson: &Lesson) -
     let (v, t) = (mesh.mesh.positions.len(), mesh.mesh.triangles.len());
     let name = "mesh (torus.obj, flat)";
     counts.row(vec![name.into(), v.to_string(), t.to_string()]);
-
     let (width, height) = (lesson.images[0].1.width(), lesson.images[0].1.height());
     let tolerance = num(f64::from(TOLERANCE * 255.0), 0);
     let mut columns = vec!["rasterized image", "reference", "compared"];
     columns.extend(["differing", "agree", "max difference"]);
-    let mut compare = Table::new(
-        &format!(
-            "Against the ray caster, {width} x {height} pixels, away from silhouettes (more than {tolerance}/255 apart in a channel counts as different)"
-        ),
-        &columns,
+    let title = format!(
+        "Against the ray caster, {width} x {height} pixels, away from silhouettes (more than {tolerance}/255 apart in a channel counts as different)"
     );
+    let mut compare = Table::new(&title, &columns);
     for (label, reference, a) in &lesson.agreements {
         compare.row(vec![
             label.to_string(),

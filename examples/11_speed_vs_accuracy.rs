@@ -19,8 +19,8 @@ use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
-use render_lessons::raster::{FLOOR_DEPTH, Settings, Shading, agreement, rasterize, reference};
-use render_lessons::raster::{TOLERANCE, tessellate};
+use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, reference};
+use render_lessons::raster::{TOLERANCE, point_light, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows};
@@ -110,10 +110,7 @@ fn best_ms<T>(repeats: u32, mut work: impl FnMut() -> Result<T>) -> Result<(f64,
 pub fn lessons(quality: Quality) -> Result<Measured> {
     let scene = lesson08(glam::Vec3::ZERO)?;
     let camera = lesson08_pinhole(480, 270)?;
-    let light = scene.light().ok_or(Error::Invalid {
-        param: "scene",
-        reason: "lesson 11 needs a point light",
-    })?;
+    let light = point_light(&scene)?;
     let mask = reference(&scene, &camera, None)?.silhouettes;
     let repeats = quality.pick(2, 5);
     let (traced_ms, traced) = best_ms(repeats, || {
@@ -121,12 +118,7 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     })?;
     let raster = |segments: u32, shadows| -> Result<(f64, f64)> {
         let instances = tessellate(&scene, segments)?;
-        let settings = Settings {
-            depth: FLOOR_DEPTH,
-            background: scene.background(),
-            ..Settings::default()
-        }
-        .with(Shading::PerPixel, shadows);
+        let settings = floor_settings(&scene).with(Shading::PerPixel, shadows);
         let (ms, image) = best_ms(repeats, || {
             rasterize(&instances, &camera, &light, &settings, None)
         })?;

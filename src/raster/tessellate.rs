@@ -1,9 +1,9 @@
 //! Tessellation: a scene of analytic primitives (lesson 08's) as triangle meshes,
 //! the only thing a rasterizer draws.
 
-use super::{DepthRange, Instance, Mesh};
+use super::{DepthRange, Instance, Mesh, Settings};
 use crate::error::{Error, Result};
-use crate::scene::Scene;
+use crate::scene::{PointLight, Scene};
 use crate::shapes::Shape;
 
 /// Side of the square that stands in for an infinite floor.
@@ -40,3 +40,21 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Instance>> {
     Ok(instances)
 }
 // ANCHOR_END: tessellate
+
+/// How to rasterize a tessellated scene: depth range [`FLOOR_DEPTH`], the scene's
+/// background, per-pixel shading, no culling, no shadows.
+pub fn floor_settings(scene: &Scene) -> Settings {
+    Settings {
+        depth: FLOOR_DEPTH,
+        background: scene.background(),
+        ..Settings::default()
+    }
+}
+
+/// The scene's point light: the one light a rasterizer shades with.
+pub fn point_light(scene: &Scene) -> Result<PointLight> {
+    scene.light().ok_or(Error::Invalid {
+        param: "scene",
+        reason: "needs a point light to be rasterized",
+    })
+}

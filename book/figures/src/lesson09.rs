@@ -11,7 +11,7 @@ use render_lessons::framebuffer::{Framebuffer, to_srgb8};
 use render_lessons::offset::Offset;
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
-use render_lessons::raster::{FLOOR_DEPTH, Instance, Pipeline, Settings, Shadows};
+use render_lessons::raster::{Instance, Pipeline, Shadows, floor_settings, point_light};
 use render_lessons::raster::{rasterize, rasterize_triangle, reference, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
@@ -29,15 +29,8 @@ pub fn figures(output: &Output) -> Result<()> {
     let shadows = lesson08_shadows(1024, 1.0);
     let mesh = lesson09_mesh(std::path::Path::new(TORUS_OBJ))?;
     let instances = tessellate(&scene, 64)?;
-    let light = scene.light().ok_or(Error::Invalid {
-        param: "scene",
-        reason: "needs a point light for lesson 09",
-    })?;
-    let book = Settings {
-        depth: FLOOR_DEPTH,
-        background: scene.background(),
-        ..Settings::default()
-    };
+    let light = point_light(&scene)?;
+    let book = floor_settings(&scene);
     let draw = |instances: &[Instance], shading, shadows: Option<Shadows>| {
         rasterize(
             instances,

@@ -6,11 +6,12 @@ use glam::Vec3;
 
 // ANCHOR: observer
 /// What a path tracer can be watched doing, one call per event of a path; every
-/// method does nothing unless implemented. `()` watches nothing, and with it
-/// [`radiance_observed`](crate::pathtrace::estimator::radiance_observed) compiles to
-/// [`radiance`](crate::pathtrace::estimator::radiance)'s loop alone.
+/// method does nothing unless implemented. `()` watches nothing: it is what
+/// [`radiance`](crate::pathtrace::estimator::radiance) passes, and the compiler
+/// drops its calls, so the renders pay nothing for the hook.
 pub trait PathObserver {
-    /// The path met object `index` (of [`Scene::objects`](crate::scene::Scene::objects)) at `point`.
+    /// The path met object `index` (of
+    /// [`Scene::objects`](crate::scene::Scene::objects)) at `point`.
     fn vertex(&mut self, _point: Vec3, _index: usize) {}
     /// At the last vertex (diffuse), next event estimation aimed at `point` on a
     /// light; `unoccluded`: the point faces the vertex and its shadow ray got through.

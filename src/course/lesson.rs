@@ -163,7 +163,7 @@ pub fn pixels(flag: &'static str, value: u32, max: u32) -> Result<u32> {
 /// `(min, max)` if `min < max` and the span between them is a finite number; the
 /// error names `flags`, the two flags that set them (`"--x-min/--x-max"`).
 pub fn extent(flags: &'static str, min: f32, max: f32) -> Result<(f32, f32)> {
-    if !(min < max) {
+    if min.partial_cmp(&max) != Some(std::cmp::Ordering::Less) {
         return Err(crate::error::Error::EmptyRange {
             param: flags,
             min,

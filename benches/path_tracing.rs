@@ -30,8 +30,8 @@ use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes;
 use render_lessons::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling};
-use render_lessons::scene::Scene;
 use render_lessons::pathtrace::{Settings, SphereSampling};
+use render_lessons::scene::Scene;
 
 /// The lesson's settings (examples/10_path_tracing.rs with its defaults) with
 /// `sampling`: depth at most 8, Russian roulette, cone-sampled spheres.

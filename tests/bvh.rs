@@ -42,10 +42,7 @@ impl Rng {
 }
 
 fn object(shape: Shape) -> Object {
-    Object {
-        shape,
-        colour: Vec3::splat(0.5),
-    }
+    Object::diffuse(shape, Vec3::splat(0.5))
 }
 
 fn scene(objects: Vec<Object>) -> Scene {
@@ -53,7 +50,9 @@ fn scene(objects: Vec<Object>) -> Scene {
         position: Vec3::new(0.0, 10.0, 0.0),
         intensity: Vec3::ONE,
     };
-    Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light)).unwrap()
+    Scene::new(objects, Vec3::ZERO)
+        .and_then(|s| s.with_light(light))
+        .unwrap()
 }
 
 fn mesh_objects(mesh: &Mesh) -> Vec<Object> {

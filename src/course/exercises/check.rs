@@ -23,7 +23,7 @@ use crate::basis::Basis;
 use crate::camera::{Film, Frame, PinholeCamera, camera_basis};
 use crate::raster::rasterize::covers;
 use crate::ray::Ray;
-use crate::scene::{Object, PointLight, Scene};
+use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Shape, Sphere};
 
 /// The result of checking one exercise.
@@ -1041,19 +1041,11 @@ pub fn check_closest(f: impl Fn(&Ray, &[Shape], f32, f32) -> Option<(usize, f32)
                 .iter()
                 .map(|shape| Object::diffuse(shape.clone(), Vec3::ONE))
                 .collect();
-            let light = PointLight {
-                position: Vec3::ZERO,
-                intensity: Vec3::ONE,
-            };
-            let scene = Scene::new(objects, Vec3::ZERO).and_then(|s| s.with_light(light)).expect("valid scene");
-            scene.closest_hit(ray, *t_min, *t_max).map(|(hit, object)| {
-                let index = scene
-                    .objects()
-                    .iter()
-                    .position(|o| std::ptr::eq(o, object))
-                    .expect("an object of the scene");
-                (index, hit.t)
-            })
+            // A closest-hit query needs no light.
+            let scene = Scene::new(objects, Vec3::ZERO).expect("valid scene");
+            scene
+                .closest(ray, *t_min, *t_max)
+                .map(|(hit, index)| (index, hit.t))
         },
         |(ray, shapes, t_min, t_max)| f(&ray, &shapes, t_min, t_max),
         &[

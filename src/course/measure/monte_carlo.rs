@@ -21,12 +21,12 @@ use rayon::prelude::*;
 use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale, log_log_slope};
 use crate::error::Result;
-use crate::pathtrace::light::{self, SphereSampling};
 use crate::material::Material;
-use crate::scene::{Object, Scene};
+use crate::pathtrace::light::{self, SphereSampling};
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::pathtrace::{Rng, radiance};
 use crate::ray::Ray;
+use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Shape, Sphere};
 
 /// The light's radius R: the floor point reflects exactly R^2 = 0.0625.

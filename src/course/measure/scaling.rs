@@ -39,7 +39,10 @@ pub fn fan_scene(k: u32) -> Result<Scene> {
     };
     let objects = (0..k)
         .map(|i| {
-            Ok(Object::diffuse(Shape::Triangle(Triangle::new(Vec3::ZERO, corner(i), corner(i + 1))?), Vec3::new(0.8, 0.5, 0.3)))
+            Ok(Object::diffuse(
+                Shape::Triangle(Triangle::new(Vec3::ZERO, corner(i), corner(i + 1))?),
+                Vec3::new(0.8, 0.5, 0.3),
+            ))
         })
         .collect::<Result<Vec<_>>>()?;
     let light = PointLight {

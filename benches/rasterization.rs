@@ -15,7 +15,7 @@ use glam::Vec3;
 use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::lighting::lambert;
-use render_lessons::raster::{Cull, Instance, Mesh, Settings, rasterize};
+use render_lessons::raster::{Cull, Mesh, Model, RasterSettings, rasterize};
 use render_lessons::raycast::lit_unshadowed;
 use render_lessons::render::render;
 use render_lessons::scene::{PointLight, Scene};
@@ -69,14 +69,14 @@ fn raster(c: &mut Criterion) {
     group.sample_size(10);
     for (name, mesh) in meshes {
         let triangles = mesh.triangles.len() as u64;
-        let instances = [Instance::new(mesh, Vec3::new(0.8, 0.5, 0.3))];
+        let instances = [Model::new(mesh, Vec3::new(0.8, 0.5, 0.3))];
         group.throughput(Throughput::Elements(triangles));
         // Both faces, as the lessons draw open meshes; then with back faces culled, as
         // a rasterizer draws a closed mesh (the hidden half is never rasterized).
         for cull in [Cull::None, Cull::Back] {
-            let settings = Settings {
+            let settings = RasterSettings {
                 cull,
-                ..Settings::default()
+                ..RasterSettings::default()
             };
             group.bench_function(format!("{name}, {triangles} triangles, {cull:?}"), |b| {
                 b.iter(|| rasterize(&instances, &camera, &LIGHT, &settings, Some(1)))

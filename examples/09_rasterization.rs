@@ -17,7 +17,7 @@ use glam::Vec3;
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
-use render_lessons::raster::{Agreement, Instance, Shadows, TOLERANCE, agreement, difference};
+use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, difference};
 use render_lessons::raster::{floor_settings, point_light, rasterize, reference, tessellate};
 use render_lessons::scenes::{LESSON08_OBJECTS, TORUS_OBJ, lesson08, lesson08_pinhole};
 use render_lessons::scenes::{lesson08_shadows, lesson09_mesh, lesson09_mesh_scene};
@@ -80,12 +80,12 @@ pub fn images(
     camera: &Camera,
     segments: u32,
     shadows: Shadows,
-    mesh: &Instance,
+    mesh: &Model,
     threads: Option<usize>,
 ) -> Result<Lesson> {
     let instances = tessellate(scene, segments)?;
     let light = point_light(scene)?;
-    let draw = |instances: &[Instance], shading, shadows| {
+    let draw = |instances: &[Model], shading, shadows| {
         let settings = floor_settings(scene).with(shading, shadows);
         rasterize(instances, camera, &light, &settings, threads)
     };
@@ -143,7 +143,7 @@ pub fn images(
 
 /// The lesson's tables: the scene as triangles, and how far each rasterized image is
 /// from its ray-cast counterpart. No timings: they go to the terminal only.
-pub fn numbers(scene: &Scene, segments: u32, mesh: &Instance, lesson: &Lesson) -> Result<String> {
+pub fn numbers(scene: &Scene, segments: u32, mesh: &Model, lesson: &Lesson) -> Result<String> {
     let columns = ["object", "vertices", "triangles"];
     let mut counts = Table::new("The scene as triangles", &columns);
     let mut total = 0;

@@ -8,7 +8,7 @@ use glam::Vec3;
 
 use crate::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use crate::error::Result;
-use crate::raster::{Instance, Mesh, Shadows};
+use crate::raster::{Mesh, Model, Shadows};
 use crate::scene::{Object, PointLight, Scene};
 use crate::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 use crate::transform::Transform;
@@ -107,10 +107,10 @@ pub const TORUS_OBJ: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/meshes/
 /// The mesh of the OBJ file at `path`, placed in lesson 08's scene where lesson 09
 /// draws it: standing on the floor at the front right, tilted towards the camera,
 /// flat shaded (one normal per triangle, as the ray caster sees triangles).
-pub fn lesson09_mesh(path: &Path) -> Result<Instance> {
+pub fn lesson09_mesh(path: &Path) -> Result<Model> {
     let mesh = Mesh::from_obj(path)?.flat_shaded()?;
     let model = Transform::rotation_x(-0.5)?.then(Transform::translation(2.2, 0.75, 1.6)?);
-    Ok(Instance {
+    Ok(Model {
         mesh,
         model,
         colour: Vec3::new(0.8, 0.55, 0.3),
@@ -120,7 +120,7 @@ pub fn lesson09_mesh(path: &Path) -> Result<Instance> {
 /// The floor of `scene` (its first object) with `mesh` standing on it, as the ray
 /// caster sees them: the mesh's triangles as primitives, the same background and
 /// light.
-pub fn lesson09_mesh_scene(scene: &Scene, mesh: &Instance) -> Result<Scene> {
+pub fn lesson09_mesh_scene(scene: &Scene, mesh: &Model) -> Result<Scene> {
     let mut objects = scene.objects()[..1].to_vec();
     objects.extend(mesh.objects()?);
     let floor_and_mesh = Scene::new(objects, scene.background())?;

@@ -13,8 +13,8 @@ use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Error;
 use render_lessons::raster::{
-    ClipVertex, Cull, DepthRange, Instance, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Pipeline,
-    ScreenVertex, Settings, Shading, ShadowMap, Shadows, Varyings, clip_triangle, rasterize,
+    ClipVertex, Cull, DepthRange, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Model, Pipeline,
+    RasterSettings, ScreenVertex, Shading, ShadowMap, Shadows, Varyings, clip_triangle, rasterize,
     rasterize_triangle,
 };
 use render_lessons::raster::{TOLERANCE, agreement, reference};
@@ -320,16 +320,16 @@ fn quad(z: f32, half: f32) -> Mesh {
 #[test]
 fn z_buffer_order_does_not_matter() {
     let camera: Camera = PinholeCamera::at_origin(film(), 1.0).unwrap().into();
-    let near = Instance::new(quad(-3.0, 1.0), Vec3::new(1.0, 0.2, 0.2));
-    let far = Instance::new(quad(-5.0, 6.0), Vec3::new(0.2, 0.2, 1.0));
+    let near = Model::new(quad(-3.0, 1.0), Vec3::new(1.0, 0.2, 0.2));
+    let far = Model::new(quad(-5.0, 6.0), Vec3::new(0.2, 0.2, 1.0));
     let light = PointLight {
         position: Vec3::new(0.0, 0.0, 2.0),
         intensity: Vec3::splat(20.0),
     };
     for shading in [Shading::PerVertex, Shading::PerPixel] {
-        let settings = Settings {
+        let settings = RasterSettings {
             shading,
-            ..Settings::default()
+            ..RasterSettings::default()
         };
         let a = rasterize(
             &[near.clone(), far.clone()],
@@ -481,13 +481,13 @@ fn near_plane_clipping() {
     )
     .unwrap();
     for shading in [Shading::PerVertex, Shading::PerPixel] {
-        let settings = Settings {
+        let settings = RasterSettings {
             depth: DEPTH,
             shading,
-            ..Settings::default()
+            ..RasterSettings::default()
         };
         let image = rasterize(
-            &[Instance::new(mesh.clone(), Vec3::ONE)],
+            &[Model::new(mesh.clone(), Vec3::ONE)],
             &camera,
             &LIGHT,
             &settings,
@@ -584,25 +584,25 @@ fn obj_files() {
 #[test]
 fn same_image_for_any_thread_count() {
     let instances = vec![
-        Instance::new(
+        Model::new(
             Mesh::uv_sphere(Vec3::new(0.0, 0.0, -4.0), 1.0, 24, 12).unwrap(),
             Vec3::new(0.9, 0.3, 0.2),
         ),
-        Instance::new(
+        Model::new(
             Mesh::uv_sphere(Vec3::new(1.5, 0.5, -6.0), 1.2, 24, 12).unwrap(),
             Vec3::new(0.2, 0.8, 0.3),
         ),
-        Instance::new(quad(-7.0, 4.0), Vec3::splat(0.7)),
+        Model::new(quad(-7.0, 4.0), Vec3::splat(0.7)),
     ];
     let camera: Camera = pinhole().into();
     let film = Film::new(96, 54, (-1.6, 1.6), (-0.9, 0.9)).unwrap();
     let camera2: Camera = PinholeCamera::at_origin(film, 1.0).unwrap().into();
     for camera in [camera, camera2, ortho().into()] {
         for shading in [Shading::PerVertex, Shading::PerPixel] {
-            let settings = Settings {
+            let settings = RasterSettings {
                 shading,
                 cull: Cull::Back,
-                ..Settings::default()
+                ..RasterSettings::default()
             };
             let one = rasterize(&instances, &camera, &LIGHT, &settings, Some(1)).unwrap();
             for threads in [Some(2), Some(5), None] {
@@ -618,7 +618,7 @@ fn same_image_for_any_thread_count() {
 
 /// The lesson at its defaults, as `main` runs it: the scene, the tessellation of 64
 /// segments, the 1024^2 shadow map with a bias of 1, and the torus.
-fn book_lesson() -> (Scene, Instance, lesson::Lesson) {
+fn book_lesson() -> (Scene, Model, lesson::Lesson) {
     let scene = lesson08(Vec3::ZERO).unwrap();
     let camera = lesson08_pinhole(480, 270).unwrap();
     let mesh = lesson09_mesh(Path::new(TORUS_OBJ)).unwrap();
@@ -724,10 +724,10 @@ fn unshadowed_lambert_is_lambert_where_nothing_blocks_the_light() {
     assert!(same > 4 * shadowed && shadowed > 0, "{same} {shadowed}");
 }
 
-fn floor_and_blocker() -> Vec<Instance> {
+fn floor_and_blocker() -> Vec<Model> {
     vec![
-        Instance::new(Mesh::floor(Vec3::ZERO, 20.0).unwrap(), Vec3::ONE),
-        Instance::new(
+        Model::new(Mesh::floor(Vec3::ZERO, 20.0).unwrap(), Vec3::ONE),
+        Model::new(
             Mesh::cuboid(Vec3::new(-1.0, 2.0, -1.0), Vec3::new(1.0, 2.5, 1.0)).unwrap(),
             Vec3::ONE,
         ),
@@ -772,7 +772,7 @@ fn shadow_map_bias_trades_acne_for_detached_shadows() {
         position: Vec3::new(6.0, 3.0, 0.0),
         intensity: Vec3::splat(50.0),
     };
-    let floor = [Instance::new(
+    let floor = [Model::new(
         Mesh::floor(Vec3::ZERO, 20.0).unwrap(),
         Vec3::ONE,
     )];
@@ -824,10 +824,10 @@ fn shadow_map_bad_input_names_the_parameter() {
 #[test]
 fn shadowed_rasterization_is_the_same_on_any_number_of_threads() {
     let camera: Camera = pinhole().into();
-    let settings = Settings {
+    let settings = RasterSettings {
         depth: DEPTH,
         shadows: Some(shadows(1.0)),
-        ..Settings::default()
+        ..RasterSettings::default()
     };
     let draw = |threads| rasterize(&floor_and_blocker(), &camera, &OVERHEAD, &settings, threads);
     assert_eq!(draw(Some(1)).unwrap(), draw(Some(2)).unwrap());

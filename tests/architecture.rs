@@ -141,6 +141,39 @@ fn dependencies_flow_one_way_and_the_renderer_never_imports_the_course() {
 }
 
 #[test]
+fn the_renderer_knows_nothing_of_command_lines() {
+    let mut sources = BTreeMap::new();
+    modules(Path::new("src"), &[], &mut sources);
+    for (module, code) in sources {
+        if top(&module) != "course" {
+            assert!(
+                !code.contains("clap"),
+                "{module} uses clap: flags belong in course/"
+            );
+        }
+    }
+}
+
+#[test]
+fn no_two_public_types_share_a_name() {
+    let mut sources = BTreeMap::new();
+    modules(Path::new("src"), &[], &mut sources);
+    let mut seen: BTreeMap<String, String> = BTreeMap::new();
+    for (module, code) in sources {
+        let words: Vec<&str> = code.split_whitespace().collect();
+        for w in words.windows(3) {
+            if w[0] == "pub" && ["struct", "enum", "type", "trait"].contains(&w[1]) {
+                let name: String = w[2].chars().take_while(|c| c.is_alphanumeric()).collect();
+                if let Some(other) = seen.insert(name.clone(), module.clone()) {
+                    panic!("two public types called {name}: in {other} and {module}");
+                }
+            }
+        }
+    }
+    assert!(seen.contains_key("Scene") && seen.contains_key("Model"));
+}
+
+#[test]
 fn no_import_cycle_between_files() {
     let graph = graph();
     // Depth-first search; a back edge closes a cycle.

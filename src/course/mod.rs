@@ -6,12 +6,14 @@
 //! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
+//! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
 //! - [`measure`]: lesson 11's measurements, one file per chart;
 //! - [`exercises`]: the coding exercises and the harness that checks them.
 
 pub mod chart;
 pub mod diagram;
 pub mod exercises;
+pub mod flags;
 pub mod lesson;
 pub mod measure;
 pub mod report;

@@ -11,7 +11,7 @@ use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
 
 /// The lesson's scenes, by the names its `--scene` flag takes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SceneName {
     /// smallpt's Cornell box, walls as planes, a square ceiling light.
     Cornell,
@@ -24,6 +24,14 @@ pub enum SceneName {
 }
 
 impl SceneName {
+    /// Every scene, in the order `--help` lists them.
+    pub const ALL: [SceneName; 4] = [
+        SceneName::Cornell,
+        SceneName::TwoLights,
+        SceneName::Furnace,
+        SceneName::GreyFurnace,
+    ];
+
     /// The scene at `width` x `height` pixels, and its pinhole camera.
     pub fn build(self, width: u32, height: u32) -> Result<(Scene, LensCamera)> {
         match self {

@@ -48,17 +48,6 @@ impl Sampling {
     }
 }
 
-/// `--sampling uniform|cosine|nee|mis`.
-impl clap::ValueEnum for Sampling {
-    fn value_variants<'a>() -> &'a [Sampling] {
-        &Sampling::ALL
-    }
-
-    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
-        Some(clap::builder::PossibleValue::new(self.flag()).help(self.name()))
-    }
-}
-
 /// Everything that chooses how a path is traced.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {

@@ -46,7 +46,7 @@ pub const BAND_ROWS: u32 = 16;
 
 /// A mesh placed in the world by a model transform, with one colour (linear RGB albedo).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Instance {
+pub struct Model {
     /// The vertex and triangle lists.
     pub mesh: Mesh,
     /// Model space to world space.
@@ -55,10 +55,10 @@ pub struct Instance {
     pub colour: Vec3,
 }
 
-impl Instance {
+impl Model {
     /// `mesh` as it is (model = identity), coloured `colour`.
-    pub fn new(mesh: Mesh, colour: Vec3) -> Instance {
-        Instance {
+    pub fn new(mesh: Mesh, colour: Vec3) -> Model {
+        Model {
             mesh,
             model: Transform::IDENTITY,
             colour,
@@ -66,7 +66,7 @@ impl Instance {
     }
 
     /// The mesh as the ray caster sees it, placed in the world: one triangle
-    /// primitive per triangle, coloured [`Instance::colour`].
+    /// primitive per triangle, coloured [`Model::colour`].
     pub fn objects(&self) -> Result<Vec<Object>> {
         let mut world = self.mesh.clone();
         for p in &mut world.positions {
@@ -78,7 +78,7 @@ impl Instance {
 
 /// Everything about a rasterization that is not the scene or the camera.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Settings {
+pub struct RasterSettings {
     /// Near and far planes.
     pub depth: DepthRange,
     /// Per vertex or per pixel.
@@ -91,10 +91,10 @@ pub struct Settings {
     pub shadows: Option<Shadows>,
 }
 
-impl Settings {
+impl RasterSettings {
     /// These settings with `shading` and `shadows` instead.
-    pub fn with(self, shading: Shading, shadows: Option<Shadows>) -> Settings {
-        Settings {
+    pub fn with(self, shading: Shading, shadows: Option<Shadows>) -> RasterSettings {
+        RasterSettings {
             shading,
             shadows,
             ..self
@@ -102,11 +102,11 @@ impl Settings {
     }
 }
 
-impl Default for Settings {
+impl Default for RasterSettings {
     /// Near 0.1, far 1000, per-pixel shading, no culling, black background, no
     /// shadows.
-    fn default() -> Settings {
-        Settings {
+    fn default() -> RasterSettings {
+        RasterSettings {
             depth: DepthRange {
                 near: 0.1,
                 far: 1000.0,
@@ -149,10 +149,10 @@ impl Lights<'_> {
 /// pipeline, with a shadow map first if `settings` asks for one. `threads` = `None`
 /// uses every core; the image does not depend on it.
 pub fn rasterize(
-    instances: &[Instance],
+    instances: &[Model],
     camera: &Camera,
     light: &PointLight,
-    settings: &Settings,
+    settings: &RasterSettings,
     threads: Option<usize>,
 ) -> Result<Framebuffer> {
     finite3("background", settings.background)?;
@@ -191,11 +191,11 @@ pub fn rasterize(
 /// Vertex and triangle stage: every instance's vertices transformed (and lit, for
 /// Gouraud shading), its triangles clipped and projected to screen triangles, in order.
 fn setup(
-    instances: &[Instance],
+    instances: &[Model],
     pipeline: &Pipeline,
     camera: &Camera,
     light: &PointLight,
-    settings: &Settings,
+    settings: &RasterSettings,
     shadow_map: Option<&ShadowMap>,
 ) -> Result<Vec<[ScreenVertex; 3]>> {
     let lights = Lights {
@@ -228,7 +228,7 @@ fn setup(
 /// of the model matrix), clip position (projection x view), and the colour to
 /// interpolate: lit here for Gouraud shading, the albedo for per-pixel shading.
 fn transform_vertices(
-    instance: &Instance,
+    instance: &Model,
     pipeline: &Pipeline,
     lights: &Lights,
     shading: Shading,
@@ -308,7 +308,7 @@ fn draw_band(
     width: u32,
     pixels: &mut [Vec3],
     lights: &Lights,
-    settings: &Settings,
+    settings: &RasterSettings,
 ) {
     let mut depth = vec![f32::INFINITY; pixels.len()];
     let first_row = rows.start;

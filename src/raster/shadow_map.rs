@@ -12,7 +12,7 @@
 
 use glam::Vec3;
 
-use super::{Cull, DepthRange, Instance, Pipeline, Settings, rasterize_triangle};
+use super::{Cull, DepthRange, Model, Pipeline, RasterSettings, rasterize_triangle};
 use crate::camera::{Camera, Film, Frame, MAX_RESOLUTION, PinholeCamera};
 use crate::error::{Error, Result, finite3, non_negative, positive};
 use crate::scene::PointLight;
@@ -56,7 +56,7 @@ impl ShadowMap {
     // ANCHOR: build
     /// Pass 1: rasterize `instances` from the light, keeping the nearest distance
     /// |x - light| per texel (a z-buffer that stores distance instead of depth).
-    pub fn build(instances: &[Instance], light: &PointLight, shadows: &Shadows) -> Result<Self> {
+    pub fn build(instances: &[Model], light: &PointLight, shadows: &Shadows) -> Result<Self> {
         let camera = light_camera(light.position, shadows)?;
         let (lo, hi) = camera.film().x_extent();
         let texel_angle = (hi - lo) / shadows.size as f32;
@@ -65,10 +65,10 @@ impl ShadowMap {
             far: 1e3 * shadows.radius + (shadows.centre - light.position).length(),
         };
         let pipeline = Pipeline::new(&camera, depth)?;
-        let settings = Settings {
+        let settings = RasterSettings {
             depth,
             cull: Cull::None,
-            ..Settings::default()
+            ..RasterSettings::default()
         };
         let triangles = super::setup(instances, &pipeline, &camera, light, &settings, None)?;
         let size = shadows.size;

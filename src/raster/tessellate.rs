@@ -1,7 +1,7 @@
 //! Tessellation: a scene of analytic primitives (lesson 08's) as triangle meshes,
 //! the only thing a rasterizer draws.
 
-use super::{DepthRange, Instance, Mesh, Settings};
+use super::{DepthRange, Mesh, Model, RasterSettings};
 use crate::error::{Error, Result};
 use crate::scene::{PointLight, Scene};
 use crate::shapes::Shape;
@@ -20,7 +20,7 @@ pub const FLOOR_DEPTH: DepthRange = DepthRange {
 /// The scene as triangle meshes, object by object in the same order: a sphere
 /// becomes a uv sphere of `segments` x `segments / 2`, a box 12 triangles, a plane
 /// a square of side [`FLOOR_SIZE`], a triangle itself.
-pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Instance>> {
+pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
     let mut instances = Vec::new();
     for object in scene.objects() {
         let mesh = match &object.shape {
@@ -35,7 +35,7 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Instance>> {
                 });
             }
         };
-        instances.push(Instance::new(mesh, object.colour()));
+        instances.push(Model::new(mesh, object.colour()));
     }
     Ok(instances)
 }
@@ -43,11 +43,11 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Instance>> {
 
 /// How to rasterize a tessellated scene: depth range [`FLOOR_DEPTH`], the scene's
 /// background, per-pixel shading, no culling, no shadows.
-pub fn floor_settings(scene: &Scene) -> Settings {
-    Settings {
+pub fn floor_settings(scene: &Scene) -> RasterSettings {
+    RasterSettings {
         depth: FLOOR_DEPTH,
         background: scene.background(),
-        ..Settings::default()
+        ..RasterSettings::default()
     }
 }
 

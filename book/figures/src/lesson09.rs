@@ -11,7 +11,7 @@ use render_lessons::framebuffer::{Framebuffer, to_srgb8};
 use render_lessons::offset::Offset;
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
-use render_lessons::raster::{Instance, Pipeline, Shadows, floor_settings, point_light};
+use render_lessons::raster::{Model, Pipeline, Shadows, floor_settings, point_light};
 use render_lessons::raster::{rasterize, rasterize_triangle, reference, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
@@ -31,7 +31,7 @@ pub fn figures(output: &Output) -> Result<()> {
     let instances = tessellate(&scene, 64)?;
     let light = point_light(&scene)?;
     let book = floor_settings(&scene);
-    let draw = |instances: &[Instance], shading, shadows: Option<Shadows>| {
+    let draw = |instances: &[Model], shading, shadows: Option<Shadows>| {
         rasterize(
             instances,
             &camera,

@@ -6,7 +6,8 @@
 
 use glam::Vec3;
 
-use crate::scene::PointLight;
+use crate::scene::{Object, PointLight, Scene};
+use crate::shapes::Hit;
 
 /// The share of light that reaches surfaces in shadow (a crude stand-in for the
 /// light bounced around the scene, which lesson 10 computes properly).
@@ -37,3 +38,22 @@ pub fn lambert(
     colour.clamp(Vec3::splat(-f32::MAX), Vec3::splat(f32::MAX))
 }
 // ANCHOR_END: lambert
+
+/// The colour of `object` at `hit` under `scene`'s point light, by [`lambert`] on
+/// the side the ray arrived from ([`Hit::facing`]); `visible(light)` decides
+/// whether the light is seen from the hit (a shadow ray, or `true`). A scene with no
+/// point light is lit by the ambient term alone. The ray caster and the
+/// rasterizer's reference both shade their hits here.
+pub fn at_hit(
+    scene: &Scene,
+    hit: &Hit,
+    object: &Object,
+    visible: impl FnOnce(&PointLight) -> bool,
+) -> Vec3 {
+    let Some(light) = scene.light() else {
+        return object.colour() * AMBIENT;
+    };
+    lambert(hit.point, hit.facing(), object.colour(), &light, || {
+        visible(&light)
+    })
+}

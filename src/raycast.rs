@@ -2,7 +2,7 @@
 
 use glam::Vec3;
 
-use crate::lighting::{self, AMBIENT};
+use crate::lighting;
 use crate::offset::Offset;
 use crate::ray::Ray;
 use crate::scene::Scene;
@@ -20,18 +20,14 @@ pub fn shadowless(scene: &Scene, ray: &Ray) -> Vec3 {
 
 // ANCHOR: lambert
 /// One step past the slides: Lambert's cosine law from the scene's point light
-/// ([`lighting::lambert`]), with a shadow ray towards the light deciding whether it
-/// is visible. A scene without a point light is lit by the ambient term alone.
+/// ([`lighting::at_hit`]), with a shadow ray towards the light deciding whether it
+/// is visible.
 pub fn lit(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
     let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
         return scene.background();
     };
-    let Some(light) = scene.light() else {
-        return object.colour() * AMBIENT;
-    };
-    let n = hit.facing();
-    lighting::lambert(hit.point, n, object.colour(), &light, || {
-        let (origin, t_min) = offset.start(hit.point, n);
+    lighting::at_hit(scene, &hit, object, |light| {
+        let (origin, t_min) = offset.start(hit.point, hit.facing());
         let distance = (light.position - hit.point).length();
         Ray::new(origin, light.position - origin)
             .is_ok_and(|r| !scene.occluded(&r, t_min, distance))
@@ -44,12 +40,9 @@ pub fn lit(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
 /// what a rasterizer computes without a shadow trick, and the reference lesson 09
 /// compares its images against.
 pub fn lit_unshadowed(scene: &Scene, ray: &Ray) -> Vec3 {
-    let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
-        return scene.background();
-    };
-    let Some(light) = scene.light() else {
-        return object.colour() * AMBIENT;
-    };
-    lighting::lambert(hit.point, hit.facing(), object.colour(), &light, || true)
+    match scene.closest_hit(ray, 0.0, f32::INFINITY) {
+        Some((hit, object)) => lighting::at_hit(scene, &hit, object, |_| true),
+        None => scene.background(),
+    }
 }
 // ANCHOR_END: unshadowed

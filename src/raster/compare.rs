@@ -8,10 +8,9 @@ use rayon::prelude::*;
 use crate::camera::Camera;
 use crate::error::Result;
 use crate::framebuffer::Framebuffer;
-use crate::lighting::{self, AMBIENT};
+use crate::lighting;
 use crate::render::in_pool;
 use crate::scene::Scene;
-use crate::shapes::Hit;
 
 /// Colours more than this apart (linear RGB, in some channel) count as different:
 /// about one step of an 8-bit image.
@@ -46,7 +45,10 @@ pub fn reference(scene: &Scene, camera: &Camera, threads: Option<usize>) -> Resu
                 for (x, pixel) in row.iter_mut().enumerate() {
                     let ray = camera.ray(x as u32, y as u32);
                     *pixel = match scene.closest(&ray, 0.0, f32::INFINITY) {
-                        Some((hit, i)) => (unshadowed(scene, &hit, i), i),
+                        Some((hit, i)) => (
+                            lighting::at_hit(scene, &hit, &scene.objects()[i], |_| true),
+                            i,
+                        ),
                         None => (scene.background(), background),
                     };
                 }
@@ -65,16 +67,6 @@ pub fn reference(scene: &Scene, camera: &Camera, threads: Option<usize>) -> Resu
     })
 }
 // ANCHOR_END: silhouettes
-
-/// The colour [`crate::raycast::lit_unshadowed`] gives a ray whose closest hit is
-/// `hit` on object `i`: Lambert's law, the light always visible.
-fn unshadowed(scene: &Scene, hit: &Hit, i: usize) -> Vec3 {
-    let albedo = scene.objects()[i].colour();
-    match scene.light() {
-        Some(light) => lighting::lambert(hit.point, hit.facing(), albedo, &light, || true),
-        None => albedo * AMBIENT,
-    }
-}
 
 /// How two images compare away from silhouettes.
 #[derive(Clone, Copy, Debug, PartialEq)]

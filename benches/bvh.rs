@@ -30,15 +30,7 @@ fn sphere_scene(n: u32) -> Scene {
 fn camera(width: u32, height: u32) -> Camera {
     let eye = Vec3::new(0.0, 0.4, 3.0);
     let frame = Frame::look(eye, -eye, Vec3::Y).expect("frame");
-    let half_height = 0.42;
-    let half_width = half_height * width as f32 / height as f32;
-    let film = Film::new(
-        width,
-        height,
-        (-half_width, half_width),
-        (-half_height, half_height),
-    )
-    .expect("film");
+    let film = Film::centred(width, height, 0.42).expect("film");
     PinholeCamera::new(film, 1.0, frame).expect("camera").into()
 }
 

@@ -67,14 +67,7 @@ pub fn lesson08_cameras(width: u32, height: u32, shift: Vec3) -> Result<[Camera;
     let eye = Vec3::new(0.0, 3.0, 9.0) + shift;
     let target = Vec3::new(0.0, 0.8, 0.0) + shift;
     let frame = Frame::look(eye, target - eye, Vec3::Y)?;
-    let half_height = 2.6;
-    let half_width = half_height * width as f32 / height as f32;
-    let film = Film::new(
-        width,
-        height,
-        (-half_width, half_width),
-        (-half_height, half_height),
-    )?;
+    let film = Film::centred(width, height, 2.6)?;
     Ok([
         OrthoCamera::new(film, frame).into(),
         PinholeCamera::new(film, (target - eye).length(), frame)?.into(),

@@ -43,6 +43,19 @@ fn range(param: &'static str, (min, max): (f32, f32)) -> Result<(f32, f32)> {
 }
 
 impl Film {
+    /// `width` x `height` square pixels centred on the camera's axis: `half_height`
+    /// above and below it, and as wide as the aspect ratio asks,
+    /// x = ±half_height · width / height.
+    pub fn centred(width: u32, height: u32, half_height: f32) -> Result<Film> {
+        let half_width = half_height * width as f32 / height.max(1) as f32;
+        Film::new(
+            width,
+            height,
+            (-half_width, half_width),
+            (-half_height, half_height),
+        )
+    }
+
     /// `width` x `height` pixels over the plane extents `x` = (x_min, x_max) and
     /// `y` = (y_min, y_max).
     pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Film> {

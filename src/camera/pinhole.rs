@@ -81,14 +81,7 @@ impl PinholeCamera {
                 reason: "must be below 180 degrees",
             });
         }
-        let aspect = width as f32 / height.max(1) as f32;
-        let half_width = half_height * aspect;
-        let film = Film::new(
-            width,
-            height,
-            (-half_width, half_width),
-            (-half_height, half_height),
-        )?;
+        let film = Film::centred(width, height, half_height)?;
         PinholeCamera::new(film, 1.0, frame)
     }
     // ANCHOR_END: look_at

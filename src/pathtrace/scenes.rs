@@ -52,13 +52,7 @@ pub fn look_camera(
     direction: Vec3,
     half_height: f32,
 ) -> Result<LensCamera> {
-    let half_width = half_height * width as f32 / height as f32;
-    let film = Film::new(
-        width,
-        height,
-        (-half_width, half_width),
-        (-half_height, half_height),
-    )?;
+    let film = Film::centred(width, height, half_height)?;
     let frame = Frame::look(eye, direction, Vec3::Y)?;
     Ok(LensCamera::pinhole(PinholeCamera::new(film, 1.0, frame)?))
 }

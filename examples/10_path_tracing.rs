@@ -15,6 +15,7 @@ use std::time::Instant;
 
 use clap::Parser;
 use indicatif::ProgressBar;
+use render_lessons::Result;
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num};
 use render_lessons::framebuffer::Framebuffer;
@@ -22,7 +23,8 @@ use render_lessons::pathtrace::convergence::{Part, Renders, Study, ladder};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::SceneName;
-use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
+use render_lessons::pathtrace::{LensCamera, Passes, PixelSampling, Sampling, Settings};
+use render_lessons::scene::Scene;
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
@@ -113,31 +115,40 @@ pub fn numbers(scene: SceneName, study: &Study, renders: &Renders) -> String {
 }
 // ANCHOR_END: numbers
 
+// ANCHOR: setup
+/// What the flags ask for: the scene, its camera (a thin lens when `--aperture` is
+/// not 0) and the study to run on them.
+pub fn setup(args: &Args) -> Result<(Scene, LensCamera, Study)> {
+    let (scene, pinhole) = args.scene.build(args.width, args.height)?;
+    let camera = match args.aperture {
+        0.0 => pinhole,
+        aperture => pinhole.with_lens(aperture, args.focus)?,
+    };
+    let study = Study {
+        settings: Settings {
+            sampling: args.sampling,
+            max_depth: Some(args.max_depth),
+            russian_roulette: !args.no_rr,
+            ..Settings::default()
+        },
+        ladder: ladder(args.spp)?,
+        passes: Passes {
+            pixels: PixelSampling::jittered(args.jitter),
+            seed: args.seed,
+            threads: args.threads,
+        },
+        reference_spp: args.reference_spp,
+    };
+    Ok((scene, camera, study))
+}
+// ANCHOR_END: setup
+
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
         let start = Instant::now();
         // ANCHOR: render
-        let (scene, pinhole) = args.scene.build(args.width, args.height)?;
-        let camera = match args.aperture {
-            0.0 => pinhole,
-            aperture => pinhole.with_lens(aperture, args.focus)?,
-        };
-        let study = Study {
-            settings: Settings {
-                sampling: args.sampling,
-                max_depth: Some(args.max_depth),
-                russian_roulette: !args.no_rr,
-                ..Settings::default()
-            },
-            ladder: ladder(args.spp)?,
-            passes: Passes {
-                pixels: PixelSampling::jittered(args.jitter),
-                seed: args.seed,
-                threads: args.threads,
-            },
-            reference_spp: args.reference_spp,
-        };
+        let (scene, camera, study) = setup(&args)?;
         let bar = ProgressBar::new(study.samples());
         // The reference's PNG is rewritten after each pass: watch it sharpen.
         let renders = study.render(&scene, &camera, |part, pass| {

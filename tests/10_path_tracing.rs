@@ -23,8 +23,8 @@ use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::pathtrace::{
-    Accumulator, LensCamera, Passes, PathCamera, PixelSampling, RecordedPath, Rng, Sampling,
-    Settings, SphereSampling, radiance, radiance_observed, record_path,
+    Accumulator, LensCamera, PathCamera, PixelSampling, RecordedPath, Rng, Sampling, Settings,
+    SphereSampling, radiance, radiance_observed, record_path,
 };
 use render_lessons::ray::Ray;
 use render_lessons::scene::{Object, Scene};
@@ -52,26 +52,7 @@ fn small_args(extra: &[&str]) -> lesson::Args {
 
 /// What `main` does with the flags: the scene, the study, and its images.
 fn render(args: &lesson::Args) -> render_lessons::Result<(Study, Renders)> {
-    let (scene, pinhole) = args.scene.build(args.width, args.height)?;
-    let camera = match args.aperture {
-        0.0 => pinhole,
-        aperture => pinhole.with_lens(aperture, args.focus)?,
-    };
-    let study = Study {
-        settings: Settings {
-            sampling: args.sampling,
-            max_depth: Some(args.max_depth),
-            russian_roulette: !args.no_rr,
-            ..Settings::default()
-        },
-        ladder: ladder(args.spp)?,
-        passes: Passes {
-            pixels: PixelSampling::jittered(args.jitter),
-            seed: args.seed,
-            threads: args.threads,
-        },
-        reference_spp: args.reference_spp,
-    };
+    let (scene, camera, study) = lesson::setup(args)?;
     let mut samples = 0;
     let renders = study.render(&scene, &camera, |_, pass| {
         samples += u64::from(pass.added);

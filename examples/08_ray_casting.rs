@@ -13,9 +13,8 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::Vec3;
-use render_lessons::Result;
 use render_lessons::camera::Camera;
-use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::lesson::{self, ImageFlags, Output, parse_finite, parse_vec3};
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::offset::Offset;
@@ -24,21 +23,15 @@ use render_lessons::raycast::{lit, shadowless};
 use render_lessons::render::render;
 use render_lessons::scene::Scene;
 use render_lessons::scenes::{LESSON08_OBJECTS, lesson08, lesson08_cameras};
+use render_lessons::{Error, Result};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
 #[command(about = "Lesson 08: ray casting, then Lambert shading and shadow rays")]
 #[command(allow_negative_numbers = true)]
 struct Args {
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 480)]
-    width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 270)]
-    height: u32,
-    /// Worker threads (default: every core). The image does not depend on it.
-    #[arg(long)]
-    threads: Option<usize>,
+    #[command(flatten)]
+    image: ImageFlags,
     /// The fixed shadow-ray epsilon whose failure the lesson shows.
     #[arg(long, default_value = "1e-4", value_parser = parse_finite)]
     epsilon: f32,
@@ -153,10 +146,14 @@ pub fn numbers(
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
-        let size = (args.width, args.height);
-        let images = images(size, args.epsilon, args.far, args.threads)?;
+        let (size, threads) = args.image.check(IMAGES.len() as u64)?;
+        lesson08(args.far).map_err(|_| Error::Invalid {
+            param: "--far",
+            reason: "moves the scene out of f32's reach (its triangle loses its area)",
+        })?;
+        let images = images(size, args.epsilon, args.far, threads)?;
         lesson::print(&numbers(size, args.epsilon, args.far, &images)?);
         for (name, image) in IMAGES.iter().zip(&images) {
             args.output.image(name, image)?;

@@ -10,15 +10,15 @@
 
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
 
 use clap::Parser;
 use glam::Vec3;
-use render_lessons::course::lesson::{self, Output, parse_finite};
-use render_lessons::course::report::{Table, num};
+use render_lessons::course::lesson::{self, ImageFlags, Output, parse_finite};
+use render_lessons::course::report::{Table, Timings, num};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, difference};
-use render_lessons::raster::{floor_settings, point_light, rasterize, reference, tessellate};
+use render_lessons::raster::{check_segments, floor_settings, point_light, rasterize};
+use render_lessons::raster::{reference, tessellate};
 use render_lessons::scenes::{LESSON08_OBJECTS, TORUS_OBJ, lesson08, lesson08_pinhole};
 use render_lessons::scenes::{lesson08_shadows, lesson09_mesh, lesson09_mesh_scene};
 use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, offset::Offset};
@@ -29,15 +29,8 @@ use render_lessons::{raycast::lit, render::render, scene::Scene};
 #[command(about = "Lesson 09: the rasterization pipeline, side by side with ray casting")]
 #[command(allow_negative_numbers = true)]
 struct Args {
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 480)]
-    width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 270)]
-    height: u32,
-    /// Worker threads (default: every core). The images do not depend on it.
-    #[arg(long)]
-    threads: Option<usize>,
+    #[command(flatten)]
+    image: ImageFlags,
     /// Slices of longitude of each tessellated sphere (bands of latitude: half).
     #[arg(long, default_value_t = 64)]
     segments: u32,
@@ -54,22 +47,16 @@ struct Args {
     output: Output,
 }
 
+/// How many images the lesson writes.
+const IMAGES: u64 = 10;
+
 /// What the lesson produces: its images by file name, each rasterized image against
 /// its ray-cast reference away from silhouettes (label, reference, agreement), and
 /// how long each renderer took, in seconds.
 pub struct Lesson {
     pub images: Vec<(&'static str, Framebuffer)>,
     pub agreements: Vec<(&'static str, &'static str, Agreement)>,
-    pub times: Times,
-}
-
-type Times = Vec<(&'static str, f64)>;
-
-fn timed<T>(times: &mut Times, what: &'static str, work: impl FnOnce() -> T) -> T {
-    let start = Instant::now();
-    let result = work();
-    times.push((what, start.elapsed().as_secs_f64()));
-    result
+    pub times: Timings,
 }
 
 /// Renders everything: the ray-cast reference, the scene tessellated with `segments`
@@ -94,16 +81,16 @@ pub fn images(
     let mapped = |bias| draw(&instances, PerPixel, Some(shadows.with_bias(bias)));
     let meshed = lesson09_mesh_scene(scene, mesh)?;
     let floor_and_mesh = [instances[0].clone(), mesh.clone()];
-    let t = &mut Vec::new();
-    let ray_cast = timed(t, "ray cast, analytic scene", || cast(scene))?;
+    let mut t = Timings::default();
+    let ray_cast = t.time("ray cast, analytic scene", || cast(scene))?;
     let per_vertex = draw(&instances, PerVertex, None)?;
-    let per_pixel = timed(t, "rasterized, per-pixel shading", || {
+    let per_pixel = t.time("rasterized, per-pixel shading", || {
         draw(&instances, PerPixel, None)
     })?;
-    let shadow_ray = timed(t, "ray cast with shadow rays", traced)?;
-    let shadow_map = timed(t, "rasterized with a shadow map", || mapped(shadows.bias))?;
-    let mesh_ray_cast = timed(t, "ray cast, floor + mesh", || cast(&meshed))?;
-    let mesh_raster = timed(t, "rasterized, floor + mesh", || {
+    let shadow_ray = t.time("ray cast with shadow rays", traced)?;
+    let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
+    let mesh_ray_cast = t.time("ray cast, floor + mesh", || cast(&meshed))?;
+    let mesh_raster = t.time("rasterized, floor + mesh", || {
         draw(&floor_and_mesh, PerPixel, None)
     })?;
     let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
@@ -137,13 +124,18 @@ pub fn images(
             ("09_mesh_ray_cast.png", mesh_ray_cast.image),
             ("09_mesh_raster.png", mesh_raster),
         ],
-        times: std::mem::take(t),
+        times: t,
     })
 }
 
 /// The lesson's tables: the scene as triangles, and how far each rasterized image is
 /// from its ray-cast counterpart. No timings: they go to the terminal only.
-pub fn numbers(scene: &Scene, segments: u32, mesh: &Model, lesson: &Lesson) -> Result<String> {
+pub fn numbers(
+    scene: &Scene,
+    segments: u32,
+    (mesh, file): (&Model, &str),
+    lesson: &Lesson,
+) -> Result<String> {
     let columns = ["object", "vertices", "triangles"];
     let mut counts = Table::new("The scene as triangles", &columns);
     let mut total = 0;
@@ -154,8 +146,12 @@ pub fn numbers(scene: &Scene, segments: u32, mesh: &Model, lesson: &Lesson) -> R
     }
     counts.row(vec!["all".into(), String::new(), total.to_string()]);
     let (v, t) = (mesh.mesh.positions.len(), mesh.mesh.triangles.len());
-    let name = "mesh (torus.obj, flat)";
-    counts.row(vec![name.into(), v.to_string(), t.to_string()]);
+    let skipped = match mesh.mesh.degenerate() {
+        0 => String::new(),
+        n => format!("; {n} degenerate, left out of the ray cast"),
+    };
+    let name = format!("mesh ({file}, flat{skipped})");
+    counts.row(vec![name, v.to_string(), t.to_string()]);
     let (width, height) = (lesson.images[0].1.width(), lesson.images[0].1.height());
     let tolerance = num(f64::from(TOLERANCE * 255.0), 0);
     let mut columns = vec!["rasterized image", "reference", "compared"];
@@ -178,20 +174,19 @@ pub fn numbers(scene: &Scene, segments: u32, mesh: &Model, lesson: &Lesson) -> R
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
+        // The images it keeps, and as many again while it works (z-buffers, shadows).
+        let ((width, height), threads) = args.image.check(2 * IMAGES)?;
         let scene = lesson08(Vec3::ZERO)?;
-        let camera = lesson08_pinhole(args.width, args.height)?;
+        let camera = lesson08_pinhole(width, height)?;
         let shadows = lesson08_shadows(args.shadow_map_size, args.bias);
-        let mesh = lesson09_mesh(&args.mesh)?;
-        let i = images(&scene, &camera, args.segments, shadows, &mesh, args.threads)?;
-        lesson::print(&numbers(&scene, args.segments, &mesh, &i)?);
-        // Times go to the terminal only: they differ from run to run, machine to machine.
-        let mut times = Table::new("Time on this machine", &["renderer", "seconds"]);
-        for (what, seconds) in &i.times {
-            times.row(vec![what.to_string(), num(*seconds, 3)]);
-        }
-        lesson::print(&times.to_string());
+        check_segments(&scene, args.segments)?;
+        let mesh = lesson09_mesh(&args.mesh).map_err(lesson::flag("--mesh"))?;
+        let i = images(&scene, &camera, args.segments, shadows, &mesh, threads)?;
+        let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
+        lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &i)?);
+        lesson::print(&i.times.table().to_string()); // the terminal only
         for (name, image) in &i.images {
             args.output.image(name, image)?;
         }

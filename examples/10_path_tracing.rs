@@ -18,6 +18,7 @@ use indicatif::ProgressBar;
 use render_lessons::Result;
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num};
+use render_lessons::error::positive;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::convergence::{Part, Renders, Study, ladder};
 use render_lessons::pathtrace::pfm::save_pfm;
@@ -119,7 +120,10 @@ pub fn numbers(scene: SceneName, study: &Study, renders: &Renders) -> String {
 /// What the flags ask for: the scene, its camera (a thin lens when `--aperture` is
 /// not 0) and the study to run on them.
 pub fn setup(args: &Args) -> Result<(Scene, LensCamera, Study)> {
+    // At most 11 rungs, 3 strategies, the reference and two f64 accumulators.
+    let threads = lesson::budget(args.width, args.height, args.threads, 20)?;
     let (scene, pinhole) = args.scene.build(args.width, args.height)?;
+    positive("focus", args.focus)?; // checked even when no lens uses it
     let camera = match args.aperture {
         0.0 => pinhole,
         aperture => pinhole.with_lens(aperture, args.focus)?,
@@ -135,7 +139,7 @@ pub fn setup(args: &Args) -> Result<(Scene, LensCamera, Study)> {
         passes: Passes {
             pixels: PixelSampling::jittered(args.jitter),
             seed: args.seed,
-            threads: args.threads,
+            threads,
         },
         reference_spp: args.reference_spp,
     };

@@ -32,7 +32,8 @@ pub struct Args {
     /// Measure longer, for charts good enough to publish (several minutes).
     #[arg(long)]
     pub full: bool,
-    /// Measure only the charts whose name starts with this (e.g. 11_5).
+    /// Measure only the charts whose name starts with this (e.g. 11_5); each chart is
+    /// written to --out as SVG and CSV.
     #[arg(long)]
     pub only: Option<String>,
     #[command(flatten)]
@@ -40,7 +41,7 @@ pub struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
         let quality = if args.full {
             Quality::Full
@@ -58,10 +59,10 @@ fn main() -> ExitCode {
             })
             .collect();
         if chosen.is_empty() {
-            return Err(Error::TooFew {
-                param: "charts matching --only",
-                value: 0,
-                min: 1,
+            return Err(Error::NoMatch {
+                param: "--only",
+                value: args.only.clone().unwrap_or_default(),
+                choices: all.iter().map(|(stem, _)| stem.to_string()).collect(),
             });
         }
         let mut summary = String::new();

@@ -69,6 +69,12 @@ pub enum Error {
         limit: u64,
         unit: &'static str,
     },
+    /// A name given for `param` matches none of the `choices`.
+    NoMatch {
+        param: &'static str,
+        value: String,
+        choices: Vec<String>,
+    },
     /// An OBJ file could not be turned into a mesh; `line` (1-based) when known.
     Obj {
         path: String,
@@ -95,7 +101,8 @@ impl Error {
             | Error::Singular { param }
             | Error::TooFew { param, .. }
             | Error::Invalid { param, .. }
-            | Error::TooMuch { param, .. } => param,
+            | Error::TooMuch { param, .. }
+            | Error::NoMatch { param, .. } => param,
             Error::UpParallelToDirection => "up",
             Error::NonFinitePixel { .. } => "pixel",
             Error::Io { path, .. } | Error::Obj { path, .. } => path,
@@ -149,6 +156,15 @@ impl fmt::Display for Error {
                 write!(f, "{param} must be at least {min} (got {value})")
             }
             Error::Invalid { param, reason } => write!(f, "{param} {reason}"),
+            Error::NoMatch {
+                param,
+                value,
+                choices,
+            } => write!(
+                f,
+                "{param} '{value}' matches none of: {}",
+                choices.join(", ")
+            ),
             Error::TooMuch {
                 param,
                 needed,

@@ -61,10 +61,11 @@ pub fn in_pool<T: Send>(threads: Option<usize>, work: impl FnOnce() -> T + Send)
     }
 }
 
-/// A bar counting rows, hidden for small images and when stderr is not a terminal
-/// (indicatif hides itself then).
-fn progress_bar(pixels: u64, rows: u32) -> ProgressBar {
-    if pixels <= PROGRESS_PIXELS {
+/// A bar counting rows, hidden for small work (`work` below [`PROGRESS_PIXELS`]:
+/// pixels, or pixels times primitives for a brute-force cast) and when stderr is not
+/// a terminal (indicatif hides itself then).
+pub(crate) fn progress_bar(work: u64, rows: u32) -> ProgressBar {
+    if work <= PROGRESS_PIXELS {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(u64::from(rows));

@@ -7,7 +7,7 @@ use std::path::Path;
 use glam::Vec3;
 
 use crate::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::raster::{Mesh, Model, Shadows};
 use crate::scene::{Object, PointLight, Scene};
 use crate::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
@@ -102,6 +102,12 @@ pub const TORUS_OBJ: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/meshes/
 /// flat shaded (one normal per triangle, as the ray caster sees triangles).
 pub fn lesson09_mesh(path: &Path) -> Result<Model> {
     let mesh = Mesh::from_obj(path)?.flat_shaded()?;
+    if mesh.degenerate() == mesh.triangles.len() {
+        return Err(Error::Invalid {
+            param: "mesh",
+            reason: "has no triangle with an area: every one is degenerate",
+        });
+    }
     let model = Transform::rotation_x(-0.5)?.then(Transform::translation(2.2, 0.75, 1.6)?);
     Ok(Model {
         mesh,

@@ -632,7 +632,7 @@ fn numbers() {
     let (scene, mesh, lesson) = book_lesson();
     insta::assert_snapshot!(
         "numbers",
-        lesson::numbers(&scene, 64, &mesh, &lesson).unwrap()
+        lesson::numbers(&scene, 64, (&mesh, "torus.obj"), &lesson).unwrap()
     );
 
     let by_label = |label: &str| {

@@ -76,7 +76,7 @@ fn the_lesson_refuses_bad_flags_naming_them() {
         (&["--spp", "0"], "spp"),
         (&["--reference-spp", "0"], "reference-spp"),
         (&["--aperture", "-1"], "aperture"),
-        (&["--aperture", "0.5", "--focus", "0"], "focus distance"),
+        (&["--aperture", "0.5", "--focus", "0"], "focus"),
         (&["--jitter", "--spp", "8"], "spp"),
     ];
     for (extra, name) in cases {
@@ -810,7 +810,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
     );
     assert_eq!(
         param(LensCamera::new(pinhole, 0.1, 0.0).unwrap_err()),
-        "focus distance"
+        "focus"
     );
 
     let sphere = || Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());

@@ -12,7 +12,8 @@ use crate::framebuffer::Framebuffer;
 /// The flag every lesson accepts: the folder its images go to.
 #[derive(clap::Args, Clone, Debug)]
 pub struct Output {
-    /// Folder for the lesson's PNG files.
+    /// Folder for the lesson's files (PNG images; lesson 10 adds a PFM, lesson 11
+    /// writes its charts as SVG and CSV).
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
 }
@@ -38,6 +39,48 @@ impl Output {
         wrote(&path);
         Ok(())
     }
+}
+
+/// The flags of a lesson that renders images of lesson 08's scene (lessons 08 and
+/// 09): their size and the worker threads.
+#[derive(clap::Args, Clone, Copy, Debug)]
+pub struct ImageFlags {
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 480)]
+    pub width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 270)]
+    pub height: u32,
+    /// Worker threads (default: every core). The images do not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+}
+
+impl ImageFlags {
+    /// The size and thread count, checked ([`budget`]) for a run that holds `images`
+    /// images of this size at once.
+    pub fn check(&self, images: u64) -> Result<((u32, u32), Option<usize>)> {
+        let threads = budget(self.width, self.height, self.threads, images)?;
+        Ok(((self.width, self.height), threads))
+    }
+}
+
+/// Checks `--width`, `--height` and `--threads` before any work: each side within
+/// `camera::MAX_RESOLUTION`, the memory of `images` images of that size (16 bytes
+/// a pixel: the linear colour and its 8-bit copy) within
+/// [`crate::budget::memory_limit`], the thread count within
+/// [`crate::budget::MAX_THREADS`]. Returns the thread count.
+pub fn budget(
+    width: u32,
+    height: u32,
+    threads: Option<usize>,
+    images: u64,
+) -> Result<Option<usize>> {
+    pixels("--width", width, crate::camera::MAX_RESOLUTION)?;
+    pixels("--height", height, crate::camera::MAX_RESOLUTION)?;
+    let bytes = crate::budget::images(images, width, height, 16);
+    crate::budget::memory("--width x --height", bytes)?;
+    crate::budget::threads("--threads", threads)
 }
 
 /// Runs a lesson's body: on error, prints `error: ...` and exits with code 2.
@@ -144,6 +187,32 @@ fn writable(dir: &Path) -> std::result::Result<(), String> {
         .tempfile_in(dir)
         .map(drop)
         .map_err(|e| format!("cannot write in it ({e})"))
+}
+
+/// For `map_err`: an error reading the file given after `flag` (`--mesh`) names the
+/// flag too: "--mesh torus.obj, line 3: ...".
+pub fn flag(flag: &'static str) -> impl Fn(crate::error::Error) -> crate::error::Error {
+    use crate::error::Error;
+    move |e| match e {
+        Error::Obj {
+            path,
+            line,
+            message,
+        } => Error::Obj {
+            path: format!("{flag} {path}"),
+            line,
+            message,
+        },
+        Error::Io { path, message } => Error::Io {
+            path: format!("{flag} {path}"),
+            message,
+        },
+        Error::Invalid { reason, .. } => Error::Invalid {
+            param: flag,
+            reason,
+        },
+        other => other,
+    }
 }
 
 /// `value` if it lies in 1..=`max` pixels; otherwise an error naming the flag

@@ -79,3 +79,27 @@ impl fmt::Display for Table {
         Ok(())
     }
 }
+
+/// Wall-clock times of a lesson's steps, for the terminal only: they differ from run
+/// to run and machine to machine, so they never reach a snapshot or a test.
+#[derive(Clone, Debug, Default)]
+pub struct Timings(pub Vec<(&'static str, f64)>);
+
+impl Timings {
+    /// Runs `work`, noting how long it took as `what`.
+    pub fn time<T>(&mut self, what: &'static str, work: impl FnOnce() -> T) -> T {
+        let start = std::time::Instant::now();
+        let result = work();
+        self.0.push((what, start.elapsed().as_secs_f64()));
+        result
+    }
+
+    /// The times as a table, in seconds.
+    pub fn table(&self) -> Table {
+        let mut table = Table::new("Time on this machine", &["step", "seconds"]);
+        for (what, seconds) in &self.0 {
+            table.row(vec![what.to_string(), num(*seconds, 3)]);
+        }
+        table
+    }
+}

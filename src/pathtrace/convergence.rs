@@ -139,13 +139,7 @@ impl Study {
 /// The sample counts 1, 4, 16, ... up to `spp` (`spp` itself last if it is not a
 /// power of 4): the error should halve from one to the next.
 pub fn ladder(spp: u32) -> Result<Vec<u32>> {
-    if spp == 0 {
-        return Err(Error::TooFew {
-            param: "spp",
-            value: 0,
-            min: 1,
-        });
-    }
+    spp_in_range("spp", spp)?;
     let mut steps: Vec<u32> = std::iter::successors(Some(1u32), |n| n.checked_mul(4))
         .take_while(|&n| n <= spp)
         .collect();
@@ -155,9 +149,12 @@ pub fn ladder(spp: u32) -> Result<Vec<u32>> {
     Ok(steps)
 }
 
-/// Stops every 16 samples up to `spp` (and `spp` itself), so that a long render
-/// can be watched as it sharpens. An error naming `param` if `spp` is 0.
-fn stops_of_16(spp: u32, param: &'static str) -> Result<Vec<u32>> {
+/// The most samples per pixel a study takes: a million, 2^14 times the lesson's
+/// 64 (at 160 x 120 it would run for days; any more is a typo).
+pub const MAX_SPP: u32 = 1 << 20;
+
+/// `Ok` if `spp` lies in 1..=[`MAX_SPP`]; an error naming `param` otherwise.
+fn spp_in_range(param: &'static str, spp: u32) -> Result<()> {
     if spp == 0 {
         return Err(Error::TooFew {
             param,
@@ -165,6 +162,21 @@ fn stops_of_16(spp: u32, param: &'static str) -> Result<Vec<u32>> {
             min: 1,
         });
     }
+    if spp > MAX_SPP {
+        return Err(Error::TooMuch {
+            param,
+            needed: u64::from(spp),
+            limit: u64::from(MAX_SPP),
+            unit: "samples per pixel",
+        });
+    }
+    Ok(())
+}
+
+/// Stops every 16 samples up to `spp` (and `spp` itself), so that a long render
+/// can be watched as it sharpens. An error naming `param` if `spp` is 0.
+fn stops_of_16(spp: u32, param: &'static str) -> Result<Vec<u32>> {
+    spp_in_range(param, spp)?;
     let mut stops: Vec<u32> = (1..=spp / 16).map(|i| i * 16).collect();
     if stops.last() != Some(&spp) {
         stops.push(spp);

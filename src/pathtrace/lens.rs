@@ -32,11 +32,52 @@ impl LensCamera {
                 reason: "must be >= 0 (0 is a pinhole)",
             });
         }
-        Ok(LensCamera {
+        let camera = LensCamera {
             pinhole,
             aperture,
-            focus_distance: positive("focus distance", focus_distance)?,
-        })
+            focus_distance: positive("focus", focus_distance)?,
+        };
+        camera.check_rays()?;
+        Ok(camera)
+    }
+
+    /// `Ok` if every ray of the camera can be made: at the film's corners and the
+    /// lens's rim, the focus point, the lens point in the world and the direction
+    /// between them are finite and not zero. A focus distance of 1e30 or an
+    /// aperture of 1e20 fails here, naming the flag, instead of turning every
+    /// sample into NaN (a black image).
+    fn check_rays(&self) -> Result<()> {
+        let film = self.pinhole.film();
+        let (w, h) = (film.width() as f32, film.height() as f32);
+        let scale = self.focus_distance / self.pinhole.screen_distance();
+        let frame = self.pinhole.frame();
+        for corner in [
+            Vec2::ZERO,
+            Vec2::new(w, 0.0),
+            Vec2::new(0.0, h),
+            Vec2::new(w, h),
+        ] {
+            let s = screen_point(film, corner).extend(-self.pinhole.screen_distance());
+            let focus = s * scale;
+            if focus.normalize_or_zero() == Vec3::ZERO {
+                return Err(Error::Invalid {
+                    param: "focus",
+                    reason: "puts the plane in focus out of f32's reach",
+                });
+            }
+            for rim in [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y] {
+                let lens = (self.aperture * rim).extend(0.0);
+                let direction = (focus - lens).normalize_or_zero();
+                let origin = frame.point_to_world(lens);
+                if direction == Vec3::ZERO || !origin.is_finite() {
+                    return Err(Error::Invalid {
+                        param: "aperture",
+                        reason: "is too large for f32 rays with this focus distance",
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The pinhole camera itself (aperture 0; focus distance irrelevant, set to 1).

@@ -258,6 +258,15 @@ pub fn render_progressive(
         };
         let (pixels, threads) = (passes.pixels, passes.threads);
         let image = acc.render_pass(scene, camera, settings, pixels, added, threads)?;
+        let film = camera.film();
+        let taken = u64::from(acc.samples()) * u64::from(film.width()) * u64::from(film.height());
+        if acc.non_finite() == taken {
+            // Not one usable sample: the image would be black. Say so instead.
+            return Err(Error::Invalid {
+                param: "scene",
+                reason: "gave NaN or infinity in every sample: there is no image to show",
+            });
+        }
         each(Pass {
             samples: stop,
             added,

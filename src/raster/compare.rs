@@ -9,7 +9,7 @@ use crate::camera::Camera;
 use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 use crate::lighting;
-use crate::render::in_pool;
+use crate::render::{in_pool, progress_bar};
 use crate::scene::Scene;
 
 /// Colours more than this apart (linear RGB, in some channel) count as different:
@@ -37,6 +37,9 @@ pub fn reference(scene: &Scene, camera: &Camera, threads: Option<usize>) -> Resu
     let background = scene.objects().len();
     // Each pixel's colour and the number of the object it sees (background: one more).
     let mut pixels = vec![(Vec3::ZERO, background); w as usize * h as usize];
+    // Every ray meets every primitive: a big mesh takes minutes, so show the rows.
+    let tests = u64::from(w) * u64::from(h) * scene.objects().len() as u64;
+    let progress = progress_bar(tests / 64, h);
     in_pool(threads, || {
         pixels
             .par_chunks_mut(w as usize)
@@ -52,8 +55,10 @@ pub fn reference(scene: &Scene, camera: &Camera, threads: Option<usize>) -> Resu
                         None => (scene.background(), background),
                     };
                 }
+                progress.inc(1);
             })
     })?;
+    progress.finish_and_clear();
     let id = |x: u32, y: u32| pixels[(y * w + x) as usize].1;
     let around = |c: u32, n: u32| c.saturating_sub(1)..=(c + 1).min(n - 1);
     let silhouettes = (0..h)

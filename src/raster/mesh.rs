@@ -168,17 +168,38 @@ impl Mesh {
 
     /// The mesh as the ray caster sees it: one triangle primitive per triangle, all
     /// coloured `colour` (flat: a primitive has no vertex normals).
+    ///
+    /// Degenerate triangles (no area, or an area too large for f32) have no plane and
+    /// no normal, so they are left out: [`Mesh::degenerate`] counts them. Where every
+    /// triangle is degenerate the mesh has nothing to show, and that is an error.
     pub fn objects(&self, colour: Vec3) -> Result<Vec<Object>> {
+        let objects: Vec<Object> = self
+            .triangles
+            .iter()
+            .filter_map(|t| self.triangle(t).ok())
+            .map(|t| Object::diffuse(Shape::Triangle(t), colour))
+            .collect();
+        if objects.is_empty() && !self.triangles.is_empty() {
+            return Err(Error::Invalid {
+                param: "mesh",
+                reason: "has no triangle with an area: every one is degenerate",
+            });
+        }
+        Ok(objects)
+    }
+
+    /// How many triangles have no area (or an area f32 cannot hold):
+    /// [`Mesh::objects`] leaves them out.
+    pub fn degenerate(&self) -> usize {
         self.triangles
             .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|i| self.positions[i as usize]);
-                Ok(Object::diffuse(
-                    Shape::Triangle(Triangle::new(a, b, c)?),
-                    colour,
-                ))
-            })
-            .collect()
+            .filter(|t| self.triangle(t).is_err())
+            .count()
+    }
+
+    fn triangle(&self, t: &[u32; 3]) -> Result<Triangle> {
+        let [a, b, c] = t.map(|i| self.positions[i as usize]);
+        Triangle::new(a, b, c)
     }
 
     /// The same triangles with no shared vertices, each corner carrying its
@@ -248,6 +269,14 @@ impl Mesh {
                     .chunks_exact(3)
                     .map(|t| [t[0] + base, t[1] + base, t[2] + base]),
             );
+        }
+        if triangles.is_empty() {
+            let has_vertices = text.lines().any(|l| l.trim_start().starts_with("v "));
+            let what = match has_vertices {
+                false => "has no vertices (v lines)",
+                true => "has no triangles (f lines of three vertices)",
+            };
+            return Err(obj_error(path, None, what.to_string()));
         }
         let mesh = if normals.len() == positions.len() {
             Mesh::with_normals(positions, normals, triangles)

@@ -26,7 +26,9 @@ pub use pipeline::{DepthRange, Pipeline};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
 pub use shade::{Shading, Viewer, shade};
 pub use shadow_map::{ShadowMap, Shadows};
-pub use tessellate::{FLOOR_DEPTH, FLOOR_SIZE, floor_settings, point_light, tessellate};
+pub use tessellate::{
+    FLOOR_DEPTH, FLOOR_SIZE, check_segments, floor_settings, point_light, tessellate,
+};
 pub use vertex::{ClipVertex, Varyings};
 
 use std::ops::Range;

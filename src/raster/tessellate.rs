@@ -21,6 +21,7 @@ pub const FLOOR_DEPTH: DepthRange = DepthRange {
 /// becomes a uv sphere of `segments` x `segments / 2`, a box 12 triangles, a plane
 /// a square of side [`FLOOR_SIZE`], a triangle itself.
 pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
+    check_segments(scene, segments)?;
     let mut instances = Vec::new();
     for object in scene.objects() {
         let mesh = match &object.shape {
@@ -40,6 +41,30 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
     Ok(instances)
 }
 // ANCHOR_END: tessellate
+
+/// `Ok` if a sphere of `segments` x `segments / 2` can be built (at least 4, so two
+/// bands of latitude) and every sphere of `scene` fits in memory at that resolution
+/// ([`crate::budget`]: about 100 bytes a triangle, with its vertices and the
+/// rasterizer's copies).
+pub fn check_segments(scene: &Scene, segments: u32) -> Result<()> {
+    if segments < 4 {
+        return Err(Error::TooFew {
+            param: "segments",
+            value: segments,
+            min: 4,
+        });
+    }
+    let spheres = scene
+        .objects()
+        .iter()
+        .filter(|o| matches!(o.shape, Shape::Sphere(_)))
+        .count() as u64;
+    let triangles = u64::from(segments).saturating_mul(u64::from(segments));
+    crate::budget::memory(
+        "segments",
+        spheres.saturating_mul(triangles).saturating_mul(100),
+    )
+}
 
 /// How to rasterize a tessellated scene: depth range [`FLOOR_DEPTH`], the scene's
 /// background, per-pixel shading, no culling, no shadows.

@@ -11,11 +11,11 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::{Vec2, Vec3};
-use render_lessons::Result;
 use render_lessons::course::diagram::{Diagram, Place, palette};
 use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
 use render_lessons::course::report::{Table, vec3};
 use render_lessons::transform::Transform;
+use render_lessons::{Error, Result};
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
@@ -124,6 +124,13 @@ fn main() -> ExitCode {
         output,
     } = lesson::parse::<Args>();
     lesson::run(|| {
+        let all = [slide_transforms(angle)?, two_orders(angle)?.to_vec()].concat();
+        if all.iter().any(|(_, t)| !t.point(point).is_finite()) {
+            return Err(Error::Invalid {
+                param: "--point",
+                reason: "is so large that a transform of it overflows f32",
+            });
+        }
         lesson::print(&numbers(angle, point)?);
         output.diagram("01_transform_order.png", &order_figure(angle)?)
     })

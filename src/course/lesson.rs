@@ -229,7 +229,7 @@ pub fn pixels(flag: &'static str, value: u32, max: u32) -> Result<u32> {
     }
 }
 
-/// `(min, max)` if `min < max` and the span between them is a finite number; the
+/// `(min, max)` if `min < max` and twice the span between them is a finite number; the
 /// error names `flags`, the two flags that set them (`"--x-min/--x-max"`).
 pub fn extent(flags: &'static str, min: f32, max: f32) -> Result<(f32, f32)> {
     if min.partial_cmp(&max) != Some(std::cmp::Ordering::Less) {
@@ -239,10 +239,11 @@ pub fn extent(flags: &'static str, min: f32, max: f32) -> Result<(f32, f32)> {
             max,
         });
     }
-    if !(max - min).is_finite() {
+    // Twice the span must be finite too: the figures leave a margin around it.
+    if !(2.0 * (max - min)).is_finite() {
         return Err(crate::error::Error::Invalid {
             param: flags,
-            reason: "span more than the largest f32 (3.4e38)",
+            reason: "span more than f32 can draw (1.7e38)",
         });
     }
     Ok((min, max))

@@ -154,27 +154,39 @@ fn main() -> ExitCode {
         // ANCHOR: render
         let (scene, camera, study) = setup(&args)?;
         let bar = ProgressBar::new(study.samples());
-        // The reference's PNG is rewritten after each pass: watch it sharpen.
+        let (out, top) = (&args.output, study.ladder.last().copied().unwrap_or(0));
+        let mut reference_spp = 0;
+        lesson::stop_on_ctrl_c();
+        // Each image is written the moment it is finished (Ctrl-C keeps them), the
+        // reference after every pass: watch it sharpen.
         let renders = study.render(&scene, &camera, |part, pass| {
             bar.inc(u64::from(pass.added));
+            let (image, spp) = (&pass.image, pass.samples);
             match part {
-                Part::Reference => pass.image.save_png(&args.output.file("10_reference.png")),
-                _ => Ok(()),
+                Part::Ladder if spp == top => {
+                    out.image(&format!("10_{spp}spp.png"), image)?;
+                    out.image(&format!("10_{}.png", args.sampling.flag()), image)?
+                }
+                Part::Ladder => out.image(&format!("10_{spp}spp.png"), image)?,
+                Part::Strategy(s) => out.image(&format!("10_{}.png", s.flag()), image)?,
+                Part::Reference => {
+                    image.save_png(&out.file("10_reference.png"))?;
+                    reference_spp = spp;
+                }
             }
-        })?;
+            lesson::check_interrupt()
+        });
         // ANCHOR_END: render
         bar.finish_and_clear();
+        let renders = renders.inspect_err(|_| {
+            if reference_spp > 0 && reference_spp < args.reference_spp {
+                eprintln!("10_reference.png is partial: {reference_spp} samples per pixel");
+            }
+        })?;
         let seconds = start.elapsed().as_secs_f64();
         lesson::print(&numbers(args.scene, &study, &renders));
         lesson::print(&format!("rendered in {seconds:.1} s\n"));
-        let out = &args.output;
-        for (spp, image) in &renders.ladder {
-            out.image(&format!("10_{spp}spp.png"), image)?;
-        }
-        for (s, image) in &renders.strategies {
-            out.image(&format!("10_{}.png", s.flag()), image)?;
-        }
-        out.image("10_reference.png", &renders.reference)?;
+        lesson::wrote(&out.file("10_reference.png"));
         let ladder: Vec<&Framebuffer> = renders.ladder.iter().map(|(_, img)| img).collect();
         out.image("10_convergence.png", &Framebuffer::beside(&ladder, 4)?)?;
         let pfm = out.file("10_reference.pfm");

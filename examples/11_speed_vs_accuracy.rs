@@ -66,7 +66,9 @@ fn main() -> ExitCode {
             });
         }
         let mut summary = String::new();
+        lesson::stop_on_ctrl_c(); // Ctrl-C keeps the charts already written
         for (stem, measure) in chosen {
+            lesson::check_interrupt()?;
             let start = Instant::now();
             let measured = measure(quality)?;
             for path in measured.chart.save(&args.output.out, stem)? {

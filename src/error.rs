@@ -69,6 +69,8 @@ pub enum Error {
         limit: u64,
         unit: &'static str,
     },
+    /// The user pressed Ctrl-C; the work finished so far was kept.
+    Interrupted,
     /// A name given for `param` matches none of the `choices`.
     NoMatch {
         param: &'static str,
@@ -104,6 +106,7 @@ impl Error {
             | Error::TooMuch { param, .. }
             | Error::NoMatch { param, .. } => param,
             Error::UpParallelToDirection => "up",
+            Error::Interrupted => "interrupt",
             Error::NonFinitePixel { .. } => "pixel",
             Error::Io { path, .. } | Error::Obj { path, .. } => path,
             Error::VertexIndex { .. } => "triangle",
@@ -156,6 +159,7 @@ impl fmt::Display for Error {
                 write!(f, "{param} must be at least {min} (got {value})")
             }
             Error::Invalid { param, reason } => write!(f, "{param} {reason}"),
+            Error::Interrupted => write!(f, "interrupted (Ctrl-C)"),
             Error::NoMatch {
                 param,
                 value,

@@ -87,10 +87,38 @@ pub fn budget(
 pub fn run(body: impl FnOnce() -> Result<()>) -> ExitCode {
     match body() {
         Ok(()) => ExitCode::SUCCESS,
+        Err(crate::error::Error::Interrupted) => {
+            eprintln!("interrupted (Ctrl-C): every file written so far is whole");
+            ExitCode::from(130)
+        }
         Err(e) => {
             eprintln!("error: {}", as_typed(&e));
             ExitCode::from(2)
         }
+    }
+}
+
+/// Set by Ctrl-C once [`stop_on_ctrl_c`] has been called.
+static INTERRUPTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// From now on Ctrl-C does not kill the lesson: it asks it to stop at the next
+/// [`check_interrupt`], so that a long render ends with every finished image saved
+/// (each written whole, never half) and says which are complete. For lessons whose
+/// work comes in steps (lesson 10's passes, lesson 11's charts).
+pub fn stop_on_ctrl_c() {
+    let _ = ctrlc::set_handler(|| {
+        INTERRUPTED.store(true, std::sync::atomic::Ordering::SeqCst);
+        eprintln!("\nCtrl-C: stopping after the current step, keeping what is done");
+    });
+}
+
+/// `Err(Error::Interrupted)` once Ctrl-C was pressed (see [`stop_on_ctrl_c`]);
+/// [`run`] then exits with code 130, the shell's code for an interrupt.
+pub fn check_interrupt() -> Result<()> {
+    if INTERRUPTED.load(std::sync::atomic::Ordering::SeqCst) {
+        Err(crate::error::Error::Interrupted)
+    } else {
+        Ok(())
     }
 }
 

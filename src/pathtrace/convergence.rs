@@ -61,6 +61,33 @@ impl Study {
         ladder + (Sampling::ALL.len() as u64 - 1) * top + u64::from(self.reference_spp)
     }
 
+    /// `Ok` unless jittered passes would be asked for a sample count that is not a
+    /// square: checked before the first pass, so that a bad `--spp` writes nothing.
+    fn check_jittered(&self, reference_stops: &[u32]) -> Result<()> {
+        if self.passes.pixels != PixelSampling::Jittered {
+            return Ok(());
+        }
+        let square = |n: u32| {
+            let root = f64::from(n).sqrt().round() as u32;
+            root * root == n
+        };
+        let not_square = |param| Error::Invalid {
+            param,
+            reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
+        };
+        if !self.ladder.iter().all(|&n| square(n)) {
+            return Err(not_square("spp"));
+        }
+        let mut previous = 0;
+        for &stop in reference_stops {
+            if !square(stop - previous) {
+                return Err(not_square("reference-spp"));
+            }
+            previous = stop;
+        }
+        Ok(())
+    }
+
     // ANCHOR: render
     /// Every image of the study, each a progressive render: the ladder is one render
     /// stopping at each rung; the other strategies render the ladder's top; the
@@ -74,6 +101,7 @@ impl Study {
         mut watch: impl FnMut(Part, &Pass) -> Result<()>,
     ) -> Result<Renders> {
         let reference_stops = stops_of_16(self.reference_spp, "reference-spp")?;
+        self.check_jittered(&reference_stops)?;
         let top = *self.ladder.last().ok_or(Error::TooFew {
             param: "spp",
             value: 0,

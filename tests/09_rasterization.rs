@@ -582,6 +582,66 @@ fn obj_files() {
 }
 
 #[test]
+fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    for (name, text, says) in [
+        ("empty.obj", "", "no vertices"),
+        ("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles"),
+        (
+            "edge.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n",
+            "no triangles",
+        ),
+    ] {
+        let err = Mesh::from_obj(&write(name, text)).unwrap_err();
+        let message = err.to_string();
+        assert!(
+            message.contains(name) && message.contains(says),
+            "{message}"
+        );
+    }
+    // One triangle with area, one whose corners lie on a line: the ray caster gets
+    // the first only, and the count says so.
+    let text = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n";
+    let mesh = Mesh::from_obj(&write("flat.obj", text)).unwrap();
+    assert_eq!(mesh.degenerate(), 1);
+    assert_eq!(mesh.objects(Vec3::ONE).unwrap().len(), 1);
+    // Every triangle degenerate (1e38 corners: the area overflows): nothing to show.
+    let huge = "v 0 0 0\nv 1e38 0 0\nv 0 1e38 0\nf 1 2 3\n";
+    let mesh = Mesh::from_obj(&write("huge.obj", huge)).unwrap();
+    assert_eq!(mesh.degenerate(), 1);
+    assert_eq!(mesh.objects(Vec3::ONE).unwrap_err().param(), "mesh");
+    let err = render_lessons::scenes::lesson09_mesh(&write("huge2.obj", huge)).unwrap_err();
+    assert_eq!(err.param(), "mesh");
+}
+
+#[test]
+fn segments_are_checked_before_tessellating() {
+    let scene = render_lessons::scenes::lesson08(Vec3::ZERO).unwrap();
+    assert!(render_lessons::raster::check_segments(&scene, 4).is_ok());
+    let too_few = render_lessons::raster::check_segments(&scene, 3).unwrap_err();
+    assert_eq!(too_few.param(), "segments");
+    // 65536 segments: three spheres of 2^32 triangles, far more than any machine has.
+    let too_many = render_lessons::raster::check_segments(&scene, 65536).unwrap_err();
+    assert!(
+        matches!(
+            too_many,
+            Error::TooMuch {
+                param: "segments",
+                ..
+            }
+        ),
+        "{too_many:?}"
+    );
+    assert!(render_lessons::raster::tessellate(&scene, u32::MAX).is_err());
+}
+
+#[test]
 fn same_image_for_any_thread_count() {
     let instances = vec![
         Model::new(

@@ -72,12 +72,22 @@ fn numbers() {
 
 #[test]
 fn the_lesson_refuses_bad_flags_naming_them() {
-    let cases: [(&[&str], &str); 5] = [
+    let cases: [(&[&str], &str); 12] = [
         (&["--spp", "0"], "spp"),
+        (&["--spp", "4294967295"], "spp"),
         (&["--reference-spp", "0"], "reference-spp"),
+        (&["--reference-spp", "4294967295"], "reference-spp"),
         (&["--aperture", "-1"], "aperture"),
         (&["--aperture", "0.5", "--focus", "0"], "focus"),
+        (&["--focus", "-1"], "focus"),
+        (&["--aperture", "1e20"], "aperture"),
+        (&["--aperture", "0.2", "--focus", "1e30"], "focus"),
         (&["--jitter", "--spp", "8"], "spp"),
+        (&["--threads", "0"], "--threads"),
+        (
+            &["--width", "16384", "--height", "16384"],
+            "--width x --height",
+        ),
     ];
     for (extra, name) in cases {
         let err = render(&small_args(extra)).err().unwrap();
@@ -86,6 +96,51 @@ fn the_lesson_refuses_bad_flags_naming_them() {
     assert!(lesson::Args::try_parse_from(["x", "--sampling", "best"]).is_err());
     let nee = lesson::Args::try_parse_from(["x", "--sampling", "nee"]).unwrap();
     assert_eq!(nee.sampling, Sampling::NextEvent);
+}
+
+#[test]
+fn a_refused_study_renders_nothing_first() {
+    // Jittered passes need square sample counts: 8 is refused before the first pass
+    // (which would have written 10_1spp.png), not at the rung of 8.
+    let args = small_args(&["--jitter", "--spp", "8"]);
+    let (scene, camera, study) = lesson::setup(&args).unwrap();
+    let mut passes = 0;
+    let err = study.render(&scene, &camera, |_, _| {
+        passes += 1;
+        Ok(())
+    });
+    assert_eq!(err.err().map(|e| e.param().to_string()), Some("spp".into()));
+    assert_eq!(passes, 0);
+}
+
+#[test]
+fn a_pass_with_no_finite_sample_is_an_error_not_a_black_image() {
+    // A light of radiance f32::MAX seen through a lens: every sample overflows.
+    let floor = Object::emitting(
+        Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 100.0).unwrap()),
+        Material::Diffuse { albedo: Vec3::ONE },
+        Vec3::splat(f32::MAX),
+    );
+    let scene = Scene::new(vec![floor], Vec3::ZERO).unwrap();
+    let camera = look_camera(4, 3, Vec3::ZERO, Vec3::NEG_Z, 0.5).unwrap();
+    let passes = render_lessons::pathtrace::Passes {
+        pixels: PixelSampling::Independent,
+        seed: 1,
+        threads: Some(1),
+    };
+    let settings = Settings::default();
+    let result = render_lessons::pathtrace::progressive::render_progressive(
+        &scene,
+        &camera,
+        &settings,
+        passes,
+        &[4],
+        |_| Ok(()),
+    );
+    assert_eq!(
+        result.err().map(|e| e.param().to_string()),
+        Some("scene".into())
+    );
 }
 
 #[test]

@@ -124,6 +124,7 @@ fn main() -> ExitCode {
         output,
     } = lesson::parse::<Args>();
     lesson::run(|| {
+        let angle = lesson::angle("--angle", angle)?;
         let all = [slide_transforms(angle)?, two_orders(angle)?.to_vec()].concat();
         if all.iter().any(|(_, t)| !t.point(point).is_finite()) {
             return Err(Error::Invalid {

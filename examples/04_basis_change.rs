@@ -128,6 +128,7 @@ pub fn bases_figure(degrees: f32, b: Vec3) -> Result<Diagram> {
 fn main() -> ExitCode {
     let Args { angle, b, output } = lesson::parse::<Args>();
     lesson::run(|| {
+        let angle = lesson::angle("--angle", angle)?;
         lesson::print(&numbers(angle, b)?);
         output.diagram("04_two_bases.png", &bases_figure(angle, b)?)
     })

@@ -16,6 +16,7 @@ use glam::Vec3;
 use render_lessons::camera::Camera;
 use render_lessons::course::lesson::{self, ImageFlags, Output, parse_finite, parse_vec3};
 use render_lessons::course::report::{Table, num, vec3};
+use render_lessons::error::non_negative;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::offset::Offset;
 use render_lessons::raster::agreement;
@@ -149,6 +150,7 @@ fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
         let (size, threads) = args.image.check(IMAGES.len() as u64)?;
+        non_negative("--epsilon", args.epsilon)?;
         lesson08(args.far).map_err(|_| Error::Invalid {
             param: "--far",
             reason: "moves the scene out of f32's reach (its triangle loses its area)",

@@ -243,6 +243,23 @@ pub fn flag(flag: &'static str) -> impl Fn(crate::error::Error) -> crate::error:
     }
 }
 
+/// The largest angle a lesson takes, in degrees: a hundred turns. Beyond it f32
+/// degrees are too coarse to mean anything (at 1e7 two neighbouring values lie a
+/// whole degree apart).
+pub const MAX_DEGREES: f32 = 36_000.0;
+
+/// `degrees` if it lies within ±[`MAX_DEGREES`]; an error naming `flag` otherwise.
+pub fn angle(flag: &'static str, degrees: f32) -> Result<f32> {
+    if degrees.abs() <= MAX_DEGREES {
+        Ok(degrees)
+    } else {
+        Err(crate::error::Error::Invalid {
+            param: flag,
+            reason: "must lie within ±36000 degrees (a hundred turns)",
+        })
+    }
+}
+
 /// `value` if it lies in 1..=`max` pixels; otherwise an error naming the flag
 /// (e.g. `--view-width`) that asked for it.
 pub fn pixels(flag: &'static str, value: u32, max: u32) -> Result<u32> {

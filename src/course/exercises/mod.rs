@@ -11,6 +11,15 @@
 //! cargo test --features exercises --test exercises ch03     # chapter 03 only
 //! ```
 
+pub mod ch01_check;
+pub mod ch02_check;
+pub mod ch03_check;
+pub mod ch04_check;
+pub mod ch05_check;
+pub mod ch06_check;
+pub mod ch07_check;
+pub mod ch08_check;
+pub mod ch09_check;
 pub mod check;
 
 #[cfg(feature = "exercises")]

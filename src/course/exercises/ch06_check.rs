@@ -1,0 +1,118 @@
+//! The check of chapter 06's coding exercise: the cases, the reference
+//! answer for each, and the hints for the typical mistakes. The student's function
+//! is in `ch06.rs`, beside this file; the harness is `check.rs`.
+
+use glam::Vec3;
+
+use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
+use crate::camera::{Film, Frame, PinholeCamera};
+
+/// Coding exercise 6.1.
+pub const PINHOLE_RAY: Exercise = Exercise {
+    number: "6.1",
+    chapter: "06",
+    chapter_title: "The pinhole camera",
+    function: "pinhole_ray",
+    file: "src/course/exercises/ch06.rs",
+};
+
+type PinholeArgs = (Film, f32, Frame, u32, u32);
+
+/// Checks `pinhole_ray(film, s, frame, px, py)`: the world-space (origin, unit
+/// direction) of the pinhole ray of pixel (`px`, `py`), screen at distance `s`.
+pub fn check_pinhole_ray(f: impl Fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3)) -> Outcome {
+    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).expect("valid film");
+    let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y).expect("valid frame");
+    let origin = Frame::AT_ORIGIN;
+    let cases: Vec<Case<PinholeArgs>> = [
+        (origin, 8.0, 0, 0, "at the origin"),
+        (origin, 8.0, 2, 1, "at the origin"),
+        (origin, 8.0, 3, 2, "at the origin"),
+        (origin, 4.0, 2, 1, "at the origin"),
+        (
+            placed,
+            8.0,
+            0,
+            0,
+            "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)",
+        ),
+        (
+            placed,
+            8.0,
+            3,
+            2,
+            "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)",
+        ),
+        (
+            placed,
+            2.0,
+            1,
+            1,
+            "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)",
+        ),
+    ]
+    .into_iter()
+    .map(|(frame, s, px, py, where_)| {
+        (
+            format!(
+                "pixel ({px}, {py}), 4x3 film over [-8, 8] x [-6, 6], s = {}, camera {where_}",
+                s.show()
+            ),
+            (film, s, frame, px, py),
+        )
+    })
+    .collect();
+    let screen = |&(film, s, _, px, py): &PinholeArgs| film.pixel_to_plane(px, py).extend(-s);
+    run(
+        &cases,
+        |&(film, s, frame, px, py)| {
+            let ray = PinholeCamera::new(film, s, frame)
+                .expect("valid camera")
+                .ray(px, py);
+            (ray.origin(), ray.direction())
+        },
+        |(film, s, frame, px, py)| f(&film, s, &frame, px, py),
+        &[
+            Mistake {
+                looks_like: &gives(&|a: &PinholeArgs| {
+                    let frame = a.2;
+                    let p = a.0.pixel_to_plane(a.3, a.4).extend(0.0);
+                    Some((frame.point_to_world(p), frame.vector_to_world(-Vec3::Z)))
+                }),
+                hint: "that is the orthographic ray (the slides' erratum). A pinhole ray starts at \
+                       the eye e and goes through the screen point s = (x, y, -s): direction \
+                       (s - e)/|s - e|",
+            },
+            Mistake {
+                looks_like: &|_: &PinholeArgs, got: &(Vec3, Vec3)| !got.1.length().close(&1.0),
+                hint: "the direction must have length 1: (s - e)/|s - e|",
+            },
+            Mistake {
+                looks_like: &|a: &PinholeArgs, got: &(Vec3, Vec3)| {
+                    let d = a.2.vector_to_world(screen(a).normalize());
+                    got.1.close(&d) && !got.0.close(&a.2.position())
+                },
+                hint: "the direction is right, the origin is not: the ray starts at the eye, the \
+                       camera position p (the camera-space origin carried to the world)",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &PinholeArgs| {
+                    Some((a.2.position(), screen(a).normalize()))
+                }),
+                hint: "carry the camera-space direction to the world with the basis: B d \
+                       (frame.vector_to_world), not the camera-space direction itself",
+            },
+            Mistake {
+                looks_like: &|a: &PinholeArgs, got: &(Vec3, Vec3)| {
+                    let mut s = screen(a);
+                    s.z = -s.z;
+                    got.1.close(&a.2.vector_to_world(s.normalize()))
+                },
+                hint: "the screen lies in front of the eye, on the plane z = -s (the camera looks \
+                       down its -Z)",
+            },
+        ],
+        "screen point s = (x, y, -s) with (x, y) the pixel centre on the film; eye e = 0; \
+         direction (s - e)/|s - e|; then origin B e + p, direction B d",
+    )
+}

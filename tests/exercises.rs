@@ -564,6 +564,91 @@ mod checks {
         );
     }
 
+    // Chapter 11.
+
+    /// The slab test as a student might write it, with its parts chosen by the flags:
+    /// `swap` sorts t_near and t_far (`by_min_max`: with f32::min/max), `keep_nan`
+    /// writes the updates so that a NaN changes nothing, `closed` accepts t0 == t1.
+    fn slab_with(
+        swap: bool,
+        by_min_max: bool,
+        keep_nan: bool,
+        closed: bool,
+    ) -> impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Option<(f32, f32)> {
+        move |o, inv_d, min, max, t_min, t_max| {
+            let (mut t0, mut t1) = (t_min, t_max);
+            for i in 0..3 {
+                let a = (min[i] - o[i]) * inv_d[i];
+                let b = (max[i] - o[i]) * inv_d[i];
+                let (near, far) = match (swap, by_min_max) {
+                    (false, _) => (a, b),
+                    (true, true) => (a.min(b), a.max(b)),
+                    (true, false) if a > b => (b, a),
+                    (true, false) => (a, b),
+                };
+                if keep_nan {
+                    t0 = t0.max(near);
+                    t1 = t1.min(far);
+                } else {
+                    t0 = if t0 > near { t0 } else { near };
+                    t1 = if t1 < far { t1 } else { far };
+                }
+                if t0 > t1 || (!closed && t0 == t1) {
+                    return None;
+                }
+            }
+            Some((t0, t1))
+        }
+    }
+
+    #[test]
+    fn slab_accepts_the_reference() {
+        use render_lessons::shapes::Aabb;
+        let crate_slab = |o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, t_min, t_max| {
+            let ray = Ray::new(o, Vec3::ONE / inv_d).unwrap();
+            Aabb::new(min, max).unwrap().slab(&ray, t_min, t_max)
+        };
+        assert_eq!(check_slab(crate_slab), Outcome::Pass);
+        assert_eq!(check_slab(slab_solution), Outcome::Pass);
+        assert_eq!(
+            check_slab(slab_with(true, false, true, true)),
+            Outcome::Pass
+        );
+    }
+
+    #[test]
+    fn slab_rejects_mistakes() {
+        fails_with(
+            check_slab(slab_with(false, false, true, true)),
+            "swap t_near and t_far",
+        );
+        fails_with(
+            check_slab(slab_with(true, false, true, false)),
+            "the box is closed",
+        );
+        fails_with(
+            check_slab(slab_with(true, true, true, true)),
+            "f32::min and f32::max",
+        );
+        fails_with(
+            check_slab(slab_with(true, false, false, true)),
+            "takes t_near when it is NaN",
+        );
+        fails_with(
+            check_slab(|o, inv_d, min, max, _, _| {
+                slab_solution(o, inv_d, min, max, f32::NEG_INFINITY, f32::INFINITY)
+            }),
+            "start the interval at [t_min, t_max]",
+        );
+        fails_with(
+            check_slab(|o, inv_d, min, max, t_min, t_max| {
+                slab_solution(o, Vec3::ONE / inv_d, min, max, t_min, t_max)
+            }),
+            "multiply by it",
+        );
+        assert_eq!(check_slab(|_, _, _, _, _, _| todo!()), Outcome::NotStarted);
+    }
+
     // The machinery.
 
     #[test]
@@ -631,7 +716,7 @@ mod checks {
 #[cfg(feature = "exercises")]
 mod student {
     use render_lessons::course::exercises::{
-        ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, ch09, check_all,
+        ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, ch09, ch11, check_all,
     };
 
     use super::*;
@@ -698,6 +783,11 @@ mod student {
     #[test]
     fn ch09_covers() {
         expect_pass(COVERS, check_covers(ch09::covers));
+    }
+
+    #[test]
+    fn ch11_slab() {
+        expect_pass(SLAB, check_slab(ch11::slab));
     }
 
     /// The table of every exercise's status; never fails. See it with

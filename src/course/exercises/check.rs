@@ -33,6 +33,7 @@ pub use super::ch06_check::*;
 pub use super::ch07_check::*;
 pub use super::ch08_check::*;
 pub use super::ch09_check::*;
+pub use super::ch11_check::*;
 
 /// The result of checking one exercise.
 #[derive(Clone, Debug, PartialEq)]
@@ -128,7 +129,7 @@ impl Exercise {
 }
 
 /// Every coding exercise, in book order.
-pub const ALL: [Exercise; 11] = [
+pub const ALL: [Exercise; 13] = [
     ROTATION_Y,
     POINT_AT,
     PIXEL_TO_PLANE,
@@ -138,8 +139,10 @@ pub const ALL: [Exercise; 11] = [
     PINHOLE_RAY,
     RAY_PLANE_T,
     RAY_SPHERE_ROOTS,
+    MOLLER_TRUMBORE,
     CLOSEST,
     COVERS,
+    SLAB,
 ];
 
 // ---------------------------------------------------------------------------

@@ -20,6 +20,7 @@ pub mod ch06_check;
 pub mod ch07_check;
 pub mod ch08_check;
 pub mod ch09_check;
+pub mod ch11_check;
 pub mod check;
 
 #[cfg(feature = "exercises")]
@@ -40,6 +41,8 @@ pub mod ch07;
 pub mod ch08;
 #[cfg(feature = "exercises")]
 pub mod ch09;
+#[cfg(feature = "exercises")]
+pub mod ch11;
 
 /// Every exercise checked on the student's code, in book order.
 #[cfg(feature = "exercises")]
@@ -58,7 +61,12 @@ pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
             RAY_SPHERE_ROOTS,
             check_ray_sphere_roots(ch07::ray_sphere_roots),
         ),
+        (
+            MOLLER_TRUMBORE,
+            check_moller_trumbore(ch07::moller_trumbore),
+        ),
         (CLOSEST, check_closest(ch08::closest)),
         (COVERS, check_covers(ch09::covers)),
+        (SLAB, check_slab(ch11::slab)),
     ]
 }

@@ -8,6 +8,10 @@ mod lesson;
 #[allow(dead_code)]
 mod figures;
 
+#[path = "../examples/10_monte_carlo.rs"]
+#[allow(dead_code)]
+mod monte_carlo;
+
 use clap::Parser;
 
 use glam::{Vec2, Vec3};
@@ -1071,4 +1075,95 @@ fn common_blue(rgba: &[u8]) -> usize {
     rgba.chunks(4)
         .filter(|p| p[2] as i32 > p[0] as i32 + 60)
         .count()
+}
+
+// Step 1: Monte Carlo integration on its own (examples/10_monte_carlo.rs).
+
+fn monte_carlo_args(extra: &[&str]) -> monte_carlo::Args {
+    let mut argv = vec!["10_monte_carlo", "--out", "target/test-out/10"];
+    argv.extend(extra);
+    monte_carlo::Args::parse_from(argv)
+}
+
+#[test]
+fn monte_carlo_numbers() {
+    let args = monte_carlo_args(&[]);
+    let rows = monte_carlo::study(&args).unwrap();
+    insta::assert_snapshot!("monte_carlo", monte_carlo::numbers(&args, &rows));
+}
+
+#[test]
+fn monte_carlo_rmse_falls_as_one_over_sqrt_n() {
+    let args = monte_carlo_args(&[]);
+    let rows = monte_carlo::study(&args).unwrap();
+    assert_eq!(rows.len(), 17);
+    let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.n as f64, r.rmse)).collect();
+    let slope = render_lessons::course::chart::log_log_slope(&points).unwrap();
+    assert!((slope + 0.5).abs() < 0.05, "slope {slope}");
+    // sigma = sqrt(32/3 - pi^2): RMSE x sqrt(N) stays near it at every N.
+    let sigma = monte_carlo::sigma();
+    assert!((sigma - 0.892_8).abs() < 1e-4, "{sigma}");
+    for r in &rows {
+        let scaled = r.rmse * (r.n as f64).sqrt();
+        assert!((scaled / sigma - 1.0).abs() < 0.2, "N = {}: {scaled}", r.n);
+    }
+}
+
+#[test]
+fn monte_carlo_refuses_bad_flags() {
+    for (flags, param) in [
+        (["--runs", "0"], "runs"),
+        (["--runs", "4097"], "runs"),
+        (["--max-power", "25"], "max power"),
+    ] {
+        let args = monte_carlo_args(&flags);
+        match monte_carlo::study(&args) {
+            Err(e) => assert_eq!(e.param(), param, "{flags:?}"),
+            Ok(_) => panic!("{flags:?} accepted"),
+        }
+    }
+}
+
+#[test]
+fn the_monte_carlo_chart_is_the_committed_figure() {
+    let args = monte_carlo_args(&[]);
+    let rows = monte_carlo::study(&args).unwrap();
+    let svg = monte_carlo::chart(&args, &rows).svg().unwrap();
+    let committed = std::fs::read_to_string("chapters/figures/10_monte_carlo.svg").unwrap();
+    assert!(
+        svg == committed,
+        "chapters/figures/10_monte_carlo.svg is stale: run the example and copy out/10_monte_carlo.svg"
+    );
+}
+
+// Steps 2 to 8: each figure is what its command writes.
+
+#[test]
+fn each_step_figure_is_what_its_command_writes() {
+    for step in &figures::STEPS {
+        let mut argv = vec!["10_path_tracing", "--width", "32", "--height", "24"];
+        argv.extend(["--out", "target/test-out/10"]);
+        argv.extend(step.flags);
+        let args = lesson::Args::parse_from(argv);
+        let (study, renders) = render(&args).unwrap();
+        assert_eq!(
+            study.settings,
+            step.settings(args.sampling),
+            "{}",
+            step.file
+        );
+        assert_eq!(study.ladder.last(), Some(&step.spp), "{}", step.file);
+        assert_eq!(args.scene, step.scene, "{}", step.file);
+        assert_eq!(args.aperture, step.aperture, "{}", step.file);
+        if step.shown.len() == 1 {
+            assert_eq!(step.shown[0], args.sampling, "{}", step.file);
+        }
+        let written: Vec<&render_lessons::framebuffer::Framebuffer> = step
+            .shown
+            .iter()
+            .map(|s| &renders.strategies.iter().find(|(t, _)| t == s).unwrap().1)
+            .collect();
+        let written = render_lessons::framebuffer::Framebuffer::beside(&written, 4).unwrap();
+        assert!(written == step.render(32, 24).unwrap(), "{}", step.file);
+    }
 }

@@ -1,22 +1,194 @@
 //! Lesson 10's book-only figures: two paths the estimator really traced, recorded
-//! through its observer hook, and hemisphere samples with their densities.
+//! through its observer hook, hemisphere samples with their densities, and one small
+//! render per step of the chapter, each what the step's command writes.
 
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
 use render_lessons::course::report::num;
+use render_lessons::framebuffer::Framebuffer;
 use render_lessons::material::Material;
+use render_lessons::pathtrace::progressive::render_progressive;
 use render_lessons::pathtrace::record::{PathVertex, RecordedPath, record_path};
-use render_lessons::pathtrace::{LensCamera, Rng, Sampling, Settings, scenes};
+use render_lessons::pathtrace::scenes::SceneName;
+use render_lessons::pathtrace::{
+    LensCamera, Passes, PixelSampling, Rng, Sampling, Settings, scenes,
+};
 use render_lessons::sampling::{cosine_hemisphere, uniform_hemisphere};
 use render_lessons::scene::Scene;
 
-/// Writes `10_path.png` and `10_hemisphere.png`.
+/// Writes `10_path.png`, `10_hemisphere.png` and the steps' renders.
 pub fn figures(out: &Output) -> Result<()> {
     out.diagram("10_path.png", &path_figure()?)?;
-    out.diagram("10_hemisphere.png", &hemisphere_figure()?)
+    out.diagram("10_hemisphere.png", &hemisphere_figure()?)?;
+    for step in &STEPS {
+        out.image(step.file, &step.render(STEP_WIDTH, STEP_HEIGHT)?)?;
+    }
+    Ok(())
 }
+
+// ANCHOR: steps
+/// One step of the chapter: the flags of its command
+/// `cargo run --release --example 10_path_tracing -- <flags>`, and what they set.
+#[derive(Clone, Copy, Debug)]
+pub struct Step {
+    /// The figure's file in `chapters/figures/`.
+    pub file: &'static str,
+    /// The command's flags, as the chapter prints them.
+    pub flags: &'static [&'static str],
+    /// `--scene`.
+    pub scene: SceneName,
+    /// The strategies shown, side by side: `10_<flag>.png` of each (`--sampling`
+    /// for one, the study's strategies at the top count for more).
+    pub shown: &'static [Sampling],
+    /// Russian roulette (`--no-rr` turns it off).
+    pub roulette: bool,
+    /// `--aperture` (0: the pinhole); the focus is the default 220.
+    pub aperture: f32,
+    /// `--spp`: the top of the ladder, the count of the images shown.
+    pub spp: u32,
+}
+
+/// The steps' images are the example's default size.
+pub const STEP_WIDTH: u32 = 160;
+/// See [`STEP_WIDTH`].
+pub const STEP_HEIGHT: u32 = 120;
+
+/// Steps 2 to 8 of the chapter, in order.
+pub const STEPS: [Step; 7] = [
+    Step {
+        file: "10_step_uniform.png",
+        flags: &[
+            "--sampling",
+            "uniform",
+            "--no-rr",
+            "--spp",
+            "16",
+            "--reference-spp",
+            "16",
+        ],
+        scene: SceneName::Cornell,
+        shown: &[Sampling::UniformHemisphere],
+        roulette: false,
+        aperture: 0.0,
+        spp: 16,
+    },
+    Step {
+        file: "10_step_cosine.png",
+        flags: &[
+            "--sampling",
+            "cosine",
+            "--no-rr",
+            "--spp",
+            "16",
+            "--reference-spp",
+            "16",
+        ],
+        scene: SceneName::Cornell,
+        shown: &[Sampling::Cosine],
+        roulette: false,
+        aperture: 0.0,
+        spp: 16,
+    },
+    Step {
+        file: "10_step_roulette.png",
+        flags: &[
+            "--sampling",
+            "cosine",
+            "--spp",
+            "16",
+            "--reference-spp",
+            "16",
+        ],
+        scene: SceneName::Cornell,
+        shown: &[Sampling::Cosine],
+        roulette: true,
+        aperture: 0.0,
+        spp: 16,
+    },
+    Step {
+        file: "10_step_nee.png",
+        flags: &["--sampling", "nee", "--spp", "16", "--reference-spp", "16"],
+        scene: SceneName::Cornell,
+        shown: &[Sampling::NextEvent],
+        roulette: true,
+        aperture: 0.0,
+        spp: 16,
+    },
+    Step {
+        file: "10_step_mis.png",
+        flags: &[
+            "--scene",
+            "two-lights",
+            "--spp",
+            "16",
+            "--reference-spp",
+            "16",
+        ],
+        scene: SceneName::TwoLights,
+        shown: &[Sampling::Cosine, Sampling::NextEvent, Sampling::Mis],
+        roulette: true,
+        aperture: 0.0,
+        spp: 16,
+    },
+    Step {
+        file: "10_step_specular.png",
+        flags: &[],
+        scene: SceneName::Cornell,
+        shown: &[Sampling::Mis],
+        roulette: true,
+        aperture: 0.0,
+        spp: 64,
+    },
+    Step {
+        file: "10_step_lens.png",
+        flags: &["--aperture", "8", "--spp", "16", "--reference-spp", "16"],
+        scene: SceneName::Cornell,
+        shown: &[Sampling::Mis],
+        roulette: true,
+        aperture: 8.0,
+        spp: 16,
+    },
+];
+
+impl Step {
+    /// The estimator's settings the step's flags give (the example's defaults else).
+    pub fn settings(&self, sampling: Sampling) -> Settings {
+        Settings {
+            sampling,
+            max_depth: Some(8),
+            russian_roulette: self.roulette,
+            ..Settings::default()
+        }
+    }
+
+    /// The step's images at `width` x `height`, side by side: each a progressive
+    /// render with seed 1 from the scene's camera (a thin lens focused at 220 when
+    /// the aperture is not 0), the calls the example's study makes.
+    pub fn render(&self, width: u32, height: u32) -> Result<Framebuffer> {
+        let (scene, pinhole) = self.scene.build(width, height)?;
+        let camera = match self.aperture {
+            0.0 => pinhole,
+            aperture => pinhole.with_lens(aperture, 220.0)?,
+        };
+        let passes = Passes {
+            pixels: PixelSampling::Independent,
+            seed: 1,
+            threads: None,
+        };
+        let mut images = Vec::new();
+        for &sampling in self.shown {
+            let settings = self.settings(sampling);
+            render_progressive(&scene, &camera, &settings, passes, &[self.spp], |pass| {
+                images.push(pass.image);
+                Ok(())
+            })?;
+        }
+        Framebuffer::beside(&images.iter().collect::<Vec<_>>(), 4)
+    }
+}
+// ANCHOR_END: steps
 
 /// The pixel (of the default 160 x 120 render, seed 1) whose first sample gives the
 /// first path, in row order, that `wanted` accepts; a short search, done once.

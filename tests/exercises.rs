@@ -564,6 +564,85 @@ mod checks {
         );
     }
 
+    // Chapter 10.
+
+    #[test]
+    fn cosine_sample_accepts_the_reference() {
+        use render_lessons::sampling::cosine_hemisphere;
+        let reference = |u: Vec2| {
+            let w = cosine_hemisphere(u);
+            (w, w.z / std::f32::consts::PI)
+        };
+        assert_eq!(check_cosine_sample(reference), Outcome::Pass);
+        // Independently: theta from sin^2(theta) = u.x, then spherical coordinates.
+        let by_angles = |u: Vec2| {
+            let theta = u.x.sqrt().asin();
+            let phi = std::f32::consts::TAU * u.y;
+            let w = Vec3::new(
+                theta.sin() * phi.cos(),
+                theta.sin() * phi.sin(),
+                theta.cos(),
+            );
+            (w, theta.cos() / std::f32::consts::PI)
+        };
+        assert_eq!(check_cosine_sample(by_angles), Outcome::Pass);
+    }
+
+    /// Malley's method with the pieces the mistakes below get wrong: the radius
+    /// on the disc, the height, and the pdf of the direction.
+    fn malley(
+        u: Vec2,
+        r: fn(f32) -> f32,
+        z: fn(f32) -> f32,
+        pdf: fn(Vec3) -> f32,
+    ) -> (Vec3, f32) {
+        let (s, c) = (std::f32::consts::TAU * u.y).sin_cos();
+        let w = Vec3::new(r(u.x) * c, r(u.x) * s, z(u.x));
+        (w, pdf(w))
+    }
+
+    #[test]
+    fn cosine_sample_rejects_mistakes() {
+        use std::f32::consts::{PI, TAU};
+        let cos_over_pi = |w: Vec3| w.z / PI;
+        let sqrt = |x: f32| x.sqrt();
+        let lift = |x: f32| (1.0 - x).max(0.0).sqrt();
+        // Uniform directions (z = u.x) with the cosine pdf.
+        fails_with(
+            check_cosine_sample(|u| {
+                malley(u, |x| (1.0 - x * x).max(0.0).sqrt(), |x| x, cos_over_pi)
+            }),
+            "uniform hemisphere",
+        );
+        // The pdf without its 1/pi.
+        fails_with(
+            check_cosine_sample(|u| malley(u, sqrt, lift, |w| w.z)),
+            "misses 1/pi",
+        );
+        // The uniform density for cosine directions.
+        fails_with(
+            check_cosine_sample(|u| malley(u, sqrt, lift, |_| 1.0 / TAU)),
+            "uniform hemisphere's density",
+        );
+        // The square root on the radius only: z = 1 - u.x is not unit length.
+        fails_with(
+            check_cosine_sample(|u| malley(u, sqrt, |x| 1.0 - x, cos_over_pi)),
+            "unit length",
+        );
+        // No square root on the radius: r = u.x, lifted to unit length.
+        fails_with(
+            check_cosine_sample(|u| {
+                malley(u, |x| x, |x| (1.0 - x * x).max(0.0).sqrt(), cos_over_pi)
+            }),
+            "r = sqrt(u.x)",
+        );
+        // A right sampler, u.x and u.y swapped.
+        fails_with(
+            check_cosine_sample(|u| malley(Vec2::new(u.y, u.x), sqrt, lift, cos_over_pi)),
+            "swapped",
+        );
+    }
+
     // Chapter 11.
 
     /// The slab test as a student might write it, with its parts chosen by the flags:
@@ -716,7 +795,7 @@ mod checks {
 #[cfg(feature = "exercises")]
 mod student {
     use render_lessons::course::exercises::{
-        ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, ch09, ch11, check_all,
+        ch01, ch02, ch03, ch04, ch05, ch06, ch07, ch08, ch09, ch10, ch11, check_all,
     };
 
     use super::*;
@@ -783,6 +862,11 @@ mod student {
     #[test]
     fn ch09_covers() {
         expect_pass(COVERS, check_covers(ch09::covers));
+    }
+
+    #[test]
+    fn ch10_cosine_sample() {
+        expect_pass(COSINE_SAMPLE, check_cosine_sample(ch10::cosine_sample));
     }
 
     #[test]

@@ -33,6 +33,7 @@ pub use super::ch06_check::*;
 pub use super::ch07_check::*;
 pub use super::ch08_check::*;
 pub use super::ch09_check::*;
+pub use super::ch10_check::*;
 pub use super::ch11_check::*;
 
 /// The result of checking one exercise.
@@ -129,7 +130,7 @@ impl Exercise {
 }
 
 /// Every coding exercise, in book order.
-pub const ALL: [Exercise; 13] = [
+pub const ALL: [Exercise; 14] = [
     ROTATION_Y,
     POINT_AT,
     PIXEL_TO_PLANE,
@@ -142,6 +143,7 @@ pub const ALL: [Exercise; 13] = [
     MOLLER_TRUMBORE,
     CLOSEST,
     COVERS,
+    COSINE_SAMPLE,
     SLAB,
 ];
 

@@ -20,6 +20,7 @@ pub mod ch06_check;
 pub mod ch07_check;
 pub mod ch08_check;
 pub mod ch09_check;
+pub mod ch10_check;
 pub mod ch11_check;
 pub mod check;
 
@@ -41,6 +42,8 @@ pub mod ch07;
 pub mod ch08;
 #[cfg(feature = "exercises")]
 pub mod ch09;
+#[cfg(feature = "exercises")]
+pub mod ch10;
 #[cfg(feature = "exercises")]
 pub mod ch11;
 
@@ -67,6 +70,7 @@ pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
         ),
         (CLOSEST, check_closest(ch08::closest)),
         (COVERS, check_covers(ch09::covers)),
+        (COSINE_SAMPLE, check_cosine_sample(ch10::cosine_sample)),
         (SLAB, check_slab(ch11::slab)),
     ]
 }

@@ -352,11 +352,19 @@ mod checks {
             check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_stable(&ray(o, d))),
             Outcome::Pass
         );
-        // The school formula is good enough for these cases.
-        assert_eq!(
-            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_textbook(&ray(o, d))),
-            Outcome::Pass
-        );
+        // Written out independently: the Hearn-Baker discriminant r^2 - |l|^2 (with
+        // b/2 = f . d) and the school formula's roots, which do not cancel here.
+        let by_hand = |o: Vec3, d: Vec3, c: Vec3, r: f32| {
+            let f = o - c;
+            let half_b = f.dot(d);
+            let l = f - half_b * d;
+            let quarter_disc = r * r - l.dot(l);
+            (quarter_disc >= 0.0).then(|| {
+                let h = quarter_disc.sqrt();
+                (-half_b - h, -half_b + h)
+            })
+        };
+        assert_eq!(check_ray_sphere_roots(by_hand), Outcome::Pass);
     }
 
     #[test]
@@ -381,6 +389,156 @@ mod checks {
                     .filter(|&(t0, _)| t0 >= 0.0)
             }),
             "negative",
+        );
+        // The school formula: right near the origin, wrong on the far sphere (S1).
+        fails_with(
+            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_textbook(&ray(o, d))),
+            "STABILITY S1",
+        );
+        let textbook_disc = |o: Vec3, d: Vec3, c: Vec3, r: f32, stable_roots: bool| {
+            let f = o - c;
+            let (a, b, c) = (d.dot(d), 2.0 * f.dot(d), f.dot(f) - r * r);
+            let disc = b * b - 4.0 * a * c;
+            if disc < 0.0 {
+                return None;
+            }
+            let (t0, t1) = if stable_roots {
+                let q = -0.5 * (b + b.signum() * disc.sqrt());
+                (c / q, q / a)
+            } else {
+                (
+                    (-b - disc.sqrt()) / (2.0 * a),
+                    (-b + disc.sqrt()) / (2.0 * a),
+                )
+            };
+            Some((t0.min(t1), t0.max(t1)))
+        };
+        fails_with(
+            check_ray_sphere_roots(|o, d, c, r| textbook_disc(o, d, c, r, false)),
+            "4 (r^2 - |f - (f . d) d|^2)",
+        );
+        // The stable roots alone do not repair a discriminant of the wrong sign.
+        fails_with(
+            check_ray_sphere_roots(|o, d, c, r| textbook_disc(o, d, c, r, true)),
+            "STABILITY S1",
+        );
+    }
+
+    /// Moller-Trumbore written out, with switches for the typical mistakes.
+    #[derive(Clone, Copy, Default)]
+    struct MtMistakes {
+        cull_back_faces: bool,
+        no_sum_test: bool,
+        accept_negative_t: bool,
+        no_parallel_test: bool,
+        strict_edges: bool,
+    }
+
+    fn moller_trumbore_with(
+        m: MtMistakes,
+    ) -> impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)> {
+        move |o, d, v0, v1, v2| {
+            let (e1, e2) = (v1 - v0, v2 - v0);
+            let p = d.cross(e2);
+            let det = e1.dot(p);
+            if (det == 0.0 && !m.no_parallel_test) || (m.cull_back_faces && det < 0.0) {
+                return None;
+            }
+            let inside = |b: f32| if m.strict_edges { b > 0.0 } else { b >= 0.0 };
+            let s = o - v0;
+            let b1 = s.dot(p) / det;
+            if b1 < 0.0 || b1 > 1.0 || (m.strict_edges && !inside(b1)) {
+                return None;
+            }
+            let q = s.cross(e1);
+            let b2 = d.dot(q) / det;
+            let sum_outside = if m.strict_edges {
+                b1 + b2 >= 1.0
+            } else {
+                b1 + b2 > 1.0
+            };
+            if b2 < 0.0 || (m.strict_edges && !inside(b2)) || (sum_outside && !m.no_sum_test) {
+                return None;
+            }
+            let t = e2.dot(q) / det;
+            if t <= 0.0 && !m.accept_negative_t {
+                return None;
+            }
+            Some((t, b1, b2))
+        }
+    }
+
+    #[test]
+    fn moller_trumbore_accepts_the_reference() {
+        use render_lessons::shapes::Triangle;
+        let triangle = |v0, v1, v2| Triangle::new(v0, v1, v2).unwrap();
+        let ray = |o, d| Ray::new(o, d).unwrap();
+        assert_eq!(
+            check_moller_trumbore(|o, d, v0, v1, v2| {
+                triangle(v0, v1, v2).moller_trumbore(&ray(o, d), 0.0, f32::INFINITY)
+            }),
+            Outcome::Pass
+        );
+        assert_eq!(
+            check_moller_trumbore(moller_trumbore_with(MtMistakes::default())),
+            Outcome::Pass
+        );
+        // The watertight test gives the same answers on these exact cases.
+        assert_eq!(
+            check_moller_trumbore(|o, d, v0, v1, v2| {
+                triangle(v0, v1, v2)
+                    .watertight(&ray(o, d), 0.0, f32::INFINITY)
+                    .map(|(t, _, b1, b2)| (t, b1, b2))
+            }),
+            Outcome::Pass
+        );
+    }
+
+    #[test]
+    fn moller_trumbore_rejects_mistakes() {
+        let with = |m| check_moller_trumbore(moller_trumbore_with(m));
+        let no = MtMistakes::default();
+        fails_with(
+            with(MtMistakes {
+                cull_back_faces: true,
+                ..no
+            }),
+            "from its back",
+        );
+        fails_with(
+            with(MtMistakes {
+                no_sum_test: true,
+                ..no
+            }),
+            "b1 + b2 <= 1",
+        );
+        fails_with(
+            with(MtMistakes {
+                accept_negative_t: true,
+                ..no
+            }),
+            "behind the ray's origin",
+        );
+        fails_with(
+            with(MtMistakes {
+                no_parallel_test: true,
+                ..no
+            }),
+            "before dividing by det",
+        );
+        fails_with(
+            with(MtMistakes {
+                strict_edges: true,
+                ..no
+            }),
+            "crack",
+        );
+        let swapped = moller_trumbore_with(no);
+        fails_with(
+            check_moller_trumbore(|o, d, v0, v1, v2| {
+                swapped(o, d, v0, v1, v2).map(|(t, b1, b2)| (t, b2, b1))
+            }),
+            "swapped",
         );
     }
 
@@ -851,6 +1009,14 @@ mod student {
         expect_pass(
             RAY_SPHERE_ROOTS,
             check_ray_sphere_roots(ch07::ray_sphere_roots),
+        );
+    }
+
+    #[test]
+    fn ch07_moller_trumbore() {
+        expect_pass(
+            MOLLER_TRUMBORE,
+            check_moller_trumbore(ch07::moller_trumbore),
         );
     }
 

@@ -1,4 +1,4 @@
-//! Chapter 07, Ray/primitive intersections: coding exercises 7.1 and 7.2.
+//! Chapter 07, Ray/primitive intersections: coding exercises 7.1, 7.2 and 7.3.
 //!
 //! Check them with `cargo test --features exercises --test exercises ch07`.
 // The parameters are unused until you write the bodies.
@@ -24,5 +24,23 @@ pub fn ray_plane_t(o: Vec3, d: Vec3, p0: Vec3, n: Vec3) -> Option<f32> {
 pub fn ray_sphere_roots(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f32)> {
     todo!(
         "Coding exercise 7.2 (chapter 07, Ray/primitive intersections): solve the ray/sphere quadratic"
+    )
+}
+
+/// Coding exercise 7.3: the Moller-Trumbore test. Where the ray o + t d (`d` of
+/// length 1) hits the triangle `v0, v1, v2`, as `(t, b1, b2)`: the distance `t` and
+/// the barycentric weights of `v1` and `v2`, so that the point is
+/// (1 - b1 - b2) v0 + b1 v1 + b2 v2.
+///
+/// With e1 = v1 - v0 and e2 = v2 - v0, solve o + t d = v0 + b1 e1 + b2 e2 for t,
+/// b1 and b2 by Cramer's rule (the chapter's page on the triangle). Return `None`
+/// when the ray is parallel to the triangle's plane (det = 0), when the point lies
+/// outside the triangle, or when it is not in front of the origin (t > 0 is
+/// required). The triangle has two sides: a ray may hit it from the back. A point on
+/// an edge or a corner is inside, so that a ray through the edge that two triangles
+/// share hits both.
+pub fn moller_trumbore(o: Vec3, d: Vec3, v0: Vec3, v1: Vec3, v2: Vec3) -> Option<(f32, f32, f32)> {
+    todo!(
+        "Coding exercise 7.3 (chapter 07, Ray/primitive intersections): the Moller-Trumbore ray/triangle test"
     )
 }

@@ -6,7 +6,7 @@ use glam::Vec3;
 
 use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::ray::Ray;
-use crate::shapes::{Plane, Sphere};
+use crate::shapes::{Plane, Sphere, Triangle};
 
 /// Coding exercise 7.1.
 pub const RAY_PLANE_T: Exercise = Exercise {
@@ -22,6 +22,14 @@ pub const RAY_SPHERE_ROOTS: Exercise = Exercise {
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_sphere_roots",
+    file: "src/course/exercises/ch07.rs",
+};
+/// Coding exercise 7.3.
+pub const MOLLER_TRUMBORE: Exercise = Exercise {
+    number: "7.3",
+    chapter: "07",
+    chapter_title: "Ray/primitive intersections",
+    function: "moller_trumbore",
     file: "src/course/exercises/ch07.rs",
 };
 
@@ -101,8 +109,12 @@ pub fn check_ray_plane_t(f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Option<f32>) -> O
 type SphereArgs = (Vec3, Vec3, Vec3, f32);
 
 /// Checks `ray_sphere_roots(o, d, c, r)`: both `t` where the line o + t d (`d` of
-/// unit length) meets the sphere, ascending, or `None` when it misses.
+/// unit length) meets the sphere, ascending, or `None` when it misses. The last cases
+/// are STABILITY S1's small sphere far away, which the school formula gets wrong.
 pub fn check_ray_sphere_roots(f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, f32)>) -> Outcome {
+    let aim = v(0.3, 0.2, -1.0).normalize();
+    let far = 1e4 * aim;
+    let across = aim.cross(Vec3::Y).normalize();
     let cases: Vec<Case<SphereArgs>> = [
         (v(-3.0, 0.0, 0.0), Vec3::X, Vec3::ZERO, 1.0),
         (Vec3::ZERO, Vec3::X, Vec3::ZERO, 1.0),
@@ -111,6 +123,11 @@ pub fn check_ray_sphere_roots(f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, 
         (v(3.0, 0.0, 0.0), Vec3::X, Vec3::ZERO, 1.0),
         (v(1.0, 2.0, -5.0), Vec3::Z, v(1.0, 2.0, 3.0), 2.0),
         (v(0.0, 0.0, 5.0), v(0.0, 0.6, -0.8), v(0.0, 1.0, 0.0), 1.5),
+        // STABILITY S1: a unit sphere 1e4 away, rays aimed at its centre, 0.6 r off
+        // it and 2 r off it (a miss). The textbook discriminant cancels on all three.
+        (Vec3::ZERO, aim, far, 1.0),
+        (Vec3::ZERO, (far + 0.6 * across).normalize(), far, 1.0),
+        (Vec3::ZERO, (far - 2.0 * across).normalize(), far, 1.0),
     ]
     .into_iter()
     .map(|(o, d, c, r)| {
@@ -152,8 +169,154 @@ pub fn check_ray_sphere_roots(f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, 
                 hint: "return both roots of the line, even negative ones (behind the origin); \
                        choosing t_min < t < t_max is the hit function's job",
             },
+            Mistake {
+                looks_like: &|&(o, _, c, r): &SphereArgs, _: &Option<(f32, f32)>| {
+                    (c - o).length() > 1e3 * r
+                },
+                hint: "the sphere is small and far away (D/r = 1e4, STABILITY S1): b^2 and 4ac \
+                       are both about 4 D^2, and the school formula's b^2 - 4ac loses their \
+                       small difference to rounding. Compute the discriminant as \
+                       b^2 - 4ac = 4 (r^2 - |f - (f . d) d|^2), with no big numbers subtracted, \
+                       and the roots in the stable form q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2 \
+                       (sign(0) = +1), t = c/q and q/a",
+            },
         ],
         "with f = o - c: a = d . d, b = 2 f . d, c = f . f - r^2; no roots when \
-         b^2 - 4ac < 0; otherwise (-b -+ sqrt(b^2 - 4ac)) / 2a, ascending",
+         r^2 - |f - (f . d) d|^2 < 0; otherwise q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2 \
+         and the roots c/q and q/a, ascending",
+    )
+}
+
+type TriangleArgs = (Vec3, Vec3, Vec3, Vec3, Vec3);
+
+/// det, b1 and b2 of Moller-Trumbore for these arguments, in f64 (to recognise
+/// mistakes, not to grade): det = e1 . (d x e2), b1 and b2 by Cramer's rule.
+fn cramer(&(o, d, v0, v1, v2): &TriangleArgs) -> (f64, f64, f64) {
+    let [o, d, v0, v1, v2] = [o, d, v0, v1, v2].map(Vec3::as_dvec3);
+    let (e1, e2, s) = (v1 - v0, v2 - v0, o - v0);
+    let p = d.cross(e2);
+    let det = e1.dot(p);
+    let q = s.cross(e1);
+    (det, s.dot(p) / det, d.dot(q) / det)
+}
+
+/// Checks `moller_trumbore(o, d, v0, v1, v2)`: `(t, b1, b2)` of the hit with t > 0 of
+/// the ray o + t d (`d` of unit length) on the two-sided triangle, or `None`.
+///
+/// Besides single triangles, the cases shoot rays exactly through the edge two
+/// triangles of a square share and through the vertex four triangles of a fan share.
+/// Their coordinates are small integers, so every step is exact in `f32`: each
+/// triangle finds a barycentric weight of exactly 0 or 1, and an inclusive test hits
+/// every one of them, as the crate's does. (With rounding, Moller-Trumbore can still
+/// let such a ray through: STABILITY S4, S5, which the watertight test fixes.)
+pub fn check_moller_trumbore(
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)>,
+) -> Outcome {
+    let down = -Vec3::Z;
+    let unit = (Vec3::ZERO, Vec3::X, Vec3::Y);
+    let lesson = (v(1.0, -1.0, -1.0), v(1.0, 1.5, 0.0), v(1.0, -1.0, 1.0));
+    let diagonal = v(1.0, 1.0, 1.0).normalize();
+    let corners = (Vec3::X, Vec3::Y, Vec3::Z);
+    let hub = v(1.0, 1.0, 0.0);
+    let (a, b, c, e) = (
+        Vec3::ZERO,
+        v(2.0, 0.0, 0.0),
+        v(2.0, 2.0, 0.0),
+        v(0.0, 2.0, 0.0),
+    );
+    let cases: Vec<Case<TriangleArgs>> = [
+        ("front face", v(0.25, 0.5, 5.0), down, unit),
+        ("the lesson's triangle, back face", v(-2.0, 0.2, 0.0), v(1.0, 0.1, 0.0).normalize(), lesson),
+        ("outside, b1 + b2 > 1", v(0.75, 0.5, 5.0), down, unit),
+        ("behind the origin", v(0.25, 0.5, 5.0), Vec3::Z, unit),
+        ("parallel, in the triangle's plane", v(-1.0, 0.25, 0.0), Vec3::X, unit),
+        ("parallel, above the plane", v(-1.0, 0.25, 1.0), Vec3::X, unit),
+        ("through the centroid", Vec3::ZERO, diagonal, corners),
+        ("square (0,0)-(2,2) split on its diagonal, triangle 1 of 2, ray through the shared edge", v(1.0, 1.0, 3.0), down, (a, b, c)),
+        ("square (0,0)-(2,2) split on its diagonal, triangle 2 of 2, ray through the shared edge", v(1.0, 1.0, 3.0), down, (e, a, c)),
+        ("fan of 4 around (1, 1, 0), triangle 1, ray through the shared vertex", v(1.0, 1.0, 3.0), down, (hub, a, b)),
+        ("fan of 4 around (1, 1, 0), triangle 2, ray through the shared vertex", v(1.0, 1.0, 3.0), down, (b, c, hub)),
+        ("fan of 4 around (1, 1, 0), triangle 3, ray through the shared vertex", v(1.0, 1.0, 3.0), down, (e, hub, c)),
+        ("fan of 4 around (1, 1, 0), triangle 4, ray through the shared vertex", v(1.0, 1.0, 3.0), down, (e, a, hub)),
+    ]
+    .into_iter()
+    .map(|(what, o, d, (v0, v1, v2))| {
+        (
+            format!(
+                "{what}: o = {}, d = {}, v0 = {}, v1 = {}, v2 = {}",
+                o.show(),
+                d.show(),
+                v0.show(),
+                v1.show(),
+                v2.show()
+            ),
+            (o, d, v0, v1, v2),
+        )
+    })
+    .collect();
+    let reference = |&(o, d, v0, v1, v2): &TriangleArgs| {
+        Triangle::new(v0, v1, v2)
+            .expect("valid triangle")
+            .moller_trumbore(&Ray::new(o, d).expect("valid ray"), 0.0, f32::INFINITY)
+    };
+    let hits_inside = |a: &TriangleArgs| {
+        reference(a).is_some_and(|(_, b1, b2)| b1 > 0.0 && b2 > 0.0 && b1 + b2 < 1.0)
+    };
+    run(
+        &cases,
+        reference,
+        |(o, d, v0, v1, v2)| f(o, d, v0, v1, v2),
+        &[
+            Mistake {
+                looks_like: &|a: &TriangleArgs, got: &Option<(f32, f32, f32)>| {
+                    got.is_some_and(|(t, b1, b2)| {
+                        !(t.is_finite() && b1.is_finite() && b2.is_finite())
+                    }) || (cramer(a).0 == 0.0 && got.is_some())
+                },
+                hint: "the ray is parallel to the triangle's plane, det = e1 . (d x e2) = 0: \
+                       return None before dividing by det (1/0 is inf, 0 * inf is NaN, and a \
+                       NaN passes every comparison)",
+            },
+            Mistake {
+                looks_like: &|_: &TriangleArgs, got: &Option<(f32, f32, f32)>| {
+                    got.is_some_and(|(t, ..)| t <= 0.0)
+                },
+                hint: "the triangle is behind the ray's origin: a hit needs t > 0",
+            },
+            Mistake {
+                looks_like: &|a: &TriangleArgs, got: &Option<(f32, f32, f32)>| {
+                    let (_, b1, b2) = cramer(a);
+                    got.is_some() && b1 >= 0.0 && b2 >= 0.0 && b1 + b2 > 1.0
+                },
+                hint: "b1 >= 0 and b2 >= 0 are not enough: also require b1 + b2 <= 1 (the weight \
+                       of v0, b0 = 1 - b1 - b2, must not be negative either)",
+            },
+            Mistake {
+                looks_like: &|a: &TriangleArgs, got: &Option<(f32, f32, f32)>| {
+                    got.is_none() && reference(a).is_some() && !hits_inside(a)
+                },
+                hint: "the ray goes through an edge or a corner this triangle shares with its \
+                       neighbours: count the boundary as inside (b1 >= 0, b2 >= 0, \
+                       b1 + b2 <= 1), or the ray slips through a crack between them",
+            },
+            Mistake {
+                looks_like: &|a: &TriangleArgs, got: &Option<(f32, f32, f32)>| {
+                    got.is_none() && hits_inside(a) && cramer(a).0 < 0.0
+                },
+                hint: "this ray meets the triangle from its back, where det = e1 . (d x e2) < 0: \
+                       only det = 0 (a parallel ray) means no hit; the sign of det just tells \
+                       the side the ray comes from",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &TriangleArgs| {
+                    Some(reference(a).map(|(t, b1, b2)| (t, b2, b1)))
+                }),
+                hint: "b1 and b2 are swapped: b1 = s . p / det is the weight of v1, \
+                       b2 = d . q / det the weight of v2",
+            },
+        ],
+        "with e1 = v1 - v0, e2 = v2 - v0, s = o - v0, p = d x e2, q = s x e1: det = e1 . p \
+         (None if 0), b1 = s . p / det, b2 = d . q / det, t = e2 . q / det; a hit needs \
+         b1 >= 0, b2 >= 0, b1 + b2 <= 1 and t > 0",
     )
 }

@@ -26,11 +26,13 @@ pub const COSINE_SAMPLE: Exercise = Exercise {
     file: "src/course/exercises/ch10.rs",
 };
 
+// ANCHOR: solution
 /// The crate's answer: Malley's direction and its density cos(theta) / pi.
 pub fn cosine_sample_reference(u: Vec2) -> (Vec3, f32) {
     let w = cosine_hemisphere(u);
     (w, w.z / PI)
 }
+// ANCHOR_END: solution
 
 /// Samples in each statistic of the first round.
 const SAMPLES: u32 = 4096;

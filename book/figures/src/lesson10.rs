@@ -35,7 +35,9 @@ pub fn figures(out: &Output) -> Result<()> {
 pub struct Step {
     /// The figure's file in `chapters/figures/`.
     pub file: &'static str,
-    /// The command's flags, as the chapter prints them.
+    /// The command's flags, as the chapter prints them (read by the test that runs
+    /// them, `each_step_figure_is_what_its_command_writes`).
+    #[allow(dead_code)]
     pub flags: &'static [&'static str],
     /// `--scene`.
     pub scene: SceneName,

@@ -164,7 +164,7 @@ pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32)) -> Outcome {
     run(
         &cases,
         |u| cosine_sample_reference(*u),
-        |u| f(u),
+        &f,
         &[
             Mistake {
                 looks_like: &swapped,

@@ -125,17 +125,27 @@ pub fn figure(case: &Case) -> Result<Diagram> {
     d.arrow(view(ray.origin()), view(ray.at(far)), palette::RAY, 2.0);
     d.dot(view(ray.origin()), 4.0, palette::RAY);
     d.text(view(ray.origin()), "o", palette::RAY, Place::Left);
-    for (i, t) in ts.iter().enumerate() {
-        let p = view(ray.at(*t));
-        let place = if i == 0 { Place::Below } else { Place::Right };
-        d.dot(p, 5.0, palette::HIT);
-        let label = format!("t = {}", num(*t as f64, 3));
-        d.text(p, &label, palette::HIT, place);
+    for t in ts.iter() {
+        d.dot(view(ray.at(*t)), 5.0, palette::HIT);
     }
-    if let Some(hit) = shape.hit(ray, 0.0, f32::INFINITY) {
+    let normal = shape.hit(ray, 0.0, f32::INFINITY).map(|hit| {
         let (p, tip) = (view(hit.point), view(hit.point) + view(hit.normal) * 0.8);
         d.arrow(p, tip, palette::NORMAL, 2.5);
-        d.text(tip, "n", palette::NORMAL, Place::Right);
+        tip
+    });
+    // The labels once everything is drawn, each where it covers nothing.
+    for (i, t) in ts.iter().enumerate() {
+        let place = if i == 0 { Place::Below } else { Place::Right };
+        let label = format!("t = {}", num(*t as f64, 3));
+        d.text_clear(
+            view(ray.at(*t)),
+            &label,
+            palette::HIT,
+            &place.nearest_first(),
+        );
+    }
+    if let Some(tip) = normal {
+        d.text_clear(tip, "n", palette::NORMAL, &Place::Right.nearest_first());
     }
     Ok(d)
 }

@@ -69,17 +69,162 @@ pub enum Place {
     Below,
     /// Centred on the point.
     Centre,
+    /// Above and to the right: the label's lower-left corner near the point.
+    AboveRight,
+    /// Above and to the left.
+    AboveLeft,
+    /// Below and to the right.
+    BelowRight,
+    /// Below and to the left.
+    BelowLeft,
+}
+
+impl Place {
+    /// Every place but the centre, nearest to this one first (its two neighbours,
+    /// then theirs, the opposite place last); the centre alone for the centre.
+    pub fn nearest_first(self) -> Vec<Place> {
+        use Place::*;
+        let ring = [
+            Right, AboveRight, Above, AboveLeft, Left, BelowLeft, Below, BelowRight,
+        ];
+        let Some(i) = ring.iter().position(|p| *p == self) else {
+            return vec![self];
+        };
+        let mut order = vec![self];
+        for k in 1..=4 {
+            order.push(ring[(i + k) % 8]);
+            if k < 4 {
+                order.push(ring[(i + 8 - k) % 8]);
+            }
+        }
+        order
+    }
+}
+
+/// A rectangle of the canvas in pixels (y down): where a label's ink lies.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PxBox {
+    /// The top-left corner.
+    pub min: Vec2,
+    /// The bottom-right corner.
+    pub max: Vec2,
+}
+
+impl PxBox {
+    /// `true` if the two boxes share more than a touching edge.
+    pub fn overlaps(&self, other: &PxBox) -> bool {
+        self.min.x < other.max.x
+            && other.min.x < self.max.x
+            && self.min.y < other.max.y
+            && other.min.y < self.max.y
+    }
+
+    /// `true` if a stroke from `a` to `b`, `half_width` pixels either side of its
+    /// centre line, touches the box.
+    fn touches(&self, a: Vec2, b: Vec2, half_width: f32) -> bool {
+        // The box grown by the half width against the segment, clipped (Liang-Barsky).
+        let (lo, hi) = (self.min - half_width, self.max + half_width);
+        let d = b - a;
+        let (mut t0, mut t1) = (0.0f32, 1.0f32);
+        for (p, q) in [
+            (-d.x, a.x - lo.x),
+            (d.x, hi.x - a.x),
+            (-d.y, a.y - lo.y),
+            (d.y, hi.y - a.y),
+        ] {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return false;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+            }
+        }
+        t0 <= t1
+    }
+}
+
+/// What a label is, which decides what gives way when two collide.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LabelKind {
+    /// A figure's own label.
+    Text,
+    /// An axis tick's value: left out when it would cover another label.
+    Tick,
+    /// An axis's name.
+    AxisName,
+    /// The title at the top.
+    Title,
+}
+
+/// A label as drawn: its text, kind and the box its ink covers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// The text.
+    pub text: String,
+    /// What the label is.
+    pub kind: LabelKind,
+    /// Where its ink lies, in pixels.
+    pub bounds: PxBox,
+    at: Vec2,
+    size: f32,
+    color: Rgb,
+}
+
+/// Two things a reader cannot tell apart: found by [`Diagram::label_collisions`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Collision {
+    /// Two labels whose ink boxes overlap.
+    Labels(String, String),
+    /// A label over an axis line or a tick mark.
+    Axis(String),
+}
+
+impl std::fmt::Display for Collision {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Collision::Labels(a, b) => write!(f, "label {a:?} overlaps label {b:?}"),
+            Collision::Axis(a) => write!(f, "label {a:?} lies on an axis or a tick mark"),
+        }
+    }
+}
+
+/// A stroke the canvas remembers, so that labels can keep clear of it.
+#[derive(Clone, Copy, Debug)]
+struct Segment {
+    a: Vec2,
+    b: Vec2,
+    half_width: f32,
+    axis: bool,
 }
 
 /// Font size of labels, in pixels.
 pub const LABEL_SIZE: f32 = 15.0;
 const GAP: f32 = 6.0;
+/// The room a placed label keeps from everything else, in pixels.
+const PAD: f32 = 2.0;
 
 /// A canvas showing the rectangle `x` by `y` of diagram space.
+///
+/// Shapes are drawn at once; labels are kept (text, place, ink box) and set on top of
+/// everything when the diagram is saved, so no later line can hide one. The canvas
+/// also remembers its strokes and dots, so that [`Diagram::text_clear`] can put a
+/// label where nothing is, a label over a line gets a white halo, a tick value that
+/// would cover another label is left out, and [`Diagram::label_collisions`] can tell
+/// a test what still collides.
 pub struct Diagram {
     pixmap: Pixmap,
     origin_px: Vec2,
     scale: f32,
+    labels: Vec<Label>,
+    segments: Vec<Segment>,
+    /// While `axes` draws: strokes then count as axis lines and ticks.
+    drawing_axes: bool,
 }
 
 fn paint(color: Rgb) -> Paint<'static> {
@@ -120,6 +265,9 @@ impl Diagram {
             pixmap,
             origin_px,
             scale,
+            labels: Vec::new(),
+            segments: Vec::new(),
+            drawing_axes: false,
         };
         d.pixmap.fill(tiny_skia::Color::WHITE);
         Ok(d)
@@ -136,6 +284,15 @@ impl Diagram {
     }
 
     fn stroke(&mut self, points: &[Vec2], color: Rgb, width_px: f32, dash: bool) {
+        let px: Vec<Vec2> = points.iter().map(|p| self.to_px(*p)).collect();
+        for pair in px.windows(2) {
+            self.segments.push(Segment {
+                a: pair[0],
+                b: pair[1],
+                half_width: 0.5 * width_px,
+                axis: self.drawing_axes,
+            });
+        }
         let mut pb = PathBuilder::new();
         for (i, p) in points.iter().map(|p| self.to_px(*p)).enumerate() {
             if i == 0 {
@@ -211,6 +368,12 @@ impl Diagram {
     /// A filled dot of radius `radius_px` pixels.
     pub fn dot(&mut self, p: Vec2, radius_px: f32, color: Rgb) {
         let c = self.to_px(p);
+        self.segments.push(Segment {
+            a: c,
+            b: c,
+            half_width: radius_px,
+            axis: false,
+        });
         if let Some(path) = PathBuilder::from_circle(c.x, c.y, radius_px) {
             self.pixmap.fill_path(
                 &path,
@@ -219,6 +382,25 @@ impl Diagram {
                 Transform::identity(),
                 None,
             );
+        }
+    }
+
+    /// Copies an opaque image (RGBA bytes, `width` pixels a row) onto the canvas
+    /// with its top-left pixel at (`left`, `top`); what falls off the canvas is cut.
+    pub fn image_px(&mut self, left: u32, top: u32, width: u32, rgba: &[u8]) {
+        let (w, h) = (self.pixmap.width(), self.pixmap.height());
+        let pixels = self.pixmap.pixels_mut();
+        for (i, p) in rgba.chunks_exact(4).enumerate() {
+            let (x, y) = (
+                left as usize + i % width as usize,
+                top as usize + i / width as usize,
+            );
+            if x >= w as usize || y >= h as usize {
+                continue;
+            }
+            if let Some(c) = PremultipliedColorU8::from_rgba(p[0], p[1], p[2], 255) {
+                pixels[y * w as usize + x] = c;
+            }
         }
     }
 
@@ -237,11 +419,17 @@ impl Diagram {
 
     /// Horizontal and vertical axes through the origin with ticks every `step`
     /// units, labelled with their values and with the axis names at the ends.
+    ///
+    /// A tick value that would cover another label is left out when the diagram is
+    /// saved (the tick mark stays).
     pub fn axes(&mut self, x: (f32, f32), y: (f32, f32), step: f32, names: (&str, &str)) {
+        self.drawing_axes = true;
         self.arrow(Vec2::new(x.0, 0.0), Vec2::new(x.1, 0.0), palette::INK, 1.5);
         self.arrow(Vec2::new(0.0, y.0), Vec2::new(0.0, y.1), palette::INK, 1.5);
-        self.text(Vec2::new(x.1, 0.0), names.0, palette::INK, Place::Right);
-        self.text(Vec2::new(0.0, y.1), names.1, palette::INK, Place::Right);
+        let (size, kind) = (LABEL_SIZE, LabelKind::AxisName);
+        let at = [Vec2::new(x.1, 0.0), Vec2::new(0.0, y.1)].map(|p| self.to_px(p));
+        self.label(at[0], names.0, size, palette::INK, Place::Right, kind);
+        self.label(at[1], names.1, size, palette::INK, Place::Right, kind);
         let tick = 4.0 / self.scale;
         let ticks = |lo: f32, hi: f32| {
             let step = tick_step(step, lo, hi);
@@ -260,83 +448,313 @@ impl Diagram {
             self.line(Vec2::new(-tick, t), Vec2::new(tick, t), palette::INK, 1.0);
             self.small_text(Vec2::new(-tick, t), &format_tick(t), Place::Left);
         }
+        self.drawing_axes = false;
     }
 
-    /// A label next to the diagram point `p`.
+    /// A label next to the diagram point `p`, placed as `place` says; if the label
+    /// would lie on an axis, a tick mark or another label there, it moves to the
+    /// nearest place around `p` that covers nothing drawn so far (Right tries
+    /// AboveRight and BelowRight first, Left last), or else to the nearest that at
+    /// least leaves the axes and labels clear.
     pub fn text(&mut self, p: Vec2, s: &str, color: Rgb, place: Place) {
-        let px = self.to_px(p);
-        self.text_px(px, s, LABEL_SIZE, color, place);
+        let at = self.to_px(p);
+        let readable = ink_box(at, s, LABEL_SIZE, place).is_none_or(|b| {
+            let on_label = |l: &Label| l.kind != LabelKind::Tick && l.bounds.overlaps(&b);
+            let on_axis = |g: &Segment| g.axis && b.touches(g.a, g.b, g.half_width);
+            !self.labels.iter().any(on_label) && !self.segments.iter().any(on_axis)
+        });
+        if readable {
+            self.text_px(at, s, LABEL_SIZE, color, place);
+        } else {
+            self.text_clear(p, s, color, &place.nearest_first());
+        }
+    }
+
+    /// A label next to `p` at the first of `places` where it covers no other label,
+    /// line or dot drawn so far (draw the lines first); where none is clear, at the
+    /// one that covers least (labels and axes weigh most, then tick values, then each
+    /// line or dot). Returns the place taken.
+    pub fn text_clear(&mut self, p: Vec2, s: &str, color: Rgb, places: &[Place]) -> Place {
+        let at = self.to_px(p);
+        let cost = |place: &Place| ink_box(at, s, LABEL_SIZE, *place).map_or(0, |b| self.cost(&b));
+        let mut best = (u64::MAX, places.first().copied().unwrap_or(Place::Right));
+        for place in places {
+            let c = cost(place);
+            if c < best.0 {
+                best = (c, *place);
+            }
+            if c == 0 {
+                break;
+            }
+        }
+        self.text_px(at, s, LABEL_SIZE, color, best.1);
+        best.1
+    }
+
+    /// How much a label with ink box `b` would cover, 2 px around it included: 0
+    /// when nothing. Each pixel already inked (darker than a light fill) counts one;
+    /// a tick value 100, another label or an axis 10 000.
+    fn cost(&self, b: &PxBox) -> u64 {
+        let b = &PxBox {
+            min: b.min - PAD,
+            max: b.max + PAD,
+        };
+        let labels: u64 = self
+            .labels
+            .iter()
+            .filter(|l| l.bounds.overlaps(b))
+            .map(|l| {
+                if l.kind == LabelKind::Tick {
+                    100
+                } else {
+                    10_000
+                }
+            })
+            .sum();
+        let axes = self
+            .segments
+            .iter()
+            .filter(|g| g.axis && b.touches(g.a, g.b, g.half_width))
+            .count() as u64;
+        let (w, h) = (self.pixmap.width() as i64, self.pixmap.height() as i64);
+        let (x0, y0) = (
+            b.min.x.floor().max(0.0) as i64,
+            b.min.y.floor().max(0.0) as i64,
+        );
+        let (x1, y1) = (
+            b.max.x.ceil().min(w as f32) as i64,
+            b.max.y.ceil().min(h as f32) as i64,
+        );
+        let pixels = self.pixmap.pixels();
+        let mut inked = 0;
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let p = pixels[(y * w + x) as usize];
+                let deficit = 3 * 255 - p.red() as u32 - p.green() as u32 - p.blue() as u32;
+                if deficit > 90 {
+                    inked += 1;
+                }
+            }
+        }
+        // Off the canvas counts as covered: a label there is cut.
+        let area = ((b.max.x - b.min.x) * (b.max.y - b.min.y)).max(0.0) as i64;
+        let cut = (area - (x1 - x0).max(0) * (y1 - y0).max(0)).max(0) as u64;
+        labels + 10_000 * axes + inked + cut
     }
 
     fn small_text(&mut self, p: Vec2, s: &str, place: Place) {
         let px = self.to_px(p);
-        self.text_px(px, s, LABEL_SIZE * 0.8, palette::INK, place);
+        let size = LABEL_SIZE * 0.8;
+        self.label(px, s, size, palette::INK, place, LabelKind::Tick);
     }
 
     /// A title centred at the top of the canvas.
     pub fn title(&mut self, s: &str) {
         let top = Vec2::new(self.pixmap.width() as f32 * 0.5, 8.0);
-        self.text_px(top, s, LABEL_SIZE * 1.2, palette::INK, Place::Below);
+        let size = LABEL_SIZE * 1.2;
+        self.label(top, s, size, palette::INK, Place::Below, LabelKind::Title);
     }
 
     /// Text at pixel position `at`, `size` pixels high, placed as `place` says.
     pub fn text_px(&mut self, at: Vec2, s: &str, size: f32, color: Rgb, place: Place) {
-        let Some(font) = font() else { return };
-        let scaled = font.as_scaled(PxScale::from(size));
-        let width: f32 = s.chars().map(|c| scaled.h_advance(font.glyph_id(c))).sum();
-        let height = scaled.ascent() - scaled.descent();
-        let (dx, dy) = match place {
-            Place::Right => (GAP, -height * 0.5),
-            Place::Left => (-GAP - width, -height * 0.5),
-            Place::Above => (-width * 0.5, -GAP - height),
-            Place::Below => (-width * 0.5, GAP),
-            Place::Centre => (-width * 0.5, -height * 0.5),
-        };
-        let mut caret = Vec2::new(at.x + dx, at.y + dy + scaled.ascent());
-        for c in s.chars() {
-            let id = font.glyph_id(c);
-            let glyph = id.with_scale_and_position(size, ab_glyph::point(caret.x, caret.y));
-            caret.x += scaled.h_advance(id);
-            let Some(outline) = font.outline_glyph(glyph) else {
-                continue;
-            };
-            let bounds = outline.px_bounds();
-            outline.draw(|gx, gy, coverage| {
-                let x = bounds.min.x as i64 + gx as i64;
-                let y = bounds.min.y as i64 + gy as i64;
-                self.blend(x, y, color, coverage);
-            });
-        }
+        self.label(at, s, size, color, place, LabelKind::Text);
     }
 
-    fn blend(&mut self, x: i64, y: i64, color: Rgb, coverage: f32) {
-        let (w, h) = (self.pixmap.width() as i64, self.pixmap.height() as i64);
-        if x < 0 || y < 0 || x >= w || y >= h {
+    fn label(&mut self, at: Vec2, s: &str, size: f32, color: Rgb, place: Place, kind: LabelKind) {
+        let Some(bounds) = ink_box(at, s, size, place) else {
             return;
+        };
+        let at = at + offset(s, size, place);
+        self.labels.push(Label {
+            text: s.to_string(),
+            kind,
+            bounds,
+            at,
+            size,
+            color,
+        });
+    }
+
+    /// Every label the saved diagram shows, in the order drawn: tick values that
+    /// would cover another label are left out.
+    pub fn labels(&self) -> Vec<&Label> {
+        let mut shown: Vec<&Label> = Vec::new();
+        let others: Vec<&Label> = self
+            .labels
+            .iter()
+            .filter(|l| l.kind != LabelKind::Tick)
+            .collect();
+        for l in &self.labels {
+            let hides = |o: &&Label| o.bounds.overlaps(&l.bounds);
+            if l.kind == LabelKind::Tick && (others.iter().any(hides) || shown.iter().any(hides)) {
+                continue;
+            }
+            shown.push(l);
         }
-        let pixel = &mut self.pixmap.pixels_mut()[(y * w + x) as usize];
-        let a = coverage.clamp(0.0, 1.0);
-        let mix = |src: u8, dst: u8| (src as f32 * a + dst as f32 * (1.0 - a) + 0.5) as u8;
-        let blended = PremultipliedColorU8::from_rgba(
-            mix(color.0, pixel.red()),
-            mix(color.1, pixel.green()),
-            mix(color.2, pixel.blue()),
-            mix(255, pixel.alpha()),
-        );
-        if let Some(b) = blended {
-            *pixel = b;
+        shown
+    }
+
+    /// What still collides in the figure: pairs of shown labels whose ink boxes
+    /// overlap, and labels over an axis line or a tick mark. A legible figure has none.
+    pub fn label_collisions(&self) -> Vec<Collision> {
+        let shown = self.labels();
+        let mut found = Vec::new();
+        for (i, a) in shown.iter().enumerate() {
+            for b in &shown[i + 1..] {
+                if a.bounds.overlaps(&b.bounds) {
+                    found.push(Collision::Labels(a.text.clone(), b.text.clone()));
+                }
+            }
+            let on_axis = self
+                .segments
+                .iter()
+                .filter(|g| g.axis)
+                .any(|g| a.bounds.touches(g.a, g.b, g.half_width));
+            if on_axis {
+                found.push(Collision::Axis(a.text.clone()));
+            }
         }
+        found
+    }
+
+    /// The finished canvas: the shapes, then every shown label on top, with a white
+    /// halo where it lies over a line or a dot.
+    fn finished(&self) -> Pixmap {
+        let mut pixmap = self.pixmap.clone();
+        for l in self.labels() {
+            let over_line = self
+                .segments
+                .iter()
+                .any(|g| l.bounds.touches(g.a, g.b, g.half_width));
+            if over_line {
+                for (dx, dy) in HALO {
+                    let at = l.at + Vec2::new(dx, dy);
+                    draw_text(&mut pixmap, at, &l.text, l.size, Rgb(255, 255, 255));
+                }
+            }
+            draw_text(&mut pixmap, l.at, &l.text, l.size, l.color);
+        }
+        pixmap
     }
 
     /// Writes the diagram as PNG, atomically.
     pub fn save(&self, path: &Path) -> Result<()> {
-        let rgba = self.pixmap.clone().take_demultiplied();
-        write_png_rgba(path, self.pixmap.width(), self.pixmap.height(), &rgba)
+        let pixmap = self.finished();
+        let rgba = pixmap.clone().take_demultiplied();
+        write_png_rgba(path, pixmap.width(), pixmap.height(), &rgba)
     }
 
-    /// The RGBA bytes of the canvas (for tests).
+    /// The width and height of the canvas in pixels.
+    pub fn size(&self) -> (u32, u32) {
+        (self.pixmap.width(), self.pixmap.height())
+    }
+
+    /// The RGBA bytes of the finished canvas (for tests).
     pub fn rgba(&self) -> Vec<u8> {
-        self.pixmap.clone().take_demultiplied()
+        self.finished().take_demultiplied()
+    }
+}
+
+/// The offsets a label's white halo is drawn at, 2 pixels around it.
+const HALO: [(f32, f32); 12] = [
+    (-2.0, 0.0),
+    (2.0, 0.0),
+    (0.0, -2.0),
+    (0.0, 2.0),
+    (-1.5, -1.5),
+    (1.5, -1.5),
+    (-1.5, 1.5),
+    (1.5, 1.5),
+    (-1.0, 0.0),
+    (1.0, 0.0),
+    (0.0, -1.0),
+    (0.0, 1.0),
+];
+
+/// Where the text's layout box starts (top-left) relative to its point.
+fn offset(s: &str, size: f32, place: Place) -> Vec2 {
+    let Some(font) = font() else {
+        return Vec2::ZERO;
+    };
+    let scaled = font.as_scaled(PxScale::from(size));
+    let width: f32 = s.chars().map(|c| scaled.h_advance(font.glyph_id(c))).sum();
+    let height = scaled.ascent() - scaled.descent();
+    let (dx, dy) = match place {
+        Place::Right => (GAP, -height * 0.5),
+        Place::Left => (-GAP - width, -height * 0.5),
+        Place::Above => (-width * 0.5, -GAP - height),
+        Place::Below => (-width * 0.5, GAP),
+        Place::Centre => (-width * 0.5, -height * 0.5),
+        Place::AboveRight => (GAP, -GAP - height),
+        Place::AboveLeft => (-GAP - width, -GAP - height),
+        Place::BelowRight => (GAP, GAP),
+        Place::BelowLeft => (-GAP - width, GAP),
+    };
+    Vec2::new(dx, dy)
+}
+
+/// Calls `each` with every glyph outline of `s` set from the layout box's top-left
+/// corner `top_left`.
+fn glyphs(top_left: Vec2, s: &str, size: f32, mut each: impl FnMut(ab_glyph::OutlinedGlyph)) {
+    let Some(font) = font() else { return };
+    let scaled = font.as_scaled(PxScale::from(size));
+    let mut caret = Vec2::new(top_left.x, top_left.y + scaled.ascent());
+    for c in s.chars() {
+        let id = font.glyph_id(c);
+        let glyph = id.with_scale_and_position(size, ab_glyph::point(caret.x, caret.y));
+        caret.x += scaled.h_advance(id);
+        if let Some(outline) = font.outline_glyph(glyph) {
+            each(outline);
+        }
+    }
+}
+
+/// The box the ink of `s` covers when placed at `at` as `place` says; `None` for
+/// text with no ink.
+fn ink_box(at: Vec2, s: &str, size: f32, place: Place) -> Option<PxBox> {
+    let mut b: Option<PxBox> = None;
+    glyphs(at + offset(s, size, place), s, size, |g| {
+        let r = g.px_bounds();
+        let (min, max) = (Vec2::new(r.min.x, r.min.y), Vec2::new(r.max.x, r.max.y));
+        b = Some(match b {
+            None => PxBox { min, max },
+            Some(b) => PxBox {
+                min: b.min.min(min),
+                max: b.max.max(max),
+            },
+        });
+    });
+    b
+}
+
+/// Sets `s` with its layout box's top-left corner at `top_left`.
+fn draw_text(pixmap: &mut Pixmap, top_left: Vec2, s: &str, size: f32, color: Rgb) {
+    glyphs(top_left, s, size, |outline| {
+        let bounds = outline.px_bounds();
+        outline.draw(|gx, gy, coverage| {
+            let x = bounds.min.x as i64 + gx as i64;
+            let y = bounds.min.y as i64 + gy as i64;
+            blend(pixmap, x, y, color, coverage);
+        });
+    });
+}
+
+fn blend(pixmap: &mut Pixmap, x: i64, y: i64, color: Rgb, coverage: f32) {
+    let (w, h) = (pixmap.width() as i64, pixmap.height() as i64);
+    if x < 0 || y < 0 || x >= w || y >= h {
+        return;
+    }
+    let pixel = &mut pixmap.pixels_mut()[(y * w + x) as usize];
+    let a = coverage.clamp(0.0, 1.0);
+    let mix = |src: u8, dst: u8| (src as f32 * a + dst as f32 * (1.0 - a) + 0.5) as u8;
+    let blended = PremultipliedColorU8::from_rgba(
+        mix(color.0, pixel.red()),
+        mix(color.1, pixel.green()),
+        mix(color.2, pixel.blue()),
+        mix(255, pixel.alpha()),
+    );
+    if let Some(b) = blended {
+        *pixel = b;
     }
 }
 
@@ -557,20 +975,18 @@ impl CameraRays {
             page(frame.point_to_world(local))
         });
         d.line(edge[0], edge[1], palette::PLANE, 4.0);
-        d.text(edge[0], &self.plane, palette::PLANE, Place::Below);
-        for ((x, y), (ray, on_plane, t)) in self.pixels.iter().zip(self.rays()) {
+        let rays = self.rays();
+        for (ray, on_plane, t) in &rays {
             d.arrow(
                 page(ray.origin()),
-                page(ray.at(t)),
+                page(ray.at(*t)),
                 palette::RAY,
                 self.ray_width,
             );
-            d.dot(page(on_plane), self.dot, palette::HIT);
-            if let Some(label) = self.labels {
-                d.text(page(on_plane), &label(*x, *y), palette::INK, Place::Right);
-            }
+            d.dot(page(*on_plane), self.dot, palette::HIT);
         }
         let p = page(frame.position());
+        let mut tips = Vec::new();
         if let Some(length) = self.basis {
             let b = frame.basis();
             let first = match self.view {
@@ -580,13 +996,40 @@ impl CameraRays {
             for (v, name, color) in [first, (b.w(), "w", palette::Z_AXIS)] {
                 let tip = p + page(v) * length;
                 d.arrow(p, tip, color, 3.5);
-                d.text(tip, name, color, Place::Right);
+                tips.push((tip, name, color));
             }
         }
-        if let Some((name, place)) = &self.eye {
+        if self.eye.is_some() {
             d.dot(p, 6.0, palette::CAMERA);
-            d.text(p, name, palette::CAMERA, *place);
         }
+        // The labels last, each where the lines and dots leave it room.
+        let beside = [
+            Place::Right,
+            Place::AboveRight,
+            Place::BelowRight,
+            Place::Left,
+            Place::AboveLeft,
+            Place::BelowLeft,
+        ];
+        if let Some(label) = self.labels {
+            for ((x, y), (_, on_plane, _)) in self.pixels.iter().zip(&rays) {
+                d.text_clear(page(*on_plane), &label(*x, *y), palette::INK, &beside);
+            }
+        }
+        for (tip, name, color) in tips {
+            d.text_clear(tip, name, color, &beside);
+        }
+        if let Some((name, place)) = &self.eye {
+            d.text_clear(p, name, palette::CAMERA, &place.nearest_first());
+        }
+        let under = [
+            Place::Below,
+            Place::BelowLeft,
+            Place::BelowRight,
+            Place::Left,
+            Place::Right,
+        ];
+        d.text_clear(edge[0], &self.plane, palette::PLANE, &under);
     }
 }
 

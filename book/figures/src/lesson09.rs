@@ -48,11 +48,9 @@ pub fn figures(output: &Output) -> Result<()> {
     let (shadow_map, acne, peter_pan) = (mapped(1.0)?, mapped(0.0)?, mapped(50.0)?);
     let mesh_cast = reference(&lesson09_mesh_scene(&scene, &mesh)?, &camera, None)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
+    let three = [&ray_cast, &per_pixel, &per_vertex];
+    output.diagram("09_side_by_side.png", &captioned(&three, &SIDE_BY_SIDE)?)?;
     let panels = [
-        (
-            "09_side_by_side.png",
-            vec![&ray_cast, &per_pixel, &per_vertex],
-        ),
         ("09_shadows.png", vec![&traced, &shadow_map]),
         ("09_shadow_bias.png", vec![&acne, &peter_pan]),
         ("09_mesh.png", vec![&mesh_cast, &mesh_raster]),
@@ -63,11 +61,38 @@ pub fn figures(output: &Output) -> Result<()> {
     output.diagram("09_pipeline_stages.png", &stages()?)
 }
 
+/// The captions of `09_side_by_side.png`, left to right.
+pub const SIDE_BY_SIDE: [&str; 3] = [
+    "ray cast",
+    "rasterized, per pixel",
+    "rasterized, per vertex",
+];
+
+/// Size of a strip's captions in pixels: the page shows a strip of three 480 px
+/// renders about half size, so they are set twice the size of a diagram's labels.
+const CAPTION_SIZE: f32 = 30.0;
+
+/// `images` in a row, 8 white pixels apart, each under its caption.
+pub fn captioned(images: &[&Framebuffer], captions: &[&str]) -> Result<Diagram> {
+    let strip = Framebuffer::beside(images, 8)?;
+    let band = (CAPTION_SIZE * 1.6) as u32;
+    let (w, h) = (strip.width(), strip.height() + band);
+    let mut d = Diagram::new(w, h, (0.0, w as f32), (0.0, h as f32))?;
+    d.image_px(0, band, w, &strip.to_srgb8()?);
+    let mut left = 0.0;
+    for (image, caption) in images.iter().zip(captions) {
+        let centre = Vec2::new(left + 0.5 * image.width() as f32, 0.5 * band as f32);
+        d.text_px(centre, caption, CAPTION_SIZE, palette::INK, Place::Centre);
+        left += (image.width() + 8) as f32;
+    }
+    Ok(d)
+}
+
 /// The figure: Lecture 2's pipeline on one triangle, in four panels. The triangle's
 /// vertices in the world, the same vertices in clip space divided by w (NDC), the
 /// pixel centres the rasterizer finds inside it, and the colours interpolated
 /// between its three vertex colours.
-fn stages() -> Result<Diagram> {
+pub fn stages() -> Result<Diagram> {
     let film = Film::new(16, 12, (-0.6, 0.6), (-0.45, 0.45))?;
     let frame = Frame::look(
         Vec3::new(0.0, 1.0, 4.0),
@@ -113,11 +138,15 @@ fn stage_panels(
     screen: &[ScreenVertex; 3],
     fragments: &[Fragment],
 ) -> Result<Diagram> {
-    // Four panels side by side in one coordinate system, each 20 units wide; the
-    // pixel grid of panels 3 and 4 is 16 x 12 units, row 0 at the top.
-    let mut d = Diagram::new(1600, 360, (0.0, 80.0), (-2.0, 16.0))?;
+    // Four panels in two rows of two (1 2 above, 3 4 below), in one coordinate
+    // system, each 20 units wide and 17 high; the pixel grid of panels 3 and 4 is
+    // 16 x 12 units, row 0 at the top.
+    let mut d = Diagram::new(800, 700, (0.0, 40.0), (-1.5, 32.5))?;
     d.title("One triangle through the pipeline");
-    let at = |k: f32, x: f32, y: f32| Vec2::new(20.0 * k + 2.0 + x, 2.0 + y);
+    let at = |k: f32, x: f32, y: f32| {
+        let (column, row) = (k % 2.0, (k / 2.0).floor());
+        Vec2::new(20.0 * column + 2.0 + x, 17.0 * (1.0 - row) + 2.0 + y)
+    };
     let label =
         |d: &mut Diagram, k: f32, s: &str| d.text(at(k, 8.0, -1.0), s, palette::INK, Place::Below);
     // 1: world (x, y), scaled to fit.

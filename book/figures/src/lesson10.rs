@@ -353,7 +353,7 @@ pub fn hemisphere_figure() -> Result<Diagram> {
     const BINS: usize = 9;
     let mut rng = Rng::for_pixel(1, 0, 0);
     let us: Vec<Vec2> = (0..N).map(|_| rng.next_vec2()).collect();
-    let mut d = Diagram::new(1500, 440, (-1.1, 7.4), (-0.5, 1.7))?;
+    let mut d = Diagram::new(800, 300, (-1.1, 7.4), (-0.5, 1.6))?;
     d.title(&format!(
         "{N} directions around the normal +z, seen from the side"
     ));

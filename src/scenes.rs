@@ -2,7 +2,7 @@
 //! casts rays at its scene; lesson 09 draws the same scene as triangles, seen by the
 //! same camera; lesson 11 measures both renderers on it.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 
@@ -94,14 +94,28 @@ pub fn lesson08_shadows(size: u32, bias: f32) -> Shadows {
 }
 // ANCHOR_END: shadows
 
-/// The mesh lesson 09 draws by default: a torus of 1024 triangles.
-pub const TORUS_OBJ: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/meshes/torus.obj");
+/// The mesh lesson 09 draws by default: a torus of 1024 triangles, relative to the
+/// repository's root (see [`asset_path`] for other folders).
+pub const TORUS_OBJ: &str = "assets/meshes/torus.obj";
+
+/// `path` as given if it exists or is absolute; else, for a relative path, the same
+/// path under the repository this program was built from, if the file is there. So a
+/// default such as [`TORUS_OBJ`] reads as `assets/...` in `--help` and still works
+/// from another folder, while a path the user gives is read where they say.
+pub fn asset_path(path: &Path) -> PathBuf {
+    let built = Path::new(env!("CARGO_MANIFEST_DIR")).join(path);
+    if path.is_relative() && !path.exists() && built.exists() {
+        built
+    } else {
+        path.to_path_buf()
+    }
+}
 
 /// The mesh of the OBJ file at `path`, placed in lesson 08's scene where lesson 09
 /// draws it: standing on the floor at the front right, tilted towards the camera,
 /// flat shaded (one normal per triangle, as the ray caster sees triangles).
 pub fn lesson09_mesh(path: &Path) -> Result<Model> {
-    let mesh = Mesh::from_obj(path)?.flat_shaded()?;
+    let mesh = Mesh::from_obj(&asset_path(path))?.flat_shaded()?;
     if mesh.degenerate() == mesh.triangles.len() {
         return Err(Error::Invalid {
             param: "mesh",

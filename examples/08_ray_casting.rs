@@ -39,6 +39,10 @@ struct Args {
     /// How far the whole scene (and camera) is moved for the acne comparison, as x,y,z.
     #[arg(long, default_value = "10000,0,0", value_parser = parse_vec3, allow_hyphen_values = true)]
     far: Vec3,
+    /// Also draw the shadowless pinhole image with your own `closest` (coding exercise
+    /// 8.1): `cargo run --release --features exercises --example 08_ray_casting -- --mine`.
+    #[arg(long)]
+    mine: bool,
     #[command(flatten)]
     output: Output,
 }
@@ -75,6 +79,24 @@ pub fn images(
         })?,
         render(&far_pinhole, t, |r| lit(&far_scene, r, Offset::Scaled))?,
     ])
+}
+
+/// The shadowless pinhole image drawn with `mine`, the student's own `closest` once
+/// it passes its check (coding exercise 8.1, `src/course/exercises/ch08.rs`).
+pub fn my_shadowless_image(
+    mine: lesson::Closest,
+    (width, height): (u32, u32),
+    threads: Option<usize>,
+) -> Result<Framebuffer> {
+    let scene = lesson08(Vec3::ZERO)?;
+    let [_, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
+    let shapes: Vec<_> = scene.objects().iter().map(|o| o.shape.clone()).collect();
+    render(&pinhole, threads, |r| {
+        match mine(r, &shapes, 0.0, f32::INFINITY) {
+            Some((i, _)) => scene.objects()[i].colour(),
+            None => scene.background(),
+        }
+    })
 }
 
 /// How many pixels show each primitive (in scene order, then the background).
@@ -149,7 +171,10 @@ pub fn numbers(
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
-        let (size, threads) = args.image.check(IMAGES.len() as u64)?;
+        let mine = args.mine.then(lesson::my_closest).transpose()?;
+        let (size, threads) = args
+            .image
+            .check(IMAGES.len() as u64 + u64::from(mine.is_some()))?;
         non_negative("--epsilon", args.epsilon)?;
         lesson08(args.far).map_err(|_| Error::Invalid {
             param: "--far",
@@ -159,6 +184,10 @@ fn main() -> ExitCode {
         lesson::print(&numbers(size, args.epsilon, args.far, &images)?);
         for (name, image) in IMAGES.iter().zip(&images) {
             args.output.image(name, image)?;
+        }
+        if let Some(mine) = mine {
+            let image = my_shadowless_image(mine, size, threads)?;
+            args.output.image("08_shadowless_mine.png", &image)?;
         }
         Ok(())
     })

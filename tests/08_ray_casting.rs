@@ -260,3 +260,30 @@ fn a_point_in_shadow_gets_only_the_ambient_share() {
         "{c} vs {expected}"
     );
 }
+
+#[test]
+fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
+    // The crate's own closest-hit loop, in the shape of exercise 8.1, must draw
+    // exactly the lesson's shadowless pinhole image.
+    fn reference(ray: &Ray, shapes: &[Shape], t_min: f32, t_max: f32) -> Option<(usize, f32)> {
+        let objects = shapes
+            .iter()
+            .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
+            .collect();
+        let scene = Scene::new(objects, Vec3::ZERO).unwrap();
+        scene.closest(ray, t_min, t_max).map(|(hit, i)| (i, hit.t))
+    }
+    let mine = lesson::my_shadowless_image(reference, SMALL, None).unwrap();
+    let [_, pinhole, ..] = lesson::images(SMALL, EPSILON, FAR, None).unwrap();
+    assert_eq!(mine, pinhole);
+}
+
+#[cfg(not(feature = "exercises"))]
+#[test]
+fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
+    let message = render_lessons::course::lesson::my_closest()
+        .unwrap_err()
+        .to_string();
+    assert!(message.contains("--features exercises"), "{message}");
+    assert_eq!(message.lines().count(), 1, "{message}");
+}

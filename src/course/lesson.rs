@@ -350,3 +350,28 @@ pub fn my_pixel_to_plane() -> Result<PixelToPlane> {
             .into(),
     })
 }
+
+/// The signature of coding exercise 8.1, `closest(ray, shapes, t_min, t_max)`.
+pub type Closest = fn(&crate::ray::Ray, &[crate::shapes::Shape], f32, f32) -> Option<(usize, f32)>;
+
+/// The student's `closest` for lesson 08's `--mine`, once it passes its check
+/// (coding exercise 8.1); otherwise an error that says what to do: fix the exercise,
+/// or turn the `exercises` feature on.
+pub fn my_closest() -> Result<Closest> {
+    #[cfg(feature = "exercises")]
+    {
+        use crate::course::exercises::{ch08, check};
+        match check::check_closest(ch08::closest) {
+            check::Outcome::Pass => Ok(ch08::closest),
+            outcome => Err(crate::Error::Exercise {
+                report: check::CLOSEST.report(&outcome),
+            }),
+        }
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(crate::Error::Exercise {
+        report: "--mine runs your code for coding exercise 8.1; turn the exercises on: \
+                 cargo run --release --features exercises --example 08_ray_casting -- --mine"
+            .into(),
+    })
+}

@@ -4,7 +4,7 @@
 
 use glam::Mat4;
 
-use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 
 /// Coding exercise 1.1.
 pub const ROTATION_Y: Exercise = Exercise {

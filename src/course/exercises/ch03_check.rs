@@ -4,7 +4,7 @@
 
 use glam::Vec2;
 
-use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 use crate::camera::Film;
 
 /// Coding exercise 3.1.

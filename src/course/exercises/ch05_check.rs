@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::camera::camera_basis;
 
 /// Coding exercise 5.1.

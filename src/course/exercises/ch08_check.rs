@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::ray::Ray;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Shape, Sphere};

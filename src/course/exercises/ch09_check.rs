@@ -2,7 +2,7 @@
 //! answer for each, and the hints for the typical mistakes. The student's function
 //! is in `ch09.rs`, beside this file; the harness is `check.rs`.
 
-use super::check::{Case, Exercise, Mistake, Outcome, run};
+use super::harness::{Case, Exercise, Mistake, Outcome, run};
 use crate::raster::rasterize::covers;
 
 /// Coding exercise 9.1.

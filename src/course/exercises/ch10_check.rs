@@ -13,7 +13,7 @@ use std::f32::consts::PI;
 
 use glam::{Vec2, Vec3};
 
-use super::check::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 use crate::pathtrace::Rng;
 use crate::sampling::cosine_hemisphere;
 

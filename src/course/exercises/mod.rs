@@ -23,6 +23,7 @@ pub mod ch09_check;
 pub mod ch10_check;
 pub mod ch11_check;
 pub mod check;
+pub mod harness;
 
 #[cfg(feature = "exercises")]
 pub mod ch01;

@@ -1,0 +1,337 @@
+//! The harness of the coding exercises' checks.
+//!
+//! Each `check_*` function takes an implementation of one exercise as a function
+//! argument, runs it on a few cases, and compares every answer with the crate's own
+//! reference code (the code the book includes as the worked solution). It returns
+//! [`Outcome::Pass`], [`Outcome::Fail`] with the first wrong case, the expected and
+//! the received answer and a hint, or [`Outcome::NotStarted`] while the function is
+//! still a `todo!()`.
+//!
+//! This file is the harness: how an answer is compared and printed, and how a
+//! student's function is run (a panic or a `todo!()` is caught). Each chapter's
+//! check sits next to the student's file it checks, in `chNN_check.rs` beside
+//! `chNN.rs`; `check.rs` lists them all.
+//!
+//! This module is compiled without the `exercises` feature too: the default test
+//! suite runs every check against the reference implementation (it must pass) and
+//! against a deliberately wrong one (it must fail with a hint), so a wrong check
+//! fails CI.
+
+use std::cell::Cell;
+use std::fmt;
+use std::panic::{self, AssertUnwindSafe};
+use std::sync::Once;
+
+use glam::{Mat4, Vec2, Vec3};
+
+/// The result of checking one exercise.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// Every case gave the expected answer.
+    Pass,
+    /// The first case that did not.
+    Fail {
+        /// The case, in words.
+        case: String,
+        /// What the reference code answers.
+        expected: String,
+        /// What the implementation answered (or how it panicked).
+        got: String,
+        /// What is probably wrong.
+        hint: String,
+    },
+    /// The function still panics with `todo!()`.
+    NotStarted,
+}
+
+impl Outcome {
+    /// `PASS`, `FAIL` or `NOT STARTED`.
+    pub fn status(&self) -> &'static str {
+        match self {
+            Outcome::Pass => "PASS",
+            Outcome::Fail { .. } => "FAIL",
+            Outcome::NotStarted => "NOT STARTED",
+        }
+    }
+}
+
+impl fmt::Display for Outcome {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Outcome::Pass => write!(f, "PASS: every case gives the expected answer"),
+            Outcome::NotStarted => write!(f, "NOT STARTED: the function is still todo!()"),
+            Outcome::Fail {
+                case,
+                expected,
+                got,
+                hint,
+            } => write!(
+                f,
+                "FAIL\n  case:     {case}\n  expected: {expected}\n  got:      {got}\n  hint:     {hint}"
+            ),
+        }
+    }
+}
+
+/// One coding exercise: where the student writes it and what it is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Exercise {
+    /// "3.1": chapter 3, first coding exercise.
+    pub number: &'static str,
+    /// The chapter's number, "03".
+    pub chapter: &'static str,
+    /// The chapter's title.
+    pub chapter_title: &'static str,
+    /// The function the student writes.
+    pub function: &'static str,
+    /// The file it is in.
+    pub file: &'static str,
+}
+
+impl Exercise {
+    /// A full report of `outcome` for this exercise, several lines.
+    pub fn report(&self, outcome: &Outcome) -> String {
+        let head = format!(
+            "Coding exercise {} `{}` (chapter {}, {}; in {})",
+            self.number, self.function, self.chapter, self.chapter_title, self.file
+        );
+        match outcome {
+            Outcome::NotStarted => format!(
+                "{head}\nNOT STARTED: replace the todo!() in `{}` in {} with your code,\n  \
+                 then run `cargo test --features exercises --test exercises ch{}`.",
+                self.function, self.file, self.chapter
+            ),
+            other => format!("{head}\n{other}"),
+        }
+    }
+
+    /// One line of a summary table: number, chapter, function, status.
+    pub fn row(&self, outcome: &Outcome) -> String {
+        format!(
+            "{:<5} ch{}  {:<18} {}",
+            self.number,
+            self.chapter,
+            self.function,
+            outcome.status()
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Comparing and printing answers.
+
+/// Relative (and, near zero, absolute) tolerance of every comparison.
+pub const TOLERANCE: f32 = 1e-4;
+
+/// An answer that can be compared with tolerance and printed.
+pub trait Answer {
+    /// Equal within [`TOLERANCE`].
+    fn close(&self, other: &Self) -> bool;
+    /// Short, readable form: numbers with at most four decimals.
+    fn show(&self) -> String;
+}
+
+impl Answer for f32 {
+    fn close(&self, other: &f32) -> bool {
+        *self == *other || (self - other).abs() <= TOLERANCE * 1f32.max(self.abs()).max(other.abs())
+    }
+    fn show(&self) -> String {
+        if !self.is_finite() {
+            return format!("{self}");
+        }
+        let s = format!("{self:.4}");
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        if s == "-0" { "0".into() } else { s.into() }
+    }
+}
+
+impl Answer for bool {
+    fn close(&self, other: &bool) -> bool {
+        self == other
+    }
+    fn show(&self) -> String {
+        self.to_string()
+    }
+}
+
+impl Answer for usize {
+    fn close(&self, other: &usize) -> bool {
+        self == other
+    }
+    fn show(&self) -> String {
+        self.to_string()
+    }
+}
+
+impl Answer for Vec2 {
+    fn close(&self, other: &Vec2) -> bool {
+        self.x.close(&other.x) && self.y.close(&other.y)
+    }
+    fn show(&self) -> String {
+        format!("({}, {})", self.x.show(), self.y.show())
+    }
+}
+
+impl Answer for Vec3 {
+    fn close(&self, other: &Vec3) -> bool {
+        self.x.close(&other.x) && self.y.close(&other.y) && self.z.close(&other.z)
+    }
+    fn show(&self) -> String {
+        format!("({}, {}, {})", self.x.show(), self.y.show(), self.z.show())
+    }
+}
+
+impl Answer for Mat4 {
+    fn close(&self, other: &Mat4) -> bool {
+        let (a, b) = (self.to_cols_array(), other.to_cols_array());
+        a.iter().zip(&b).all(|(x, y)| x.close(y))
+    }
+    fn show(&self) -> String {
+        let rows: Vec<String> = (0..4)
+            .map(|i| {
+                let r = self.row(i);
+                format!(
+                    "[{}, {}, {}, {}]",
+                    r.x.show(),
+                    r.y.show(),
+                    r.z.show(),
+                    r.w.show()
+                )
+            })
+            .collect();
+        format!("rows {}", rows.join(" "))
+    }
+}
+
+impl<T: Answer> Answer for Option<T> {
+    fn close(&self, other: &Option<T>) -> bool {
+        match (self, other) {
+            (Some(a), Some(b)) => a.close(b),
+            (None, None) => true,
+            _ => false,
+        }
+    }
+    fn show(&self) -> String {
+        match self {
+            Some(a) => format!("Some({})", a.show()),
+            None => "None".into(),
+        }
+    }
+}
+
+impl<A: Answer, B: Answer> Answer for (A, B) {
+    fn close(&self, other: &(A, B)) -> bool {
+        self.0.close(&other.0) && self.1.close(&other.1)
+    }
+    fn show(&self) -> String {
+        format!("({}, {})", self.0.show(), self.1.show())
+    }
+}
+
+impl<A: Answer, B: Answer, C: Answer> Answer for (A, B, C) {
+    fn close(&self, other: &(A, B, C)) -> bool {
+        self.0.close(&other.0) && self.1.close(&other.1) && self.2.close(&other.2)
+    }
+    fn show(&self) -> String {
+        format!("({}, {}, {})", self.0.show(), self.1.show(), self.2.show())
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Running an implementation.
+
+thread_local! {
+    /// True while this thread runs a student's function: its panics are reported in
+    /// the outcome, not printed.
+    static QUIET: Cell<bool> = const { Cell::new(false) };
+}
+
+static INSTALL_HOOK: Once = Once::new();
+
+/// Runs `f`, catching a panic and returning its message.
+///
+/// The panic hook is replaced once by one that stays silent on a thread while it
+/// runs a check and otherwise calls the previous hook. (Swapping the hook in and out
+/// around every call would race between tests running in parallel.)
+fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+    INSTALL_HOOK.call_once(|| {
+        let previous = panic::take_hook();
+        panic::set_hook(Box::new(move |info| {
+            if !QUIET.with(Cell::get) {
+                previous(info);
+            }
+        }));
+    });
+    QUIET.with(|q| q.set(true));
+    let result = panic::catch_unwind(AssertUnwindSafe(f));
+    QUIET.with(|q| q.set(false));
+    result.map_err(|payload| {
+        if let Some(s) = payload.downcast_ref::<&str>() {
+            (*s).to_string()
+        } else if let Some(s) = payload.downcast_ref::<String>() {
+            s.clone()
+        } else {
+            "a panic without a message".to_string()
+        }
+    })
+}
+
+/// A typical mistake: does the answer `got` for these arguments look like it?
+pub(crate) struct Mistake<'a, A, R> {
+    pub(crate) looks_like: &'a dyn Fn(&A, &R) -> bool,
+    pub(crate) hint: &'static str,
+}
+
+/// A mistake recognised by the wrong answer it gives.
+pub(crate) fn gives<'a, A, R: Answer>(
+    wrong: &'a dyn Fn(&A) -> Option<R>,
+) -> impl Fn(&A, &R) -> bool + 'a {
+    move |a, got| wrong(a).is_some_and(|w| got.close(&w))
+}
+
+/// One case: its description and its arguments.
+pub(crate) type Case<A> = (String, A);
+
+/// Runs `student` on every case and compares with `reference`.
+pub(crate) fn run<A: Clone, R: Answer>(
+    cases: &[Case<A>],
+    reference: impl Fn(&A) -> R,
+    student: impl Fn(A) -> R,
+    mistakes: &[Mistake<'_, A, R>],
+    hint: &str,
+) -> Outcome {
+    for (case, args) in cases {
+        let expected = reference(args);
+        let got = match quietly(|| student(args.clone())) {
+            Ok(got) => got,
+            Err(message) if message.contains("not yet implemented") => {
+                return Outcome::NotStarted;
+            }
+            Err(message) => {
+                return Outcome::Fail {
+                    case: case.clone(),
+                    expected: expected.show(),
+                    got: format!("a panic: {message}"),
+                    hint: format!("the function must not panic on this input. {hint}"),
+                };
+            }
+        };
+        if !got.close(&expected) {
+            let hint = mistakes
+                .iter()
+                .find(|m| (m.looks_like)(args, &got))
+                .map_or(hint, |m| m.hint);
+            return Outcome::Fail {
+                case: case.clone(),
+                expected: expected.show(),
+                got: got.show(),
+                hint: hint.to_string(),
+            };
+        }
+    }
+    Outcome::Pass
+}
+
+pub(crate) fn v(x: f32, y: f32, z: f32) -> Vec3 {
+    Vec3::new(x, y, z)
+}

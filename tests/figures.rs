@@ -67,8 +67,7 @@ fn lesson_figures() -> Result<Vec<(String, Diagram)>> {
     Ok(all)
 }
 
-/// The book's own diagrams (book/figures), but `10_path.png`, which needs a search
-/// through a Cornell box render and is checked by `tests/10_path_tracing.rs`.
+/// The book's own diagrams (book/figures).
 fn book_figures() -> Result<Vec<(String, Diagram)>> {
     // The side-by-side strip with blank renders of the lesson's size: its captions are
     // what is checked, and they do not depend on the pixels.
@@ -80,6 +79,7 @@ fn book_figures() -> Result<Vec<(String, Diagram)>> {
             book09::captioned(&[&blank, &blank, &blank], &book09::SIDE_BY_SIDE)?,
         ),
         ("10_hemisphere.png".into(), book10::hemisphere_figure()?),
+        ("10_path.png".into(), book10::path_figure()?),
     ])
 }
 

@@ -260,7 +260,7 @@ pub fn path_figure() -> Result<Diagram> {
             && is_diffuse(scene, &p.vertices[p.vertices.len() - 1])
             && spread(p, &taken)
     });
-    let mut d = Diagram::new(900, 760, (-6.0, 106.0), (-10.0, 92.0))?;
+    let mut d = Diagram::new(800, 676, (-6.0, 106.0), (-10.0, 92.0))?;
     d.title("Two paths of the Cornell box, seen along -z");
     let xy = |v: Vec3| Vec2::new(v.x, v.y);
     let (red, blue, grey) = (Rgb(190, 60, 60), Rgb(60, 60, 190), Rgb(150, 150, 150));

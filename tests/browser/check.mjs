@@ -29,6 +29,7 @@ function parseArgs(argv) {
         summary: 'chapters/SUMMARY.md',
         screenshot: 'target/browser/screenshot.png',
         screenshotPage: '05_arbitrary_ortho_camera.html',
+        screenshotsDir: '',
         searchPage: 'index.html',
         searchWord: 'orthographic',
         chromium: process.env.CHROMIUM || '/usr/bin/chromium',
@@ -462,6 +463,20 @@ try {
 
     const searchOn = pages.some((p) => p.page === opts.searchPage) ? opts.searchPage : pages[0].page;
     await checkSearch(searchOn, opts.searchWord);
+
+    if (opts.screenshotsDir) {
+        // One full-page screenshot per page, to look at every page before a release.
+        mkdirSync(path.resolve(opts.screenshotsDir), { recursive: true });
+        for (const p of pages) {
+            current = p.page;
+            await page.goto(new URL(p.page, base).href, { waitUntil: 'load' });
+            await page.waitForLoadState('networkidle').catch(() => {});
+            await page.evaluate(() => document.fonts.ready);
+            const file = path.join(path.resolve(opts.screenshotsDir), p.page.replace(/\.html$/, '.png'));
+            await page.screenshot({ path: file, fullPage: true });
+        }
+        console.log(`screenshots of ${pages.length} pages: ${path.resolve(opts.screenshotsDir)}`);
+    }
 
     if (opts.screenshot) {
         const shotPage = pages.some((p) => p.page === opts.screenshotPage) ? opts.screenshotPage : pages[0].page;

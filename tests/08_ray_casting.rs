@@ -30,6 +30,12 @@ fn numbers() {
     let images = lesson::images(BOOK, EPSILON, FAR, None).unwrap();
     let numbers = lesson::numbers(BOOK, EPSILON, FAR, &images).unwrap();
     insta::assert_snapshot!("numbers", numbers);
+    // The second and third tables on their own, for the page on light and shadows
+    // (the book includes a snapshot from its first line of numbers).
+    let tables: Vec<&str> = numbers.split("\n\n").collect();
+    assert_eq!(tables.len(), 3, "{numbers}");
+    insta::assert_snapshot!("acne", tables[1]);
+    insta::assert_snapshot!("lambert_pixels", tables[2]);
 }
 
 #[test]

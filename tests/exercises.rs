@@ -751,12 +751,7 @@ mod checks {
 
     /// Malley's method with the pieces the mistakes below get wrong: the radius
     /// on the disc, the height, and the pdf of the direction.
-    fn malley(
-        u: Vec2,
-        r: fn(f32) -> f32,
-        z: fn(f32) -> f32,
-        pdf: fn(Vec3) -> f32,
-    ) -> (Vec3, f32) {
+    fn malley(u: Vec2, r: fn(f32) -> f32, z: fn(f32) -> f32, pdf: fn(Vec3) -> f32) -> (Vec3, f32) {
         let (s, c) = (std::f32::consts::TAU * u.y).sin_cos();
         let w = Vec3::new(r(u.x) * c, r(u.x) * s, z(u.x));
         (w, pdf(w))

@@ -56,6 +56,7 @@ pub const IMAGES: [&str; 5] = [
     "08_far_scaled_offset.png",
 ];
 
+// ANCHOR: images
 /// Every image of the lesson, named in [`IMAGES`]: the scene shadowless through both
 /// cameras, lit with shadow rays, and lit again moved by `far`, where a fixed
 /// shadow-ray `epsilon` fails and the scaled offset does not.
@@ -80,6 +81,7 @@ pub fn images(
         render(&far_pinhole, t, |r| lit(&far_scene, r, Offset::Scaled))?,
     ])
 }
+// ANCHOR_END: images
 
 /// The shadowless pinhole image drawn with `mine`, the student's own `closest` once
 /// it passes its check (coding exercise 8.1, `src/course/exercises/ch08.rs`).

@@ -59,6 +59,7 @@ pub struct Lesson {
     pub times: Timings,
 }
 
+// ANCHOR: images
 /// Renders everything: the ray-cast reference, the scene tessellated with `segments`
 /// and rasterized (per pixel, per vertex), the shadows both ways (the map with its
 /// bias, none, and 50 times too much), and the floor with `mesh`, both ways.
@@ -127,6 +128,7 @@ pub fn images(
         times: t,
     })
 }
+// ANCHOR_END: images
 
 /// The lesson's tables: the scene as triangles, and how far each rasterized image is
 /// from its ray-cast counterpart. No timings: they go to the terminal only.

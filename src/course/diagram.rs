@@ -293,15 +293,9 @@ impl Diagram {
                 axis: self.drawing_axes,
             });
         }
-        let mut pb = PathBuilder::new();
-        for (i, p) in points.iter().map(|p| self.to_px(*p)).enumerate() {
-            if i == 0 {
-                pb.move_to(p.x, p.y);
-            } else {
-                pb.line_to(p.x, p.y);
-            }
-        }
-        let Some(path) = pb.finish() else { return };
+        let Some(path) = self.path(points, false) else {
+            return;
+        };
         let stroke = Stroke {
             width: width_px,
             dash: if dash {
@@ -313,6 +307,23 @@ impl Diagram {
         };
         self.pixmap
             .stroke_path(&path, &paint(color), &stroke, Transform::identity(), None);
+    }
+
+    /// The polyline through `points` (diagram coordinates) in pixels, closed if
+    /// `closed`; `None` for fewer than two points.
+    fn path(&self, points: &[Vec2], closed: bool) -> Option<tiny_skia::Path> {
+        let mut pb = PathBuilder::new();
+        for (i, p) in points.iter().map(|p| self.to_px(*p)).enumerate() {
+            if i == 0 {
+                pb.move_to(p.x, p.y);
+            } else {
+                pb.line_to(p.x, p.y);
+            }
+        }
+        if closed {
+            pb.close();
+        }
+        pb.finish()
     }
 
     /// A straight line from `a` to `b`.
@@ -334,16 +345,9 @@ impl Diagram {
 
     /// A filled polygon with a translucent fill (`alpha` from 0 to 255).
     pub fn fill(&mut self, points: &[Vec2], color: Rgb, alpha: u8) {
-        let mut pb = PathBuilder::new();
-        for (i, p) in points.iter().map(|p| self.to_px(*p)).enumerate() {
-            if i == 0 {
-                pb.move_to(p.x, p.y);
-            } else {
-                pb.line_to(p.x, p.y);
-            }
-        }
-        pb.close();
-        let Some(path) = pb.finish() else { return };
+        let Some(path) = self.path(points, true) else {
+            return;
+        };
         let mut p = paint(color);
         p.set_color_rgba8(color.0, color.1, color.2, alpha);
         self.pixmap

@@ -138,6 +138,7 @@ impl Aabb {
     }
     // ANCHOR_END: slab_conservative
 
+    // ANCHOR: span
     /// The slab loop shared by both tests; `widen` scales each axis' t_far.
     fn span(&self, ray: &Ray, t_min: f32, t_max: f32, widen: f32) -> Option<Span> {
         let (o, d) = (ray.origin(), ray.direction());
@@ -167,6 +168,7 @@ impl Aabb {
         }
         Some(s)
     }
+    // ANCHOR_END: span
 
     // ANCHOR: box_hit
     /// The nearest crossing of the box surface with `t_min < t < t_max`: the entry,

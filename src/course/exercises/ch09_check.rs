@@ -1,6 +1,6 @@
 //! The check of chapter 09's coding exercise: the cases, the reference
 //! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch09.rs`, beside this file; the harness is `check.rs`.
+//! is in `ch09.rs`, beside this file; the harness is `harness.rs`.
 
 use super::harness::{Case, Exercise, Mistake, Outcome, run};
 use crate::raster::rasterize::covers;

@@ -1,6 +1,6 @@
 //! The check of chapter 10's coding exercise: the cases, the reference
 //! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch10.rs`, beside this file; the harness is `check.rs`.
+//! is in `ch10.rs`, beside this file; the harness is `harness.rs`.
 //!
 //! The check runs in two rounds. First three statistics over 4096 directions from a
 //! fixed random stream (so the check is never flaky): how many directions are not of

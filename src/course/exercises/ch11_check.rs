@@ -1,6 +1,6 @@
 //! The check of chapter 11's coding exercise: the cases, the reference
 //! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch11.rs`, beside this file; the harness is `check.rs`.
+//! is in `ch11.rs`, beside this file; the harness is `harness.rs`.
 
 use glam::Vec3;
 

@@ -1,23 +1,31 @@
-//! The BVH of lesson 11: how long it takes to build, how many primary rays per
-//! second it traces on a ~100k-triangle mesh, and where it overtakes the plain list.
+//! The BVH of lesson 11: how long it takes to build, how many rays per second it
+//! traces on a ~100k-triangle mesh, against a well-kept Rust BVH crate on the same
+//! rays, and where it overtakes the plain list.
 //!
 //!     cargo bench --bench bvh
 //!
 //! The meshes are UV spheres (`Mesh::uv_sphere`, n x n segments, 2 n (n - 1)
-//! triangles) seen by a pinhole camera; every ray asks for the closest hit only
-//! (the shading is the object's colour, as in lesson 08's shadowless casting), on
-//! one thread.
+//! triangles) seen by a pinhole camera; every ray asks for the closest hit only, on
+//! one thread. The rays are made once, before the clock starts.
+//!
+//! The anchor is `obvhs` (crates.io): its binary BVH (`Bvh2`) and its compressed
+//! 8-wide BVH (`CwBvh`, SIMD traversal), both built with its "medium" preset, both
+//! intersecting triangles with its own Moller-Trumbore test (not watertight). After
+//! criterion's figures, one run times every builder and every traversal interleaved
+//! (the fastest of 5 rounds each) and prints the ratios, how many rays each finds a
+//! hit for, and whether the CPU was quiet.
 
 use std::time::Duration;
 
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use glam::Vec3;
+use criterion::{Criterion, Throughput, criterion_group};
+use glam::{Vec3, Vec3A};
+use obvhs::ray::RayHit;
 use render_lessons::bvh::{Bvh, BvhScene};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
+use render_lessons::course::measure::machine::{CpuWatch, interleaved_min};
 use render_lessons::course::measure::scaling;
 use render_lessons::ray::Ray;
 use render_lessons::raycast::shadowless;
-use render_lessons::render::render;
 use render_lessons::scene::Scene;
 
 /// A UV sphere of radius 1 at the origin, n x n segments, as a scene of triangles
@@ -26,12 +34,22 @@ fn sphere_scene(n: u32) -> Scene {
     scaling::sphere_scene(n).expect("scene")
 }
 
-/// A pinhole camera 3 units from the sphere, which fills most of the frame's height.
-fn camera(width: u32, height: u32) -> Camera {
-    let eye = Vec3::new(0.0, 0.4, 3.0);
+/// A pinhole camera at `distance` from the sphere's centre, looking at it, with a
+/// screen of half height 0.42 at distance 1.
+fn camera(width: u32, height: u32, distance: f32) -> Camera {
+    let eye = distance * Vec3::new(0.0, 0.4, 3.0).normalize();
     let frame = Frame::look(eye, -eye, Vec3::Y).expect("frame");
     let film = Film::centred(width, height, 0.42).expect("film");
     PinholeCamera::new(film, 1.0, frame).expect("camera").into()
+}
+
+/// Every pixel's ray, row by row.
+fn rays(camera: &Camera) -> Vec<Ray> {
+    let (w, h) = (camera.film().width(), camera.film().height());
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| camera.ray(x, y))
+        .collect()
 }
 
 fn shade(scene: &BvhScene, ray: &Ray) -> Vec3 {
@@ -41,7 +59,27 @@ fn shade(scene: &BvhScene, ray: &Ray) -> Vec3 {
     }
 }
 
-/// Build time and primary rays per second on 99 904 triangles (n = 224).
+/// The scene's triangles for obvhs.
+fn obvhs_triangles(scene: &Scene) -> Vec<obvhs::triangle::Triangle> {
+    use render_lessons::shapes::Shape;
+    scene
+        .objects()
+        .iter()
+        .filter_map(|o| match &o.shape {
+            Shape::Triangle(t) => {
+                let [v0, v1, v2] = t.vertices().map(Vec3A::from);
+                Some(obvhs::triangle::Triangle { v0, v1, v2 })
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+fn obvhs_ray(r: &Ray) -> obvhs::ray::Ray {
+    obvhs::ray::Ray::new_inf(r.origin().into(), r.direction().into())
+}
+
+/// Build time and rays per second on 99 904 triangles (n = 224).
 fn big_mesh(c: &mut Criterion) {
     let scene = sphere_scene(224);
     let mut group = c.benchmark_group("bvh, 99904 triangles");
@@ -51,24 +89,19 @@ fn big_mesh(c: &mut Criterion) {
         b.iter(|| Bvh::build(scene.objects()))
     });
     let bvh = BvhScene::new(scene);
-    let camera = camera(1920, 1080);
-    group.throughput(Throughput::Elements(1920 * 1080));
-    group.bench_function("primary rays 1920x1080, 1 thread", |b| {
-        b.iter(|| render(&camera, Some(1), |r| shade(&bvh, r)).expect("render"))
+    let rays = rays(&camera(1920, 1080, 3.03));
+    group.throughput(Throughput::Elements(rays.len() as u64));
+    group.bench_function("closest hit, 1920x1080 rays, 1 thread", |b| {
+        b.iter(|| rays.iter().map(|r| shade(&bvh, r)).sum::<Vec3>())
     });
     group.finish();
 }
 
 /// The plain list against the BVH at about 10, 100, 1k and 10k triangles, on the
-/// 5184 rays of a 96 x 54 image, made once and traced in a plain loop (`render` would
-/// set up a thread pool per call, which costs more than a small scene's rays). A full
-/// HD frame through the 10k-triangle list would take about a minute per sample.
+/// 5184 rays of a 96 x 54 image. A full HD frame through the 10k-triangle list
+/// would take about a minute per sample.
 fn crossover(c: &mut Criterion) {
-    let camera = camera(96, 54);
-    let rays: Vec<Ray> = (0..54)
-        .flat_map(|y| (0..96).map(move |x| (x, y)))
-        .map(|(x, y)| camera.ray(x, y))
-        .collect();
+    let rays = rays(&camera(96, 54, 3.03));
     let mut group = c.benchmark_group("list vs bvh, 96x54 rays");
     group.sample_size(10);
     group.warm_up_time(Duration::from_secs(1));
@@ -88,5 +121,125 @@ fn crossover(c: &mut Criterion) {
     group.finish();
 }
 
+/// Our BVH against obvhs's two, in one run: build times, then rays per second at
+/// two cameras (near: about a third of the rays hit; far: a few percent).
+fn one_run() {
+    let scene = sphere_scene(224);
+    let triangles = obvhs_triangles(&scene);
+    let params = obvhs::BvhBuildParams::medium_build();
+    let mut ours = None;
+    let mut bvh2 = None;
+    let mut cwbvh = None;
+    let build = interleaved_min(
+        5,
+        &mut [
+            &mut || ours = Some(Bvh::build(scene.objects())),
+            &mut || {
+                let mut t = Duration::ZERO;
+                bvh2 = Some(obvhs::bvh2::builder::build_bvh2_from_tris(
+                    &triangles, params, &mut t,
+                ))
+            },
+            &mut || {
+                let mut t = Duration::ZERO;
+                cwbvh = Some(obvhs::cwbvh::builder::build_cwbvh_from_tris(
+                    &triangles, params, &mut t,
+                ))
+            },
+        ],
+    );
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    println!(
+        "\none run, {} triangles, 1 thread, fastest of 5 interleaved rounds",
+        triangles.len()
+    );
+    println!(
+        "  build: ours (binned SAH) {:.1} ms, obvhs Bvh2 {:.1} ms, obvhs CwBvh {:.1} ms",
+        ms(build[0]),
+        ms(build[1]),
+        ms(build[2])
+    );
+    println!(
+        "         ours / obvhs Bvh2: {:.2}x the time",
+        ms(build[0]) / ms(build[1])
+    );
+    let (Some(bvh2), Some(cwbvh)) = (bvh2, cwbvh) else {
+        return;
+    };
+    let ours = BvhScene::new(scene);
+    for (label, distance) in [("near camera", 3.03), ("far camera", 6.5)] {
+        let rays = rays(&camera(1920, 1080, distance));
+        let orays: Vec<obvhs::ray::Ray> = rays.iter().map(obvhs_ray).collect();
+        let (mut h0, mut h1, mut h2) = (0, 0, 0);
+        let times = interleaved_min(
+            5,
+            &mut [
+                &mut || {
+                    h0 = rays
+                        .iter()
+                        .filter(|r| ours.closest_hit(r, 0.0, f32::INFINITY).is_some())
+                        .count()
+                },
+                &mut || {
+                    h1 = orays
+                        .iter()
+                        .filter(|r| {
+                            let mut hit = RayHit::none();
+                            bvh2.ray_traverse(**r, &mut hit, |ray, id| {
+                                triangles[bvh2.primitive_indices[id] as usize].intersect(ray)
+                            })
+                        })
+                        .count()
+                },
+                &mut || {
+                    h2 = orays
+                        .iter()
+                        .filter(|r| {
+                            let mut hit = RayHit::none();
+                            cwbvh.ray_traverse(**r, &mut hit, |ray, id| {
+                                triangles[cwbvh.primitive_indices[id] as usize].intersect(ray)
+                            })
+                        })
+                        .count()
+                },
+            ],
+        );
+        let hits = [h0, h1, h2];
+        let rate = |i: usize| rays.len() as f64 / times[i].as_secs_f64() / 1e6;
+        println!(
+            "  {label}, {:.1}% of {} rays hit: ours {:.1} M rays/s, obvhs Bvh2 {:.1}, obvhs CwBvh {:.1}",
+            100.0 * hits[0] as f64 / rays.len() as f64,
+            rays.len(),
+            rate(0),
+            rate(1),
+            rate(2)
+        );
+        println!(
+            "    ours / Bvh2 {:.2}x, ours / CwBvh {:.2}x; rays hit: ours {}, Bvh2 {}, CwBvh {}",
+            rate(0) / rate(1),
+            rate(0) / rate(2),
+            hits[0],
+            hits[1],
+            hits[2]
+        );
+    }
+}
+
+/// True under `cargo bench` (criterion gets `--bench`), false when `cargo test
+/// --benches` runs this file once as a test.
+fn benchmarking() -> bool {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test" || a == "--list")
+}
+
 criterion_group!(benches, big_mesh, crossover);
-criterion_main!(benches);
+
+fn main() {
+    let watch = CpuWatch::start();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if benchmarking() {
+        one_run();
+        println!("{}", watch.report());
+    }
+}

@@ -13,7 +13,7 @@ use glam::Vec3;
 use crate::error::{Error, Result, finite3};
 use crate::material::Material;
 use crate::ray::Ray;
-use crate::shapes::{Hit, Shape};
+use crate::shapes::{Candidate, Hit, PreparedRay, Shape};
 
 /// One primitive with its material and the radiance L_e it emits.
 ///
@@ -166,16 +166,21 @@ impl Scene {
     /// index of the object it belongs to: the inner loop of the lecture's ray
     /// casting algorithm, shared by every renderer. Each hit found shrinks `t_max`,
     /// so later primitives only count if nearer; on a tie the first object wins.
+    ///
+    /// The loop asks each primitive only for its [`Candidate`] (`t` and a few
+    /// numbers); the point and normal are computed once, for the winner.
     pub fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
-        let mut closest = None;
+        let prepared = PreparedRay::new(ray);
+        let mut closest: Option<(Candidate, usize)> = None;
         let mut t_max = t_max;
         for (i, object) in self.objects.iter().enumerate() {
-            if let Some(hit) = object.shape.hit(ray, t_min, t_max) {
-                t_max = hit.t;
-                closest = Some((hit, i));
+            if let Some(candidate) = object.shape.candidate(&prepared, t_min, t_max) {
+                t_max = candidate.t;
+                closest = Some((candidate, i));
             }
         }
-        closest
+        let (candidate, i) = closest?;
+        Some((self.objects[i].shape.record(&prepared, candidate), i))
     }
     // ANCHOR_END: closest_hit
 
@@ -187,8 +192,9 @@ impl Scene {
 
     /// True if anything lies on the ray with `t_min < t < t_max` (a shadow ray's question).
     pub fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+        let prepared = PreparedRay::new(ray);
         self.objects
             .iter()
-            .any(|o| o.shape.hit(ray, t_min, t_max).is_some())
+            .any(|o| o.shape.candidate(&prepared, t_min, t_max).is_some())
     }
 }

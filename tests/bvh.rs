@@ -373,10 +373,15 @@ fn a_pathological_distribution_stays_within_the_stack() {
     assert_same_answers(&scene, &rays);
 }
 
-/// Every primitive in exactly one leaf, each child's box inside its parent's, each
-/// primitive's box inside its leaf's, no deeper than [`MAX_DEPTH`]; returns the depth.
+/// Every primitive in exactly one leaf, each child's box inside its parent's, the two
+/// children side by side, each primitive's box inside its leaf's, no deeper than
+/// [`MAX_DEPTH`], 32 bytes a node; returns the depth.
 fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
     let nodes = bvh.nodes();
+    assert_eq!(
+        std::mem::size_of_val(&nodes[..1.min(nodes.len())]),
+        32 * 1.min(nodes.len())
+    );
     let bounded: Vec<usize> = (0..scene.objects().len())
         .filter(|&i| scene.objects()[i].shape.bounds().is_some())
         .collect();
@@ -392,20 +397,23 @@ fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
         visited += 1;
         max_depth = max_depth.max(depth);
         let node = nodes[i];
-        match node.kind {
+        match node.kind() {
             NodeKind::Leaf { first, count } => {
                 assert!(count > 0);
                 for &p in &bvh.primitives()[first..first + count] {
                     seen[p] += 1;
                     let b = scene.objects()[p].shape.bounds().unwrap();
-                    assert!(node.bounds.contains(&b), "primitive {p} outside leaf {i}");
+                    assert!(node.bounds().contains(&b), "primitive {p} outside leaf {i}");
                 }
             }
-            NodeKind::Interior { right, axis } => {
-                assert!(axis < 3 && right > i + 1 && right < nodes.len());
-                for child in [i + 1, right] {
+            NodeKind::Interior { left } => {
+                assert!(
+                    left > i && left + 1 < nodes.len(),
+                    "children after their parent"
+                );
+                for child in [left, left + 1] {
                     assert!(
-                        node.bounds.contains(&nodes[child].bounds),
+                        node.bounds().contains(&nodes[child].bounds()),
                         "child {child} outside {i}"
                     );
                     stack.push((child, depth + 1));

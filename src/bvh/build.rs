@@ -15,11 +15,10 @@
 //! volume hierarchies"): the centroids' range on each axis is cut into [`BINS`]
 //! equal bins, and only the [`BINS`] - 1 planes between bins are tried.
 
-use glam::Vec3;
+use glam::{Vec3, Vec3A};
 
 use crate::bvh::{Bvh, MAX_DEPTH, Node, NodeKind};
 use crate::scene::Object;
-use crate::shapes::Aabb;
 
 /// The cost of visiting a node, relative to testing one primitive (pbrt-v4's 1/2).
 pub const TRAVERSAL_COST: f32 = 0.5;
@@ -44,12 +43,49 @@ pub enum Strategy {
     Median,
 }
 
-/// A primitive while the tree is built: its object index, box and box centre.
+/// A box while the tree is built: it starts empty (min = +inf, max = -inf) and
+/// grows, with no check and no `Option`, because the build grows millions of them.
+///
+/// Its corners are 4-wide vectors (one lane unused), so that growing it is two SIMD
+/// instructions.
+#[derive(Clone, Copy, Debug)]
+struct Bounds {
+    min: Vec3A,
+    max: Vec3A,
+}
+
+impl Bounds {
+    const EMPTY: Bounds = Bounds {
+        min: Vec3A::INFINITY,
+        max: Vec3A::NEG_INFINITY,
+    };
+
+    #[inline(always)]
+    fn grow(&mut self, other: &Bounds) {
+        self.min = self.min.min(other.min);
+        self.max = self.max.max(other.max);
+    }
+
+    #[inline(always)]
+    fn grow_point(&mut self, p: Vec3A) {
+        self.min = self.min.min(p);
+        self.max = self.max.max(p);
+    }
+
+    /// 2 (xy + yz + zx) of the extent; 0 for an empty box.
+    fn area(&self) -> f32 {
+        let e = (self.max - self.min).max(Vec3A::ZERO);
+        2.0 * (e.x * e.y + e.y * e.z + e.z * e.x)
+    }
+}
+
+/// A primitive while the tree is built: its box, the box's centre and its object
+/// index.
 #[derive(Clone, Copy, Debug)]
 struct Item {
-    index: usize,
-    bounds: Aabb,
-    centroid: Vec3,
+    bounds: Bounds,
+    centroid: Vec3A,
+    index: u32,
 }
 
 impl Bvh {
@@ -61,29 +97,38 @@ impl Bvh {
 
     /// A BVH over `objects`, splitting nodes by `strategy`.
     pub fn build_with(objects: &[Object], strategy: Strategy) -> Bvh {
-        let mut items = Vec::new();
+        let mut items = Vec::with_capacity(objects.len());
         let mut unbounded = Vec::new();
         for (index, object) in objects.iter().enumerate() {
-            match object.shape.bounds() {
-                Some(bounds) => items.push(Item {
+            match (object.shape.bounds(), u32::try_from(index)) {
+                (Some(b), Ok(index)) => items.push(Item {
+                    bounds: Bounds {
+                        min: b.min().into(),
+                        max: b.max().into(),
+                    },
+                    centroid: b.centre().into(),
                     index,
-                    bounds,
-                    centroid: bounds.centre(),
                 }),
-                None => unbounded.push(index),
+                _ => unbounded.push(index),
             }
         }
         let mut builder = Builder {
-            nodes: Vec::new(),
-            primitives: Vec::new(),
+            nodes: Vec::with_capacity(2 * items.len()),
             strategy,
         };
         if !items.is_empty() {
-            builder.subtree(&mut items, 0);
+            builder.nodes.push(LEAF_PLACEHOLDER);
+            builder.subtree(0, &mut items, 0, 0);
         }
+        let primitives: Vec<usize> = items.iter().map(|item| item.index as usize).collect();
+        let shapes = primitives
+            .iter()
+            .map(|&i| objects[i].shape.clone())
+            .collect();
         Bvh {
             nodes: builder.nodes,
-            primitives: builder.primitives,
+            primitives,
+            shapes,
             unbounded,
         }
     }
@@ -92,7 +137,7 @@ impl Bvh {
     /// primitive tests. Each interior node adds C_trav A(node) / A(root), each leaf
     /// N(leaf) A(leaf) / A(root). `None` for an empty tree or a root box of no area.
     pub fn sah_cost(&self) -> Option<f32> {
-        let root_area = f64::from(self.nodes.first()?.bounds.surface_area());
+        let root_area = f64::from(self.nodes.first()?.bounds().surface_area());
         if root_area <= 0.0 {
             return None;
         }
@@ -100,221 +145,216 @@ impl Bvh {
             .nodes
             .iter()
             .map(|node| {
-                let weight = match node.kind {
+                let weight = match node.kind() {
                     NodeKind::Leaf { count, .. } => count as f64,
                     NodeKind::Interior { .. } => f64::from(TRAVERSAL_COST),
                 };
-                weight * f64::from(node.bounds.surface_area())
+                weight * f64::from(node.bounds().surface_area())
             })
             .sum();
         Some((total / root_area) as f32)
     }
 }
 
-/// The tree as it grows: nodes in depth-first order, leaf primitives in leaf order.
+/// A node slot reserved before its contents are known.
+const LEAF_PLACEHOLDER: Node = Node {
+    min: Vec3::ZERO,
+    first: 0,
+    max: Vec3::ZERO,
+    count: 0,
+};
+
+/// The tree as it grows.
 struct Builder {
     nodes: Vec<Node>,
-    primitives: Vec<usize>,
     strategy: Strategy,
 }
 
 impl Builder {
     // ANCHOR: build
-    /// Appends the subtree over `items` (at `depth` levels below the root) and
-    /// returns its root's index.
+    /// Fills node `here` with the subtree over `items`, which are
+    /// `primitives[first..first + items.len()]` of the finished tree, at `depth`
+    /// levels below the root.
     ///
-    /// Depth first: the node itself, then its whole left subtree, which therefore
-    /// starts at the next index, then the right subtree, whose index is stored in
-    /// the node once it is known. A node becomes a leaf when it holds at most
-    /// [`LEAF_SIZE`] primitives, when the tree is [`MAX_DEPTH`] deep (so the
-    /// traversal stack is big enough), or when [`Builder::split`] finds no split
-    /// worth making.
-    fn subtree(&mut self, items: &mut [Item], depth: usize) -> usize {
-        let here = self.nodes.len();
-        let bounds = union(items);
+    /// A split reorders `items` in place, left part first, and reserves two
+    /// adjacent nodes for the children before filling them; so a leaf's primitives
+    /// are a contiguous run of the final order and nothing is allocated per node. A
+    /// node becomes a leaf when it holds at most [`LEAF_SIZE`] primitives, when the
+    /// tree is [`MAX_DEPTH`] deep (so the traversal stack is big enough), or when
+    /// [`Builder::split`] finds no split worth making.
+    fn subtree(&mut self, here: usize, items: &mut [Item], first: usize, depth: usize) {
+        let (bounds, centroids) = bounds_of(items);
         let split = if items.len() > LEAF_SIZE && depth + 1 < MAX_DEPTH {
-            self.split(items, &bounds)
+            self.split(items, &bounds, &centroids)
         } else {
             None
         };
-        let Some((mid, axis)) = split else {
-            let first = self.primitives.len();
-            self.primitives.extend(items.iter().map(|item| item.index));
-            let count = items.len();
-            self.nodes.push(Node {
-                bounds,
-                kind: NodeKind::Leaf { first, count },
-            });
-            return here;
+        let Some(mid) = split else {
+            self.nodes[here] = node(&bounds, first, items.len());
+            return;
         };
-        let (left, right) = items.split_at_mut(mid);
-        self.nodes.push(Node {
-            bounds,
-            kind: NodeKind::Interior { right: 0, axis }, // right is set below
-        });
-        self.subtree(left, depth + 1);
-        let right = self.subtree(right, depth + 1);
-        self.nodes[here].kind = NodeKind::Interior { right, axis };
-        here
+        let left = self.nodes.len();
+        self.nodes.extend([LEAF_PLACEHOLDER; 2]);
+        self.nodes[here] = node(&bounds, left, 0);
+        let (l, r) = items.split_at_mut(mid);
+        self.subtree(left, l, first, depth + 1);
+        self.subtree(left + 1, r, first + mid, depth + 1);
     }
     // ANCHOR_END: build
 
     /// Reorders `items` into a left part `..mid` and a right part `mid..`, both
-    /// non-empty, and returns `(mid, axis)`; or `None` for a leaf.
-    fn split(&self, items: &mut [Item], bounds: &Aabb) -> Option<(usize, usize)> {
+    /// non-empty, and returns `mid`; or `None` for a leaf.
+    fn split(&self, items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<usize> {
         // With no area the SAH has nothing to weigh (0 / 0): fall back to the median.
-        if self.strategy == Strategy::Median || bounds.surface_area() <= 0.0 {
-            median_split(items)
+        if self.strategy == Strategy::Median || bounds.area() <= 0.0 {
+            median_split(items, centroids)
         } else {
-            sah_split(items, bounds)
+            sah_split(items, bounds, centroids)
         }
     }
 }
 
-/// The box around every item's box.
-fn union(items: &[Item]) -> Aabb {
-    let first = items[0].bounds;
-    items[1..]
-        .iter()
-        .fold(first, |acc, item| acc.union(&item.bounds))
+/// A node with `bounds`; `count` primitives from `first` (a leaf), or children at
+/// `first` and `first + 1` when `count` is 0. The counts fit in u32: the build takes
+/// at most u32::MAX objects into the tree.
+fn node(bounds: &Bounds, first: usize, count: usize) -> Node {
+    Node {
+        min: Vec3::from(bounds.min),
+        first: first as u32,
+        max: Vec3::from(bounds.max),
+        count: count as u32,
+    }
 }
 
-/// The box around the items' centroids; `None` never happens for a non-empty slice
-/// of finite boxes.
-fn centroid_bounds(items: &[Item]) -> Option<Aabb> {
-    Aabb::around(items.iter().map(|item| item.centroid))
+/// The box around the items' boxes and the box around their centroids, in one pass.
+fn bounds_of(items: &[Item]) -> (Bounds, Bounds) {
+    let (mut bounds, mut centroids) = (Bounds::EMPTY, Bounds::EMPTY);
+    for item in items {
+        bounds.grow(&item.bounds);
+        centroids.grow_point(item.centroid);
+    }
+    (bounds, centroids)
 }
 
 /// The primitives that fall into one bin: how many, and the box around them.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 struct Bin {
-    count: usize,
-    bounds: Option<Aabb>,
+    count: u32,
+    bounds: Bounds,
 }
 
 impl Bin {
-    fn add(&mut self, bounds: &Aabb) {
-        self.count += 1;
-        self.bounds = Some(grow(self.bounds, bounds));
-    }
+    const EMPTY: Bin = Bin {
+        count: 0,
+        bounds: Bounds::EMPTY,
+    };
 }
 
-/// `acc` grown to hold `b` (or `b` itself if `acc` is empty).
-fn grow(acc: Option<Aabb>, b: &Aabb) -> Aabb {
-    acc.map_or(*b, |a| a.union(b))
-}
-
-/// The bin of a centroid coordinate `c`, with the centroids spanning
-/// `lo..=lo + extent`, `extent > 0`. (c - lo) / extent lies in [0, 1] even after
-/// rounding, so the index is at most [`BINS`] and clamped to the last bin.
-fn bin_index(c: f32, lo: f32, extent: f32) -> usize {
-    let b = ((c - lo) / extent * BINS as f32) as usize;
-    b.min(BINS - 1)
-}
-
-/// The best split found so far: its SAH cost, axis and last bin on the left.
+/// Which bin a centroid falls into on each axis: `lo` and `scale` = [`BINS`] /
+/// extent map the centroids' range onto 0..BINS; the last edge is clamped into the
+/// last bin. (An axis of zero extent gives nonsense here, and is never split.)
 #[derive(Clone, Copy, Debug)]
-struct Candidate {
-    cost: f32,
-    axis: usize,
-    last_left_bin: usize,
+struct Binning {
+    lo: Vec3A,
+    scale: Vec3A,
+}
+
+impl Binning {
+    #[inline(always)]
+    fn bins(&self, c: Vec3A) -> [usize; 3] {
+        let f = ((c - self.lo) * self.scale).clamp(Vec3A::ZERO, Vec3A::splat((BINS - 1) as f32));
+        [
+            f.x as u32 as usize,
+            f.y as u32 as usize,
+            f.z as u32 as usize,
+        ]
+    }
 }
 
 // ANCHOR: sah_split
-/// The binned SAH split (Wald 2007), on all three axes.
+/// The binned SAH split (Wald 2007), on all three axes at once.
 ///
-/// Per axis: drop every item into the bin of its centroid, then sweep the bins once
-/// from each end to know, for each of the [`BINS`] - 1 planes between bins, the count
-/// and box on each side; the plane's cost is
-/// C_trav + (A(L) N(L) + A(R) N(R)) / A(node). The cheapest plane wins unless a leaf,
-/// costing N(node), is cheaper and the node is small enough ([`MAX_LEAF_SIZE`]).
-/// Axes on which all centroids coincide are skipped; if all three are, the node is
-/// a leaf (every split would put everything on one side).
-fn sah_split(items: &mut [Item], bounds: &Aabb) -> Option<(usize, usize)> {
-    let centroids = centroid_bounds(items)?;
-    let (lo, extent) = (centroids.min(), centroids.max() - centroids.min());
-    let mut best: Option<Candidate> = None;
-    for axis in 0..3 {
-        if extent[axis] <= 0.0 {
-            continue;
-        }
-        let mut bins = [Bin::default(); BINS];
-        for item in items.iter() {
-            bins[bin_index(item.centroid[axis], lo[axis], extent[axis])].add(&item.bounds);
-        }
-        for (last_left_bin, cost) in plane_costs(&bins, bounds.surface_area()) {
-            if best.is_none_or(|b| cost < b.cost) {
-                best = Some(Candidate {
-                    cost,
-                    axis,
-                    last_left_bin,
-                });
-            }
+/// One pass drops every item into the bin of its centroid on each axis; then, per
+/// axis, one sweep from the right and one from the left give, for each of the
+/// [`BINS`] - 1 planes between bins, the count and box on each side, and the plane's
+/// cost C_trav + (A(L) N(L) + A(R) N(R)) / A(node). The cheapest plane wins unless a
+/// leaf, costing N(node), is cheaper and the node is small enough
+/// ([`MAX_LEAF_SIZE`]). Axes on which all centroids coincide are skipped; if all
+/// three are, the node is a leaf (every split would put everything on one side).
+fn sah_split(items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<usize> {
+    let extent = centroids.max - centroids.min;
+    let binning = Binning {
+        lo: centroids.min,
+        scale: Vec3A::splat(BINS as f32) / extent,
+    };
+    let mut bins = [[Bin::EMPTY; BINS]; 3];
+    for item in items.iter() {
+        let b = binning.bins(item.centroid);
+        for axis in 0..3 {
+            let bin = &mut bins[axis][b[axis]];
+            bin.count += 1;
+            bin.bounds.grow(&item.bounds);
         }
     }
-    let best = best?;
-    let leaf_cost = items.len() as f32;
-    if best.cost >= leaf_cost && items.len() <= MAX_LEAF_SIZE {
+    let mut best: Option<(f32, usize, usize)> = None; // (cost, axis, last left bin)
+    for axis in (0..3).filter(|&axis| extent[axis] > 0.0) {
+        if let Some((cost, k)) = cheapest_plane(&bins[axis], bounds.area())
+            && best.is_none_or(|(c, ..)| cost < c)
+        {
+            best = Some((cost, axis, k));
+        }
+    }
+    let (cost, axis, k) = best?;
+    if cost >= items.len() as f32 && items.len() <= MAX_LEAF_SIZE {
         return None;
     }
-    let (axis, k) = (best.axis, best.last_left_bin);
-    let mid = partition(items, |item| {
-        bin_index(item.centroid[axis], lo[axis], extent[axis]) <= k
-    });
-    Some((mid, axis))
+    Some(partition(items, |item| {
+        binning.bins(item.centroid)[axis] <= k
+    }))
 }
 
-/// The SAH cost of each plane between bins whose two sides are both non-empty, as
-/// (last bin on the left, cost), for a node of surface area `area > 0`.
-fn plane_costs(bins: &[Bin; BINS], area: f32) -> Vec<(usize, f32)> {
-    // right[k]: count and box of bins k + 1.. (the right side of plane k).
-    let mut right = [Bin::default(); BINS];
-    let mut acc = Bin::default();
+/// The cheapest plane between bins whose two sides are both non-empty, as (cost,
+/// last bin on the left), for a node of surface area `area > 0`.
+fn cheapest_plane(bins: &[Bin; BINS], area: f32) -> Option<(f32, usize)> {
+    // right[k]: count and area of bins k + 1.. (the right side of plane k).
+    let mut right = [(0u32, 0.0f32); BINS];
+    let mut acc = Bin::EMPTY;
     for k in (0..BINS - 1).rev() {
-        acc = merge(acc, bins[k + 1]);
-        right[k] = acc;
+        acc.count += bins[k + 1].count;
+        acc.bounds.grow(&bins[k + 1].bounds);
+        right[k] = (acc.count, acc.bounds.area());
     }
-    let mut left = Bin::default();
-    let mut costs = Vec::with_capacity(BINS - 1);
+    let mut left = Bin::EMPTY;
+    let mut best: Option<(f32, usize)> = None;
     for k in 0..BINS - 1 {
-        left = merge(left, bins[k]);
-        let (Some(lb), Some(rb)) = (left.bounds, right[k].bounds) else {
+        left.count += bins[k].count;
+        left.bounds.grow(&bins[k].bounds);
+        let (right_count, right_area) = right[k];
+        if left.count == 0 || right_count == 0 {
             continue; // one side empty: not a split
-        };
-        let weighted =
-            lb.surface_area() * left.count as f32 + rb.surface_area() * right[k].count as f32;
-        costs.push((k, TRAVERSAL_COST + weighted / area));
+        }
+        let weighted = left.bounds.area() * left.count as f32 + right_area * right_count as f32;
+        let cost = TRAVERSAL_COST + weighted / area;
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, k));
+        }
     }
-    costs
+    best
 }
 // ANCHOR_END: sah_split
-
-/// Two bins' contents together.
-fn merge(a: Bin, b: Bin) -> Bin {
-    let bounds = match (a.bounds, b.bounds) {
-        (Some(x), Some(y)) => Some(x.union(&y)),
-        (x, None) => x,
-        (None, y) => y,
-    };
-    Bin {
-        count: a.count + b.count,
-        bounds,
-    }
-}
 
 /// The object median: the items sorted by centroid along the centroids' longest axis
 /// (only as far as needed, by `select_nth_unstable`), split in two halves. `None`
 /// (a leaf) if all centroids coincide.
-fn median_split(items: &mut [Item]) -> Option<(usize, usize)> {
-    let centroids = centroid_bounds(items)?;
-    let extent = centroids.max() - centroids.min();
+fn median_split(items: &mut [Item], centroids: &Bounds) -> Option<usize> {
+    let extent = centroids.max - centroids.min;
     let axis = extent.max_position();
-    if extent[axis] <= 0.0 {
+    if extent[axis].is_nan() || extent[axis] <= 0.0 {
         return None;
     }
     let mid = items.len() / 2;
     items.select_nth_unstable_by(mid, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));
-    Some((mid, axis))
+    Some(mid)
 }
 
 /// Moves the items for which `goes_left` holds to the front, keeping none of the

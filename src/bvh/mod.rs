@@ -3,16 +3,22 @@
 //! instead of every one (lesson 11, where a measured chart shows when it pays).
 //!
 //! - [`build`]: binned surface area heuristic (MacDonald and Booth 1990; binning after
-//!   Wald 2007), into a flat array of nodes.
-//! - [`traverse`]: an iterative walk with a small fixed stack, nearest child first,
-//!   with the conservative slab test of Ize 2013 on the node boxes (STABILITY S6).
+//!   Wald 2007), into a flat array of 32-byte nodes whose two children sit side by
+//!   side.
+//! - [`traverse`]: an iterative walk with a small fixed stack; at each interior node
+//!   both children's boxes are tested and the nearer one visited first, with the
+//!   conservative slab test of Ize 2013 on the node boxes (STABILITY S6) and the
+//!   ray's 1/d computed once ([`PreparedRay`](crate::shapes::PreparedRay)).
 //!
 //! Planes and quadrics have no box; they are kept in a plain list and tested on
-//! every ray, before the tree.
+//! every ray, before the tree. The tree keeps its own copy of the bounded shapes in
+//! leaf order, so that a leaf's primitives sit next to each other in memory.
+
+use glam::Vec3;
 
 use crate::ray::Ray;
 use crate::scene::{Object, Scene};
-use crate::shapes::{Aabb, Hit};
+use crate::shapes::{Aabb, Hit, Shape};
 
 pub mod build;
 pub mod traverse;
@@ -26,28 +32,54 @@ pub const MAX_DEPTH: usize = 64;
 pub enum NodeKind {
     /// Primitives `primitives[first..first + count]` of the [`Bvh`].
     Leaf { first: usize, count: usize },
-    /// Two children: the left one is the next node in the array, the right one is at
-    /// index `right`. `axis` is the axis the primitives were split along.
-    Interior { right: usize, axis: usize },
+    /// Two children, side by side: nodes `left` and `left + 1`.
+    Interior { left: usize },
 }
 
-/// One node of the flattened tree: a box around everything below it.
+// ANCHOR: node
+/// One node of the flattened tree, 32 bytes: a box and two counts. A leaf has
+/// `count > 0` primitives from `first` on; an interior node has `count == 0` and its
+/// children at `first` and `first + 1`, so one cache line holds both their boxes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Node {
+    min: Vec3,
+    first: u32,
+    max: Vec3,
+    count: u32,
+}
+// ANCHOR_END: node
+
+impl Node {
     /// The box around every primitive below this node.
-    pub bounds: Aabb,
+    pub fn bounds(&self) -> Aabb {
+        Aabb::from_checked(self.min, self.max)
+    }
+
     /// Leaf or interior.
-    pub kind: NodeKind,
+    pub fn kind(&self) -> NodeKind {
+        if self.count > 0 {
+            NodeKind::Leaf {
+                first: self.first as usize,
+                count: self.count as usize,
+            }
+        } else {
+            NodeKind::Interior {
+                left: self.first as usize,
+            }
+        }
+    }
 }
 
-/// A BVH over a slice of [`Object`]s; it stores indices into that slice, not the
-/// objects, so it must be used with the slice it was built from.
+/// A BVH over a slice of [`Object`]s. It answers with indices into that slice, so it
+/// must be used with the slice it was built from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bvh {
-    /// The tree in depth-first order; the root is node 0. Empty if no object has a box.
+    /// The tree, root first. Empty if no object has a box.
     nodes: Vec<Node>,
     /// Object indices, each leaf's contiguous.
     primitives: Vec<usize>,
+    /// The shapes of `primitives`, in the same order.
+    shapes: Vec<Shape>,
     /// Objects without a box (planes, quadrics), tested on every ray.
     unbounded: Vec<usize>,
 }
@@ -66,11 +98,6 @@ impl Bvh {
     /// The objects with no box, tested on every ray.
     pub fn unbounded(&self) -> &[usize] {
         &self.unbounded
-    }
-
-    /// The primitives of leaf range `first..first + count`.
-    fn leaf(&self, first: usize, count: usize) -> &[usize] {
-        &self.primitives[first..first + count]
     }
 }
 

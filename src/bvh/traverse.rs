@@ -1,22 +1,26 @@
 //! Walking a BVH: which primitives a ray must be tested against.
 //!
-//! Iterative, with a fixed stack of [`MAX_DEPTH`] node indices (the build never
-//! makes a deeper tree). At an interior node the child on the near side of the split
-//! axis is visited first and the other pushed, so a close hit is usually found early
-//! and shrinks the search range, which then rejects the far boxes.
+//! Iterative, with a fixed stack of [`MAX_DEPTH`] entries (the build never makes a
+//! deeper tree). At an interior node both children's boxes are tested; the nearer
+//! box (by entry distance) is visited next and the other pushed with its entry
+//! distance, so a close hit is usually found early, shrinks the search range, and
+//! lets the walk drop pushed boxes that now start beyond it without testing them
+//! again (the ordered traversal of Wald et al., "Interactive Rendering with Coherent
+//! Ray Tracing", 2001, as pbrt-v4 and Embree do it).
 //!
-//! The node boxes are tested with [`Aabb::slab_conservative`], the slab test whose
-//! exits are widened by 1 + 2 gamma(3) (Ize 2013, "Robust BVH Ray Traversal", as in
-//! pbrt-v4): rounding cannot make a box miss a point of a primitive inside it, so the
-//! tree never loses a hit the plain list would find (STABILITY S6).
-//!
-//! [`Aabb::slab_conservative`]: crate::shapes::Aabb::slab_conservative
+//! The node boxes are tested with the conservative slab test, whose exits are
+//! widened by 1 + 2 gamma(3) (Ize 2013, "Robust BVH Ray Traversal", as in pbrt-v4):
+//! rounding cannot make a box miss a point of a primitive inside it, so the tree
+//! never loses a hit the plain list would find (STABILITY S6). The ray's 1/d and
+//! which of each box's two corners it meets first are worked out once per ray.
 
-use crate::bvh::{Bvh, MAX_DEPTH, NodeKind};
+use glam::Vec3A;
+
+use crate::bvh::{Bvh, MAX_DEPTH, Node};
 use crate::ray::Ray;
 use crate::scene::Object;
-use crate::shapes::Hit;
 use crate::shapes::aabb::gamma;
+use crate::shapes::{Candidate, Hit, PreparedRay};
 
 /// The relative margin added to the far end of the box tests: 4 gamma(3), about
 /// 7e-7 (a few ulps of `t`). See [`Nearest::box_limit`].
@@ -31,14 +35,14 @@ enum Walk {
     Stop,
 }
 
-/// The nearest hit found so far and its object index.
+/// The nearest hit found so far: its candidate and object index.
 ///
 /// Ties: the plain list keeps the first object in list order among equal `t`
 /// (a later one must be strictly nearer). To give the same answer whatever order
 /// the tree visits objects in, each test here searches up to just past the best `t`
 /// (its next float up) and an equal `t` wins only with a smaller index.
 struct Nearest {
-    best: Option<(Hit, usize)>,
+    best: Option<(Candidate, usize)>,
     t_max: f32,
 }
 
@@ -46,7 +50,7 @@ impl Nearest {
     /// The far end of the search: `t_max`, or just past the best hit's `t`.
     fn limit(&self) -> f32 {
         match self.best {
-            Some((hit, _)) => hit.t.next_up(),
+            Some((c, _)) => c.t.next_up(),
             None => self.t_max,
         }
     }
@@ -61,17 +65,14 @@ impl Nearest {
         widened(self.limit())
     }
 
-    /// Tests object `i` and keeps its hit if nearer (or as near with a smaller index).
-    fn offer(&mut self, objects: &[Object], i: usize, ray: &Ray, t_min: f32) {
-        let Some(hit) = objects[i].shape.hit(ray, t_min, self.limit()) else {
-            return;
-        };
+    /// Keeps `candidate` of object `i` if nearer (or as near with a smaller index).
+    fn offer(&mut self, candidate: Candidate, i: usize) {
         let better = match self.best {
             None => true,
-            Some((best, j)) => hit.t < best.t || (hit.t == best.t && i < j),
+            Some((best, j)) => candidate.t < best.t || (candidate.t == best.t && i < j),
         };
         if better {
-            self.best = Some((hit, i));
+            self.best = Some((candidate, i));
         }
     }
 }
@@ -80,6 +81,82 @@ impl Nearest {
 fn widened(t: f32) -> f32 {
     t + t.abs() * TIE_MARGIN
 }
+
+/// 1 + 2 gamma(3): how far a positive far end of a slab is moved out (pbrt-v4).
+const WIDEN: f32 = 1.0 + 2.0 * gamma(3);
+
+/// 1 - 2 gamma(3), a little less than 1 / (1 + 2 gamma(3)): a negative far end times
+/// this moves out at least as far as divided by [`WIDEN`], with no division.
+const WIDEN_NEGATIVE: f32 = 1.0 - 2.0 * gamma(3);
+
+// ANCHOR: box_entry
+/// The ray as the node boxes see it: the origin and 1/d as 4-wide vectors (one
+/// lane unused), computed once per ray, and whether 1/d is finite on every axis.
+struct BoxRay {
+    origin: Vec3A,
+    inv_d: Vec3A,
+    finite: bool,
+}
+
+impl BoxRay {
+    fn new(ray: &PreparedRay) -> BoxRay {
+        let inv_d = Vec3A::from(ray.inv_d);
+        BoxRay {
+            origin: Vec3A::from(ray.ray().origin()),
+            inv_d,
+            finite: inv_d.is_finite(),
+        }
+    }
+}
+
+/// The conservative slab test of a node's box, as the walk needs it: the entry
+/// distance if the ray passes through the box within `t_min..t_max`.
+///
+/// All three axes at once: t = (plane - o) * (1/d) for both planes of each axis,
+/// the nearer of the two per axis is where the ray enters that slab, the farther
+/// where it leaves; the box is entered at the last entry and left at the first
+/// exit. That exit is moved out by 1 + 2 gamma(3) (a negative one towards 0 by as
+/// much) so that rounding cannot lose a hit.
+///
+/// With 1/d finite nothing here can be NaN. A ray parallel to an axis (1/d
+/// infinite) that lies exactly in a face plane gives 0 * inf = NaN on that axis;
+/// [`box_entry_careful`] replaces it so that the axis constrains nothing, as in
+/// [`Aabb::slab`](crate::shapes::Aabb::slab), on every CPU.
+#[inline(always)]
+fn box_entry(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
+    if !ray.finite {
+        return box_entry_careful(node, ray, t_min, t_max);
+    }
+    let lo = (Vec3A::from(node.min) - ray.origin) * ray.inv_d;
+    let hi = (Vec3A::from(node.max) - ray.origin) * ray.inv_d;
+    let (near, far) = (lo.min(hi), lo.max(hi));
+    enter(near.max_element(), far.min_element(), t_min, t_max)
+}
+
+/// [`box_entry`] for a ray with an infinite 1/d: each NaN becomes -inf (an entry)
+/// or +inf (an exit).
+#[inline(never)]
+fn box_entry_careful(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
+    let lo = (Vec3A::from(node.min) - ray.origin) * ray.inv_d;
+    let hi = (Vec3A::from(node.max) - ray.origin) * ray.inv_d;
+    let negative = ray.inv_d.cmplt(Vec3A::ZERO);
+    let near = Vec3A::select(negative, hi, lo);
+    let far = Vec3A::select(negative, lo, hi);
+    let near = Vec3A::select(near.is_nan_mask(), Vec3A::NEG_INFINITY, near);
+    let far = Vec3A::select(far.is_nan_mask(), Vec3A::INFINITY, far);
+    enter(near.max_element(), far.min_element(), t_min, t_max)
+}
+
+/// The entry into the box whose slabs are entered by `near` and left by `far`
+/// (neither NaN), within `t_min..t_max`, with the exit widened.
+#[inline(always)]
+fn enter(near: f32, far: f32, t_min: f32, t_max: f32) -> Option<f32> {
+    let far = far * if far > 0.0 { WIDEN } else { WIDEN_NEGATIVE };
+    let t0 = if near > t_min { near } else { t_min };
+    let t1 = if far < t_max { far } else { t_max };
+    (t0 <= t1).then_some(t0)
+}
+// ANCHOR_END: box_entry
 
 impl Bvh {
     /// The nearest hit with `t_min < t < t_max` among `objects` (the slice the tree
@@ -92,25 +169,41 @@ impl Bvh {
         t_min: f32,
         t_max: f32,
     ) -> Option<(Hit, usize)> {
+        let prepared = PreparedRay::new(ray);
         let mut nearest = Nearest { best: None, t_max };
         for &i in &self.unbounded {
-            nearest.offer(objects, i, ray, t_min);
+            if let Some(c) = objects[i]
+                .shape
+                .candidate(&prepared, t_min, nearest.limit())
+            {
+                nearest.offer(c, i);
+            }
         }
-        self.walk(ray, t_min, nearest.box_limit(), |leaf| {
-            for &i in leaf {
-                nearest.offer(objects, i, ray, t_min);
+        self.walk(&prepared, t_min, nearest.box_limit(), |leaf| {
+            for p in leaf {
+                let shape = &self.shapes[p];
+                if let Some(c) = shape.candidate(&prepared, t_min, nearest.limit()) {
+                    nearest.offer(c, self.primitives[p]);
+                }
             }
             Walk::Continue {
                 t_max: nearest.box_limit(),
             }
         });
-        nearest.best
+        let (candidate, i) = nearest.best?;
+        Some((objects[i].shape.record(&prepared, candidate), i))
     }
 
     /// True if any of `objects` lies on the ray with `t_min < t < t_max`; stops at
     /// the first one found.
     pub fn occluded(&self, objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
-        let hits = |&i: &usize| objects[i].shape.hit(ray, t_min, t_max).is_some();
+        let prepared = PreparedRay::new(ray);
+        let hits = |&i: &usize| {
+            objects[i]
+                .shape
+                .candidate(&prepared, t_min, t_max)
+                .is_some()
+        };
         if self.unbounded.iter().any(hits) {
             return true;
         }
@@ -118,8 +211,9 @@ impl Bvh {
         // before `t_max` may have a box entered just after it.
         let box_t_max = widened(t_max);
         let mut found = false;
-        self.walk(ray, t_min, box_t_max, |leaf| {
-            if leaf.iter().any(hits) {
+        self.walk(&prepared, t_min, box_t_max, |leaf| {
+            let hit = |p: usize| self.shapes[p].candidate(&prepared, t_min, t_max).is_some();
+            if leaf.into_iter().any(hit) {
                 found = true;
                 Walk::Stop
             } else {
@@ -130,49 +224,72 @@ impl Bvh {
     }
 
     // ANCHOR: traverse
-    /// Visits, nearest child first, every leaf whose box the ray passes through
-    /// within `t_min < t < t_max`, handing its primitives to `leaf`, which answers
-    /// with the far end to use from then on, or [`Walk::Stop`].
+    /// Visits, nearer child first, every leaf whose box the ray passes through
+    /// within `t_min < t < t_max`, handing the range of its primitives (positions in
+    /// [`Bvh::primitives`]) to `leaf`, which answers with the far end to use from
+    /// then on, or [`Walk::Stop`].
     ///
-    /// `node` is the node being looked at; `stack` holds the far children still to
-    /// visit. A box the ray misses, or a leaf, sends the walk to the top of the stack.
-    fn walk(&self, ray: &Ray, t_min: f32, t_max: f32, mut leaf: impl FnMut(&[usize]) -> Walk) {
-        if self.nodes.is_empty() {
+    /// `node` is the node being visited, its box already known to be hit; `stack`
+    /// holds the farther children still to visit, each with its entry distance. A
+    /// pushed child whose entry now lies beyond `t_max` is dropped when popped.
+    fn walk(
+        &self,
+        ray: &PreparedRay,
+        t_min: f32,
+        t_max: f32,
+        mut leaf: impl FnMut(std::ops::Range<usize>) -> Walk,
+    ) {
+        let Some(root) = self.nodes.first() else {
+            return;
+        };
+        let box_ray = BoxRay::new(ray);
+        let mut t_max = t_max;
+        if box_entry(root, &box_ray, t_min, t_max).is_none() {
             return;
         }
-        let mut t_max = t_max;
-        let mut stack = [0usize; MAX_DEPTH];
+        let mut stack = [(0u32, 0.0f32); MAX_DEPTH];
         let mut pending = 0;
         let mut node = 0;
         loop {
             let here = &self.nodes[node];
             let mut next = None;
-            if here.bounds.slab_conservative(ray, t_min, t_max).is_some() {
-                match here.kind {
-                    NodeKind::Leaf { first, count } => match leaf(self.leaf(first, count)) {
-                        Walk::Continue { t_max: t } => t_max = t,
-                        Walk::Stop => return,
-                    },
-                    NodeKind::Interior { right, axis } => {
-                        // The left child holds the smaller coordinates along `axis`.
-                        let (near, far) = if ray.direction()[axis] < 0.0 {
-                            (right, node + 1)
-                        } else {
-                            (node + 1, right)
-                        };
-                        stack[pending] = far;
-                        pending += 1;
-                        next = Some(near);
-                    }
+            if here.count > 0 {
+                let first = here.first as usize;
+                match leaf(first..first + here.count as usize) {
+                    Walk::Continue { t_max: t } => t_max = t,
+                    Walk::Stop => return,
                 }
+            } else {
+                let left = here.first as usize;
+                let hit = |i: usize| box_entry(&self.nodes[i], &box_ray, t_min, t_max);
+                next = match (hit(left), hit(left + 1)) {
+                    (Some(a), Some(b)) => {
+                        let (near, far, t_far) = if a <= b {
+                            (left, left + 1, b)
+                        } else {
+                            (left + 1, left, a)
+                        };
+                        stack[pending] = (far as u32, t_far);
+                        pending += 1;
+                        Some(near)
+                    }
+                    (Some(_), None) => Some(left),
+                    (None, Some(_)) => Some(left + 1),
+                    (None, None) => None,
+                };
             }
             node = match next {
-                Some(near) => near,
-                None if pending > 0 => {
+                Some(n) => n,
+                None => loop {
+                    if pending == 0 {
+                        return;
+                    }
                     pending -= 1;
-                    stack[pending]
-                }
-                None => return,
+                    let (n, t_entry) = stack[pending];
+                    if t_entry <= t_max {
+                        break n as usize;
+                    }
+                },
             };
         }
     }

@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use crate::error::{Error, Result, finite3};
 use crate::ray::Ray;
-use crate::shapes::{Crossings, Hit, in_open_range};
+use crate::shapes::{Crossings, Hit, PreparedRay, in_open_range};
 
 /// The box of points with `min <= p <= max` on every axis (a closed set).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -49,6 +49,13 @@ impl Aabb {
             }
         }
         Ok(Aabb { min, max })
+    }
+
+    /// The box from corners the caller has already checked (finite, `min <= max`),
+    /// such as a BVH node's, which are unions of checked boxes.
+    pub(crate) fn from_checked(min: Vec3, max: Vec3) -> Aabb {
+        debug_assert!(min.is_finite() && max.is_finite() && min.cmple(max).all());
+        Aabb { min, max }
     }
 
     /// The corner with the smallest coordinates.
@@ -121,7 +128,7 @@ impl Aabb {
     /// leaves the interval alone, and that axis, on which the ray sits on the closed
     /// box, constrains nothing.
     pub fn slab(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
-        let s = self.span(ray, t_min, t_max, 1.0)?;
+        let s = self.span(ray.origin(), ray.direction().recip(), t_min, t_max, 1.0)?;
         Some((s.t0, s.t1))
     }
     // ANCHOR_END: slab
@@ -133,15 +140,29 @@ impl Aabb {
     /// cannot make the box miss a point that lies on it, such as a vertex of a
     /// triangle it bounds (STABILITY S6).
     pub fn slab_conservative(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
-        let s = self.span(ray, t_min, t_max, 1.0 + 2.0 * gamma(3))?;
-        Some((s.t0, s.t1))
+        self.slab_conservative_prepared(&PreparedRay::new(ray), t_min, t_max)
     }
     // ANCHOR_END: slab_conservative
 
+    /// [`Aabb::slab_conservative`] with the ray's 1/d computed once per ray, not
+    /// once per box.
+    #[inline]
+    pub fn slab_conservative_prepared(
+        &self,
+        ray: &PreparedRay,
+        t_min: f32,
+        t_max: f32,
+    ) -> Option<(f32, f32)> {
+        let o = ray.ray().origin();
+        let s = self.span(o, ray.inv_d, t_min, t_max, 1.0 + 2.0 * gamma(3))?;
+        Some((s.t0, s.t1))
+    }
+
     // ANCHOR: span
-    /// The slab loop shared by both tests; `widen` scales each axis' t_far.
-    fn span(&self, ray: &Ray, t_min: f32, t_max: f32, widen: f32) -> Option<Span> {
-        let (o, d) = (ray.origin(), ray.direction());
+    /// The slab loop shared by both tests, for a ray from `o` with 1/d = `inv_d`;
+    /// `widen` scales each axis' t_far.
+    #[inline]
+    fn span(&self, o: Vec3, inv_d: Vec3, t_min: f32, t_max: f32, widen: f32) -> Option<Span> {
         let mut s = Span {
             t0: t_min,
             axis0: 0,
@@ -149,9 +170,8 @@ impl Aabb {
             axis1: 0,
         };
         for i in 0..3 {
-            let inv = 1.0 / d[i];
-            let mut t_near = (self.min[i] - o[i]) * inv;
-            let mut t_far = (self.max[i] - o[i]) * inv;
+            let mut t_near = (self.min[i] - o[i]) * inv_d[i];
+            let mut t_far = (self.max[i] - o[i]) * inv_d[i];
             if t_near > t_far {
                 std::mem::swap(&mut t_near, &mut t_far);
             }
@@ -172,29 +192,46 @@ impl Aabb {
 
     // ANCHOR: box_hit
     /// The nearest crossing of the box surface with `t_min < t < t_max`: the entry,
-    /// or the exit for a ray starting inside.
-    ///
-    /// The normal is the outward normal of the face crossed (the axis whose slab set
-    /// that end of the interval), and the point is snapped onto that face.
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let s = self.span(ray, f32::NEG_INFINITY, f32::INFINITY, 1.0)?;
-        let d = ray.direction();
-        let (t, axis, outward_sign) = if in_open_range(s.t0, t_min, t_max) {
-            (s.t0, s.axis0, -d[s.axis0].signum())
+    /// or the exit for a ray starting inside; as `(t, axis, outward sign)`, the axis
+    /// whose slab set that end of the interval and the sign of the face's outward
+    /// normal along it.
+    #[inline]
+    pub fn nearest_face(
+        &self,
+        ray: &PreparedRay,
+        t_min: f32,
+        t_max: f32,
+    ) -> Option<(f32, usize, f32)> {
+        let (o, d) = (ray.ray().origin(), ray.ray().direction());
+        let s = self.span(o, ray.inv_d, f32::NEG_INFINITY, f32::INFINITY, 1.0)?;
+        if in_open_range(s.t0, t_min, t_max) {
+            Some((s.t0, s.axis0, -d[s.axis0].signum()))
         } else if in_open_range(s.t1, t_min, t_max) {
-            (s.t1, s.axis1, d[s.axis1].signum())
+            Some((s.t1, s.axis1, d[s.axis1].signum()))
         } else {
-            return None;
-        };
+            None
+        }
+    }
+
+    /// The hit record at `t` on the face of `axis` with outward sign `outward`: that
+    /// normal, and the point snapped onto the face.
+    pub fn hit_at(&self, ray: &Ray, t: f32, axis: usize, outward: f32) -> Hit {
         let mut normal = Vec3::ZERO;
-        normal[axis] = outward_sign;
+        normal[axis] = outward;
         let mut point = ray.at(t);
-        point[axis] = if outward_sign > 0.0 {
+        point[axis] = if outward > 0.0 {
             self.max[axis]
         } else {
             self.min[axis]
         };
-        Some(Hit::new(ray, t, point, normal))
+        Hit::new(ray, t, point, normal)
+    }
+
+    /// The nearest crossing of the box surface with `t_min < t < t_max`:
+    /// [`Aabb::nearest_face`], then [`Aabb::hit_at`].
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let (t, axis, outward) = self.nearest_face(&PreparedRay::new(ray), t_min, t_max)?;
+        Some(self.hit_at(ray, t, axis, outward))
     }
     // ANCHOR_END: box_hit
 
@@ -202,7 +239,8 @@ impl Aabb {
     /// slab interval [t0, t1] over the whole line (equal where the ray touches an edge
     /// or a corner).
     pub fn crossings(&self, ray: &Ray) -> Crossings {
-        self.span(ray, f32::NEG_INFINITY, f32::INFINITY, 1.0)
+        let (o, inv_d) = (ray.origin(), ray.direction().recip());
+        self.span(o, inv_d, f32::NEG_INFINITY, f32::INFINITY, 1.0)
             .map_or(Crossings::NONE, |s| Crossings::two(s.t0, s.t1))
     }
 

@@ -13,6 +13,7 @@ use crate::ray::Ray;
 pub mod aabb;
 pub mod instance;
 pub mod plane;
+pub mod prepared;
 pub mod quad;
 pub mod quadric;
 pub mod sphere;
@@ -21,6 +22,7 @@ pub mod triangle;
 pub use aabb::Aabb;
 pub use instance::Instance;
 pub use plane::Plane;
+pub use prepared::PreparedRay;
 pub use quad::Quad;
 pub use quadric::Quadric;
 pub use sphere::Sphere;
@@ -63,6 +65,41 @@ impl Hit {
         }
     }
     // ANCHOR_END: facing
+}
+
+// ANCHOR: candidate
+/// What one primitive's test tells the closest-hit loop: the distance `t` and the
+/// little the winner needs later to build its [`Hit`]. The point, the normal and
+/// the face are computed once, for the closest hit, not for every closer candidate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Candidate {
+    /// The ray parameter of the crossing.
+    pub t: f32,
+    detail: Detail,
+}
+
+/// What a shape needs, besides `t`, to build its hit record.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Detail {
+    /// Nothing: the point is o + t d (sphere, plane, quad, quadric).
+    OnRay,
+    /// The barycentric coordinates (b0, b1, b2) of a triangle's point.
+    Barycentric([f32; 3]),
+    /// A box's face: the axis and the sign of its outward normal.
+    Face { axis: usize, outward: f32 },
+    /// An instance: its test is run again, over the same range, for the winner
+    /// only (instances are rare; this keeps the candidate small).
+    Instance { t_min: f32, t_max: f32 },
+}
+// ANCHOR_END: candidate
+
+impl Candidate {
+    fn on_ray(t: f32) -> Candidate {
+        Candidate {
+            t,
+            detail: Detail::OnRay,
+        }
+    }
 }
 
 // ANCHOR: crossings
@@ -147,6 +184,13 @@ impl From<quadric::Roots> for Crossings {
     }
 }
 
+/// A hit record at `t` from the point on the ray and the shape's `normal_at`: what
+/// [`Shape::record`] answers for a candidate it cannot have made, to stay total.
+fn fallback(shape: &Shape, ray: &Ray, t: f32) -> Hit {
+    let point = ray.at(t);
+    Hit::new(ray, t, point, shape.normal_at(point))
+}
+
 /// `t_min < t < t_max`, and `false` for NaN.
 pub(crate) fn in_open_range(t: f32, t_min: f32, t_max: f32) -> bool {
     t > t_min && t < t_max
@@ -167,16 +211,64 @@ pub enum Shape {
 }
 
 impl Shape {
-    /// The nearest crossing of `ray` with `t_min < t < t_max`, if any.
+    /// The nearest crossing of `ray` with `t_min < t < t_max`, if any: the
+    /// [`Shape::candidate`] test, then [`Shape::record`].
     pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let prepared = PreparedRay::new(ray);
+        let candidate = self.candidate(&prepared, t_min, t_max)?;
+        Some(self.record(&prepared, candidate))
+    }
+
+    // ANCHOR: shape_candidate
+    /// The nearest crossing with `t_min < t < t_max` as a [`Candidate`]: `t` and
+    /// what the hit record needs, nothing more. The closest-hit loop calls this for
+    /// every primitive, and [`Shape::record`] once, for the winner.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<Candidate> {
         match self {
-            Shape::Sphere(s) => s.hit(ray, t_min, t_max),
-            Shape::Plane(p) => p.hit(ray, t_min, t_max),
-            Shape::Aabb(b) => b.hit(ray, t_min, t_max),
-            Shape::Triangle(tri) => tri.hit(ray, t_min, t_max),
-            Shape::Quadric(q) => q.hit(ray, t_min, t_max),
-            Shape::Quad(q) => q.hit(ray, t_min, t_max),
-            Shape::Instance(i) => i.hit(ray, t_min, t_max),
+            Shape::Sphere(s) => s.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
+            Shape::Plane(p) => p.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
+            Shape::Quad(q) => q.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
+            Shape::Quadric(q) => q.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
+            Shape::Triangle(tri) => {
+                let (t, b0, b1, b2) = tri.watertight_prepared(ray, t_min, t_max)?;
+                Some(Candidate {
+                    t,
+                    detail: Detail::Barycentric([b0, b1, b2]),
+                })
+            }
+            Shape::Aabb(b) => {
+                let (t, axis, outward) = b.nearest_face(ray, t_min, t_max)?;
+                Some(Candidate {
+                    t,
+                    detail: Detail::Face { axis, outward },
+                })
+            }
+            Shape::Instance(i) => i.hit(ray.ray(), t_min, t_max).map(|hit| Candidate {
+                t: hit.t,
+                detail: Detail::Instance { t_min, t_max },
+            }),
+        }
+    }
+    // ANCHOR_END: shape_candidate
+
+    /// The hit record of a `candidate` this shape's [`Shape::candidate`] returned for
+    /// `ray`: the point, the outward normal and the side.
+    #[inline]
+    pub fn record(&self, ray: &PreparedRay, candidate: Candidate) -> Hit {
+        let (ray, t) = (ray.ray(), candidate.t);
+        match (self, candidate.detail) {
+            (Shape::Instance(i), Detail::Instance { t_min, t_max }) => i
+                .hit(ray, t_min, t_max)
+                .unwrap_or_else(|| fallback(self, ray, t)),
+            (Shape::Triangle(tri), Detail::Barycentric(b)) => tri.hit_at(ray, t, b),
+            (Shape::Aabb(b), Detail::Face { axis, outward }) => b.hit_at(ray, t, axis, outward),
+            (Shape::Sphere(s), _) => s.hit_at(ray, t),
+            (Shape::Plane(p), _) => p.hit_at(ray, t),
+            (Shape::Quad(q), _) => q.hit_at(ray, t),
+            (Shape::Quadric(q), _) => q.hit_at(ray, t),
+            // A candidate that another shape made (the crate never pairs them).
+            (shape, _) => fallback(shape, ray, t),
         }
     }
 

@@ -40,6 +40,7 @@ impl Plane {
     ///
     /// `None` for a ray parallel to the plane (d . n = 0), and when the quotient
     /// overflows (d . n tiny): never NaN, never infinite.
+    #[inline]
     pub fn t(&self, ray: &Ray) -> Option<f32> {
         let denom = ray.direction().dot(self.normal);
         if denom == 0.0 {
@@ -51,10 +52,21 @@ impl Plane {
     // ANCHOR_END: plane_t
 
     // ANCHOR: plane_hit
+    /// [`Plane::t`] if it lies in `t_min < t < t_max`.
+    #[inline]
+    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+        self.t(ray).filter(|&t| in_open_range(t, t_min, t_max))
+    }
+
+    /// The hit record at `t`: the point o + t d, the plane's normal.
+    pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
+        Hit::new(ray, t, ray.at(t), self.normal)
+    }
+
     /// The crossing with `t_min < t < t_max`, if any.
     pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let t = self.t(ray).filter(|&t| in_open_range(t, t_min, t_max))?;
-        Some(Hit::new(ray, t, ray.at(t), self.normal))
+        let t = self.nearest(ray, t_min, t_max)?;
+        Some(self.hit_at(ray, t))
     }
     // ANCHOR_END: plane_hit
 

@@ -69,10 +69,11 @@ impl Quad {
     }
 
     // ANCHOR: quad_hit
-    /// The crossing with `t_min < t < t_max`, if any: the plane through q first, then
-    /// the hit's coordinates (u, v) in the edges, from the dual vectors
+    /// The crossing's `t` with `t_min < t < t_max`, if any: the plane through q
+    /// first, then the hit's coordinates (u, v) in the edges, from the dual vectors
     /// w = n / |a x b| with u = w . (p' x b) and v = w . (a x p'), p' = p - q.
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+    #[inline]
+    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
         let denom = ray.direction().dot(self.normal);
         if denom == 0.0 {
             return None;
@@ -81,13 +82,23 @@ impl Quad {
         if !in_open_range(t, t_min, t_max) {
             return None;
         }
-        let point = ray.at(t);
-        let rel = point - self.corner;
+        let rel = ray.at(t) - self.corner;
         let w = self.normal / self.area;
         let u = w.dot(rel.cross(self.b));
         let v = w.dot(self.a.cross(rel));
         let inside = (0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v);
-        inside.then(|| Hit::new(ray, t, point, self.normal))
+        inside.then_some(t)
+    }
+
+    /// The hit record at `t`: the point o + t d, the quad's normal.
+    pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
+        Hit::new(ray, t, ray.at(t), self.normal)
+    }
+
+    /// The crossing with `t_min < t < t_max`, if any.
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let t = self.nearest(ray, t_min, t_max)?;
+        Some(self.hit_at(ray, t))
     }
     // ANCHOR_END: quad_hit
 

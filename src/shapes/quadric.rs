@@ -265,10 +265,20 @@ impl Quadric {
     /// where x^T Q x > 0 (outward for the named constructors). Where the gradient
     /// vanishes (a cone's apex) there is no normal; `-d` stands in for it.
     pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let t = self.roots_stable(ray).first_in(t_min, t_max)?;
+        let t = self.nearest(ray, t_min, t_max)?;
+        Some(self.hit_at(ray, t))
+    }
+
+    /// The smallest root with `t_min < t < t_max`, by [`Quadric::roots_stable`].
+    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+        self.roots_stable(ray).first_in(t_min, t_max)
+    }
+
+    /// The hit record at `t`: the point o + t d and the normalised gradient there.
+    pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
         let point = ray.at(t);
         let normal = self.gradient(point).normalize_or(-ray.direction());
-        Some(Hit::new(ray, t, point, normal))
+        Hit::new(ray, t, point, normal)
     }
     // ANCHOR_END: quadric_hit
 

@@ -77,6 +77,7 @@ impl Sphere {
     /// b^2 - 4ac = 4a (r^2 - |l|^2); for a unit d this is 4 (r^2 - |f - (f.d) d|^2).
     /// Roots (Numerical Recipes 5.6): q = -(b + sign(b) sqrt(disc)) / 2 with
     /// sign(0) = +1, then t = c/q and q/a; no root subtracts nearly equal numbers.
+    #[inline]
     pub fn roots_stable(&self, ray: &Ray) -> Option<(f32, f32)> {
         let f = ray.origin() - self.centre;
         let d = ray.direction();
@@ -100,15 +101,30 @@ impl Sphere {
     // ANCHOR_END: roots_stable
 
     // ANCHOR: sphere_hit
-    /// The nearest crossing with `t_min < t < t_max`, using [`Sphere::roots_stable`].
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+    /// The nearest root with `t_min < t < t_max`, by [`Sphere::roots_stable`]: all
+    /// that the closest-hit loop asks of a sphere.
+    #[inline]
+    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
         let (t0, t1) = self.roots_stable(ray)?;
-        let t = [t0, t1]
-            .into_iter()
-            .find(|&t| in_open_range(t, t_min, t_max))?;
+        if in_open_range(t0, t_min, t_max) {
+            Some(t0)
+        } else {
+            in_open_range(t1, t_min, t_max).then_some(t1)
+        }
+    }
+
+    /// The hit record at `t`: the point o + t d and the outward normal (p - c) / r.
+    pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
         let point = ray.at(t);
         let normal = ((point - self.centre) / self.radius).normalize_or(-ray.direction());
-        Some(Hit::new(ray, t, point, normal))
+        Hit::new(ray, t, point, normal)
+    }
+
+    /// The nearest crossing with `t_min < t < t_max`: [`Sphere::nearest`], then
+    /// [`Sphere::hit_at`].
+    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let t = self.nearest(ray, t_min, t_max)?;
+        Some(self.hit_at(ray, t))
     }
     // ANCHOR_END: sphere_hit
 

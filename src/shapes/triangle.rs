@@ -5,7 +5,7 @@ use glam::{DVec3, Vec3};
 
 use crate::error::{Error, Result, finite3};
 use crate::ray::Ray;
-use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit, PreparedRay, in_open_range};
 
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
 /// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
@@ -61,8 +61,9 @@ impl Triangle {
 
     // ANCHOR: moller_trumbore
     /// Moller and Trumbore (JGT 1997): solve o + t d = (1 - b1 - b2) v0 + b1 v1 + b2 v2
-    /// by Cramer's rule. With e1 = v1 - v0, e2 = v2 - v0, p = d x e2, s = o - v0 and
-    /// q = s x e1: det = e1 . p, b1 = s . p / det, b2 = d . q / det, t = e2 . q / det.
+    /// by Cramer's rule. With e1 = v1 - v0, e2 = v2 - v0, p = d x e2, T = o - v0 and
+    /// q = T x e1: det = e1 . p, b1 = T . p / det, b2 = d . q / det, t = e2 . q / det
+    /// (the paper's names: `tvec` is T).
     ///
     /// Returns `(t, b1, b2)` for a hit with `t_min < t < t_max`. Fast, but b1 and b2
     /// of two triangles sharing an edge are rounded separately, so a ray aimed exactly
@@ -76,12 +77,12 @@ impl Triangle {
             return None; // the ray is parallel to the plane
         }
         let inv = 1.0 / det;
-        let s = o - self.v0;
-        let b1 = s.dot(p) * inv;
+        let tvec = o - self.v0;
+        let b1 = tvec.dot(p) * inv;
         if !(0.0..=1.0).contains(&b1) {
             return None; // also catches NaN
         }
-        let q = s.cross(e1);
+        let q = tvec.cross(e1);
         let b2 = d.dot(q) * inv;
         if !(b2 >= 0.0 && b1 + b2 <= 1.0) {
             return None;
@@ -91,12 +92,18 @@ impl Triangle {
     }
     // ANCHOR_END: moller_trumbore
 
+    /// [`Triangle::watertight_prepared`] for a single ray: prepares it first.
+    pub fn watertight(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32, f32, f32)> {
+        self.watertight_prepared(&PreparedRay::new(ray), t_min, t_max)
+    }
+
     // ANCHOR: watertight
     /// The watertight test of Woop, Benthin and Wald (JCGT 2013), as in pbrt-v3/v4.
     ///
     /// Translate the vertices so the ray starts at the origin, permute the axes so the
     /// largest component of d is z, and shear so d becomes (0, 0, 1): the ray is now
-    /// the z axis and the test is 2-D. The edge functions
+    /// the z axis and the test is 2-D. The permutation and the shear depend on the ray
+    /// alone, so [`PreparedRay`] computes them once per ray. The edge functions
     /// e0 = p1.x p2.y - p1.y p2.x (and cyclically) are the same numbers, bit for bit,
     /// for the two triangles sharing an edge, so no ray slips between them; when one
     /// is exactly 0 it is recomputed in f64 so that its sign is right. A hit needs all
@@ -104,13 +111,15 @@ impl Triangle {
     /// sheared z.
     ///
     /// Returns `(t, b0, b1, b2)` for a hit with `t_min < t < t_max`.
-    pub fn watertight(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32, f32, f32)> {
-        let (o, d) = (ray.origin(), ray.direction());
-        let (kx, ky, kz) = permutation(d);
-        let d = permute(d, kx, ky, kz);
-        let shear = Vec3::new(-d.x / d.z, -d.y / d.z, 1.0 / d.z);
-        let [p0, p1, p2] =
-            [self.v0, self.v1, self.v2].map(|v| sheared(permute(v - o, kx, ky, kz), shear));
+    #[inline]
+    pub fn watertight_prepared(
+        &self,
+        ray: &PreparedRay,
+        t_min: f32,
+        t_max: f32,
+    ) -> Option<(f32, f32, f32, f32)> {
+        let (o, shear) = (ray.ray().origin(), ray.shear);
+        let [p0, p1, p2] = [self.v0, self.v1, self.v2].map(|v| sheared(ray.permute(v - o), shear));
         let mut e = [edge(p1, p2), edge(p2, p0), edge(p0, p1)];
         if e.contains(&0.0) {
             e = [edge_f64(p1, p2), edge_f64(p2, p0), edge_f64(p0, p1)];
@@ -123,6 +132,9 @@ impl Triangle {
         }
         let z = [p0.z, p1.z, p2.z].map(|z| z * shear.z);
         let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
+        if surely_outside(t_scaled, det, t_min, t_max) {
+            return None; // before the division, which most rejected candidates skip
+        }
         let inv = 1.0 / det;
         let (t, b) = (t_scaled * inv, e.map(|x| x * inv));
         let finite = b.iter().all(|x| x.is_finite());
@@ -131,14 +143,20 @@ impl Triangle {
     // ANCHOR_END: watertight
 
     // ANCHOR: triangle_hit
-    /// The crossing with `t_min < t < t_max`, by [`Triangle::watertight`].
+    /// The hit record at `t` with barycentric coordinates `b` (from
+    /// [`Triangle::watertight`]).
     ///
     /// The point is b0 v0 + b1 v1 + b2 v2, not o + t d: far from the origin the
     /// barycentric point stays on the triangle's plane, o + t d does not (STABILITY S7).
+    pub fn hit_at(&self, ray: &Ray, t: f32, b: [f32; 3]) -> Hit {
+        let point = b[0] * self.v0 + b[1] * self.v1 + b[2] * self.v2;
+        Hit::new(ray, t, point, self.normal())
+    }
+
+    /// The crossing with `t_min < t < t_max`, by [`Triangle::watertight`].
     pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
         let (t, b0, b1, b2) = self.watertight(ray, t_min, t_max)?;
-        let point = b0 * self.v0 + b1 * self.v1 + b2 * self.v2;
-        Some(Hit::new(ray, t, point, self.normal()))
+        Some(self.hit_at(ray, t, [b0, b1, b2]))
     }
     // ANCHOR_END: triangle_hit
 
@@ -158,17 +176,18 @@ impl Triangle {
     }
 }
 
-/// The axis indices (kx, ky, kz) with kz the largest |d| component, kx and ky the next
-/// two cyclically (which keeps the handedness, so the sign of det is kept too).
-fn permutation(d: Vec3) -> (usize, usize, usize) {
-    let kz = d.abs().max_position();
-    let kx = (kz + 1) % 3;
-    (kx, (kx + 1) % 3, kz)
-}
-
-/// (v[kx], v[ky], v[kz]).
-fn permute(v: Vec3, kx: usize, ky: usize, kz: usize) -> Vec3 {
-    Vec3::new(v[kx], v[ky], v[kz])
+/// True if t = `t_scaled` / `det` certainly lies outside `t_min < t < t_max`, decided
+/// without dividing (pbrt-v4 does the same): behind the origin when `t_min >= 0`
+/// and the signs differ, or beyond `t_max` with a margin of 8 ulps, far more than
+/// the rounding of the quotient and of `t_max |det|`. A NaN decides nothing.
+fn surely_outside(t_scaled: f32, det: f32, t_min: f32, t_max: f32) -> bool {
+    const MARGIN: f32 = 1.0 + 8.0 * f32::EPSILON;
+    let (t_abs, det_abs) = if det < 0.0 {
+        (-t_scaled, -det)
+    } else {
+        (t_scaled, det)
+    };
+    (t_min >= 0.0 && t_abs <= 0.0) || t_abs > t_max * det_abs * MARGIN
 }
 
 /// The shear that takes the permuted direction to the z axis: x += s_x z, y += s_y z;

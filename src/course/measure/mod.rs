@@ -3,8 +3,10 @@
 //! student should read off it. Times are measured here, in the lesson, never in a
 //! test: the tests check only what physics and numerics say must hold.
 
+pub mod machine;
 pub mod monte_carlo;
 pub mod offsets;
+pub mod plain;
 pub mod precision;
 pub mod renderers;
 pub mod scaling;

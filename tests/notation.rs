@@ -311,6 +311,8 @@ fn the_notation_table_lists_each_symbol_once() {
     }
     let intro = flat(&chapter("intro.md"));
     assert!(intro.contains("| $\\beta$ | the path throughput"));
+    assert!(intro.contains("**every index starts at 0**"));
+    assert!(intro.contains("from $q_{00}$ to $q_{33}$ (lesson 07's quadrics)"));
     assert!(
         intro.contains(
             "the power heuristic's exponent has no letter: it is written as the number 2"
@@ -550,6 +552,13 @@ fn chapters_03_to_06_say_what_their_table_headers_said() {
         "05_arbitrary_ortho_camera.md",
         "The example's camera stands at $\\mathbf{p} = (6, 0, 6)$ and looks along \
          $\\mathbf{d} = (-1, 0, -1)$, towards the origin, with $\\mathbf{k} = (0, 1, 0)$",
+    );
+    // The top view's caption: the vertical axis is -z, so p (z = +6) sits at tick -6.
+    assert_says(
+        "05_arbitrary_ortho_camera.md",
+        "its vertical axis is $-z$ (up the page is the way lesson 03's camera looks), so a tick \
+         marked $-6$ means $z = +6$: the camera position $\\mathbf{p} = (6, 0, 6)$ sits at $x = 6$, \
+         tick $-6$",
     );
     assert_eq!(cell(&placed, "(0, 0)", 2), "(1.757, 4.000, 10.243)");
     assert_says("05_arbitrary_ortho_camera.md", "= (1.757, 4, 10.243)");

@@ -1343,6 +1343,69 @@ fn after(snap: &str, before: &str) -> f64 {
     rest[..end].parse().unwrap()
 }
 
+/// The numbers of one row of lesson 07's table (snapshot `07_intersections__numbers`):
+/// the crossings, the hit point and the outward normal.
+fn lesson_07_row(shape: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let snap = std::fs::read_to_string("tests/snapshots/07_intersections__numbers.snap").unwrap();
+    let line = snap
+        .lines()
+        .find(|l| l.split_whitespace().next() == Some(shape))
+        .unwrap_or_else(|| panic!("no row {shape}"));
+    let numbers = |s: &str| -> Vec<f64> {
+        s.split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|x| !x.is_empty())
+            .map(|x| x.parse().unwrap())
+            .collect()
+    };
+    // Origin, direction, crossings (not in brackets), hit point, normal.
+    let tuples: Vec<&str> = line
+        .split('(')
+        .skip(1)
+        .map(|s| &s[..s.find(')').unwrap()])
+        .collect();
+    let after_direction = line.split(')').nth(2).unwrap();
+    let crossings = &after_direction[..after_direction.find('(').unwrap()];
+    (numbers(crossings), numbers(tuples[2]), numbers(tuples[3]))
+}
+
+#[test]
+fn lesson_07_pages_quote_the_intersections_snapshot() {
+    let (sphere, _, _) = lesson_07_row("sphere");
+    let page = "07_intersections.md";
+    assert_quotes(page, "2.134$ and $t = 3.866$. Two", sphere[0]);
+    assert_quotes(page, "3.866$. Two crossings", sphere[1]);
+    assert_quotes(page, "2.134$ and $3.866$ above", sphere[0]);
+    assert_quotes(page, "3.866$ above", sphere[1]);
+    let (plane, hit, normal) = lesson_07_row("plane");
+    assert_quotes(page, r"4.2426$, the box's", plane[0]);
+    let (boxed, _, _) = lesson_07_row("box");
+    assert_quotes(page, "2.236, 3.354]", boxed[0]);
+    assert_quotes(page, "3.354]$", boxed[1]);
+    let (triangle, _, _) = lesson_07_row("triangle");
+    assert_quotes(page, "3.015$, the paraboloid's", triangle[0]);
+    let page = "07_2_plane.md";
+    assert_quotes(page, r"4.2426$, at the point", plane[0]);
+    assert_quotes(page, "4.243$; the normal", plane[0]);
+    assert_quotes(page, "4.243, with the normal", plane[0]);
+    assert_quotes(page, "4.2426$ and the hit point", plane[0]);
+    assert_eq!(hit, [1.0, -1.0, 0.0], "the page's (1, -1, 0)");
+    assert_quotes(page, "-0.4472, -0.8944, 0)$", -normal[0]);
+    assert_quotes(page, "-0.8944, 0)$", -normal[1]);
+    let (paraboloid, hit, normal) = lesson_07_row("paraboloid");
+    let page = "07_5_quadrics.md";
+    assert_quotes(page, "0.5402$ and $3.7025$", paraboloid[0]);
+    assert_quotes(page, "3.7025$. The first", paraboloid[1]);
+    assert_quotes(page, "-1.618, 0, 2.618)$", hit[0]);
+    assert_quotes(page, "2.618)$,", hit[2]);
+    assert_quotes(page, "-0.9554, 0, -0.2952)$", normal[0]);
+    assert_quotes(page, "-0.2952)$: the", normal[2]);
+    // The figure's label has 3 decimals, the table 4: round the exact root, which the
+    // table agrees with, rather than the table's rounding of it.
+    let exact = (3.0 + 5.0f64.sqrt()) / 2.0f64.sqrt();
+    assert!((exact - paraboloid[1]).abs() < 1e-4);
+    assert_quotes(page, "3.702; the normal", exact);
+}
+
 #[test]
 fn the_page_helpers_read_numbers_as_printed() {
     assert_eq!(first_number("is **−0.487** for"), "−0.487");

@@ -74,6 +74,20 @@ fn numbers() {
     insta::assert_snapshot!("numbers", lesson::numbers(args.scene, &study, &renders));
 }
 
+/// The default run's tables, which the chapter includes: `cargo run --release
+/// --example 10_path_tracing` prints the same. Too slow for every `cargo test`; run
+/// `cargo test --release --test 10_path_tracing -- --ignored` after changing the
+/// estimator. `the_pages_quote_the_default_run_snapshot` keeps the pages in step with
+/// the snapshot on every run.
+#[test]
+#[ignore = "the default 160 x 120 run with a 512-sample reference; run with --release -- --ignored"]
+fn default_run_numbers() {
+    let args = lesson::Args::parse_from(["10_path_tracing", "--out", "target/test-out/10"]);
+    let (study, renders) = render(&args).unwrap();
+    assert_eq!(renders.non_finite, 0);
+    insta::assert_snapshot!("default_run", lesson::numbers(args.scene, &study, &renders));
+}
+
 #[test]
 fn the_lesson_refuses_bad_flags_naming_them() {
     let cases: [(&[&str], &str); 12] = [
@@ -1431,6 +1445,46 @@ fn the_chapter_quotes_the_numbers_snapshot() {
     assert_quotes(page, "= 0.773$", at_1 * 1.118);
     assert_quotes(page, "close to the 0.7567 in the table", at_16);
     assert_quotes(page, "reference's 0.334", after(&snap, "reference mean "));
+}
+
+#[test]
+fn the_pages_quote_the_default_run_snapshot() {
+    let snap = snapshot("default_run");
+    let rmse = |label: &str| cell(&snap, label, 0);
+    let (uniform, cosine) = (rmse("uniform hemisphere"), rmse("cosine"));
+    let (nee, mis) = (rmse("next event"), rmse("MIS"));
+    assert_eq!(rmse("64"), mis, "the ladder's top is the MIS render");
+    let gain = |worse: f64, better: f64| (worse / better).powi(2);
+    let page = "10_path_tracing.md";
+    assert_quotes(page, "(0.21993/0.17371)^2", uniform);
+    assert_quotes(page, "0.17371)^2 \\approx 1.6$", cosine);
+    assert_quotes(page, "1.6$ times fewer", gain(uniform, cosine));
+    assert_quotes(page, "(0.17371/0.09154)^2", cosine);
+    assert_quotes(page, "0.09154)^2 \\approx 3.6$", nee);
+    assert_quotes(page, "3.6$ times fewer", gain(cosine, nee));
+    assert_quotes(page, "1.5.\n", gain(nee, mis));
+    assert_quotes(page, "0.07578 at 64 samples", mis);
+    assert_quotes(page, "64\\cdot(0.07578/0.01)^2", 64.0);
+    assert_quotes(page, "0.07578/0.01)^2 \\approx 64", mis);
+    assert_quotes(page, "57.4", (mis / 0.01).powi(2));
+    assert!(
+        (64.0 * (mis / 0.01).powi(2) - 3700.0).abs() < 50.0,
+        "about 3700"
+    );
+    assert_quotes(page, "0.07578\\cdot\\sqrt{64/512} \\approx 0.027", mis);
+    assert_quotes(page, "0.027$", mis * (64.0f64 / 512.0).sqrt());
+    let page = "10_3_cosine.md";
+    assert_quotes(page, "0.21993 (uniform)", uniform);
+    assert_quotes(page, "0.17371 (cosine): $1.6", cosine);
+    assert_quotes(page, "1.6$ times fewer", gain(uniform, cosine));
+    let page = "10_5_next_event.md";
+    assert_quotes(page, "0.17371 (cosine) to", cosine);
+    assert_quotes(page, "0.09154: $3.6", nee);
+    assert_quotes(page, "3.6$ times fewer", gain(cosine, nee));
+    let page = "10_6_mis.md";
+    assert_quotes(page, "0.09154 (NEE) to", nee);
+    assert_quotes(page, "0.07578, $1.5", mis);
+    assert_quotes(page, "1.5$ times", gain(nee, mis));
 }
 
 #[test]

@@ -510,6 +510,62 @@ fn s19_for_a_quad_light_every_estimator_is_unbiased() {
     }
 }
 
+/// Step 6's table: the standard deviation of one sample of direct light (depth 1) at
+/// the floor point under each light's centre of the two-light scene, 100 000 samples
+/// per estimator, as a Markdown table the page includes.
+#[test]
+fn two_lights_direct_light_sigmas() {
+    let (scene, _) = two_lights(8, 6).unwrap();
+    let estimators = [
+        ("cosine", Sampling::Cosine, SphereSampling::Area),
+        ("light area", Sampling::NextEvent, SphereSampling::Area),
+        ("MIS (area)", Sampling::Mis, SphereSampling::Area),
+        ("light cone", Sampling::NextEvent, SphereSampling::Cone),
+        ("MIS (cone)", Sampling::Mis, SphereSampling::Cone),
+    ];
+    let mut table = String::from(
+        "| estimator | $\\sigma$ under the small light | $\\sigma$ under the large light |\n\
+         |-----------|-----------:|----------:|\n",
+    );
+    let mut sigma = Vec::new();
+    for (label, sampling, sphere_lights) in estimators {
+        let s = Settings {
+            sphere_lights,
+            ..settings(sampling, Some(1), false)
+        };
+        let mut row = [0.0; 2];
+        for (k, x) in [-1.5f32, 1.5].into_iter().enumerate() {
+            let ray = Ray::new(Vec3::new(x, 0.01, 0.0), -Vec3::Y).unwrap();
+            let mut rng = Rng::for_pixel(7, 0, 0);
+            let n = 100_000;
+            let (mean, sd) = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
+            row[k] = sd;
+            eprintln!("two lights, x = {x}, {label}: mean {mean:.4} sigma {sd:.3}");
+        }
+        table += &format!("| {label} | {:.2} | {:.2} |\n", row[0], row[1]);
+        sigma.push(row);
+    }
+    insta::assert_snapshot!("two_lights_sigmas", table);
+    // The page compares MIS (area) with its two parts under the large light.
+    assert!(
+        sigma[2][1] < sigma[0][1].min(sigma[1][1]) / 3.0,
+        "{sigma:?}"
+    );
+    // It also names the other measurement of cosine sampling that the listing's
+    // comment quotes.
+    let listing = std::fs::read_to_string("src/pathtrace/scenes.rs").unwrap();
+    let page = page("10_6_mis.md");
+    for (src, book) in [
+        ("cosine sampling gives 9.9", "9.9 and"),
+        ("cosine 1.69", "and 1.69"),
+    ] {
+        assert!(
+            !page.contains(book) || listing.contains(src),
+            "10_6_mis.md quotes the listing's {src:?}, which changed"
+        );
+    }
+}
+
 #[test]
 fn strategies_agree_on_the_two_light_scene_with_indirect_light() {
     let (scene, camera) = two_lights(8, 6).unwrap();

@@ -2,7 +2,8 @@
 //! (a shape placed by a lesson-01 transform).
 //!
 //! Expected values are worked out by hand in the comments, or in f64 from the same f32
-//! inputs; the measured S9 numbers are printed with `eprintln!` (run with
+//! inputs; the measured S9 numbers are the snapshot `s9_table` (the page includes it) and
+//! are printed with `eprintln!` (run with
 //! `cargo test --test 07_quadrics -- --nocapture` to see them).
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
@@ -49,6 +50,23 @@ fn p64(v: Vec3) -> DVec3 {
     v.as_dvec3()
 }
 
+/// A number as the pages print it in math: `$3.2\cdot 10^{-7}$`.
+fn sci(x: f64) -> String {
+    let s = format!("{x:.1e}");
+    let (mantissa, exponent) = s.split_once('e').unwrap();
+    format!("${mantissa}\\cdot 10^{{{exponent}}}$")
+}
+
+/// Panics unless the page `name` contains `phrase`: a measured number the page quotes,
+/// formatted from this file's measurement.
+fn assert_page_says(name: &str, phrase: &str) {
+    let text = std::fs::read_to_string(format!("chapters/{name}")).unwrap();
+    assert!(
+        text.contains(phrase),
+        "chapters/{name} no longer says {phrase:?}: the measurement changed, or the text"
+    );
+}
+
 // ---------------------------------------------------------------- S9
 
 /// The S9 ray: from (0.3, 0.2, 5) along -Z tilted by `theta` towards +X, in the XZ
@@ -81,6 +99,12 @@ fn s9_reference(r: &Ray) -> f64 {
 fn s9_paraboloid_ray_parallel_to_axis() {
     let p = Quadric::paraboloid().unwrap();
     assert!((s9_reference(&s9_ray(0.0)) - 4.87).abs() < 1e-6);
+    // The page's table, in Markdown: theta, a, the f64 reference, the textbook root and
+    // its relative error, the stable root's relative error.
+    let mut table = String::from(
+        "| $\\theta$ | $a$ | reference $t$ | textbook | its error | stable, error |\n\
+         |---|---|---|---|---|---|\n",
+    );
     for theta in [1e-3_f32, 1e-4, 1e-5, 1e-6, 0.0] {
         let r = s9_ray(theta);
         let want = s9_reference(&r);
@@ -94,6 +118,28 @@ fn s9_paraboloid_ray_parallel_to_axis() {
             err(textbook),
             err(stable)
         );
+        let small = |x: f64| if x == 0.0 { "$0$".to_string() } else { sci(x) };
+        let exponent = |x: f32| format!("{x:e}").split_once('e').unwrap().1.to_string();
+        let theta_shown = match theta {
+            0.0 => "$0$".to_string(),
+            _ => format!("$10^{{{}}}$", exponent(theta)),
+        };
+        let (textbook_shown, textbook_err) = match textbook {
+            Some(t) if err(textbook) >= 0.01 => {
+                (format!("{t:.6}"), format!("${:.2}$", err(textbook)))
+            }
+            Some(t) => (format!("{t:.6}"), sci(err(textbook))),
+            None => ("miss".to_string(), String::new()),
+        };
+        table += &format!(
+            "| {theta_shown} | {} | {want:.6} | {textbook_shown} | {textbook_err} | {} |\n",
+            small(f64::from(a)),
+            sci(err(stable))
+        );
+        if theta == 1e-4 {
+            let off = format!("The textbook is {:.0} % off", 100.0 * err(textbook));
+            assert_page_says("07_5_quadrics.md", &off);
+        }
         assert!(err(stable) <= 1e-6, "stable at theta = {theta}");
         if theta == 1e-4 {
             assert!(
@@ -112,6 +158,7 @@ fn s9_paraboloid_ray_parallel_to_axis() {
         let h = Shape::Quadric(p).hit(&r, 0.0, f32::INFINITY).unwrap();
         assert!(rel(h.t, want) <= 1e-6);
     }
+    insta::assert_snapshot!("s9_table", table);
 }
 
 // ---------------------------------------------------------------- known answers
@@ -288,6 +335,13 @@ fn hit_points_on_surface_and_normals_are_gradients() {
          worst normal error = {worst_normal:e}"
     );
     assert!(hits > 100, "too few hits ({hits}) to mean anything");
+    let page = "07_5_quadrics.md";
+    assert_page_says(page, &format!("Over {hits} hits"));
+    assert_page_says(
+        page,
+        &format!("within {} of the scale", sci(worst_distance)),
+    );
+    assert_page_says(page, &format!("within {} of the true", sci(worst_normal)));
 }
 
 // ---------------------------------------------------------------- bad input
@@ -416,6 +470,13 @@ fn instance_normal_is_the_inverse_transpose_one() {
     );
     assert!(h.normal.dot(tangent).abs() <= 1e-6);
     assert!(naive.dot(tangent).abs() > 0.3);
+    let page = "07_6_instances.md";
+    let along = f64::from(h.normal.dot(tangent));
+    assert_page_says(
+        page,
+        &format!("\\boldsymbol{{\\tau}} = {}", &sci(along)[1..]),
+    );
+    assert_page_says(page, &format!("${:.3}$, far from", naive.dot(tangent)));
     // Finite-difference check against the world-space implicit function.
     let f = |p: DVec3| p.x * p.x / 4.0 + p.y * p.y + p.z * p.z - 1.0;
     let g = gradient_fd(f, p64(h.point)).normalize();

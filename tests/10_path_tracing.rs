@@ -74,6 +74,20 @@ fn numbers() {
     insta::assert_snapshot!("numbers", lesson::numbers(args.scene, &study, &renders));
 }
 
+/// The default run's tables, which the chapter includes: `cargo run --release
+/// --example 10_path_tracing` prints the same. Too slow for every `cargo test`; run
+/// `cargo test --release --test 10_path_tracing -- --ignored` after changing the
+/// estimator. `the_pages_quote_the_default_run_snapshot` keeps the pages in step with
+/// the snapshot on every run.
+#[test]
+#[ignore = "the default 160 x 120 run with a 512-sample reference; run with --release -- --ignored"]
+fn default_run_numbers() {
+    let args = lesson::Args::parse_from(["10_path_tracing", "--out", "target/test-out/10"]);
+    let (study, renders) = render(&args).unwrap();
+    assert_eq!(renders.non_finite, 0);
+    insta::assert_snapshot!("default_run", lesson::numbers(args.scene, &study, &renders));
+}
+
 #[test]
 fn the_lesson_refuses_bad_flags_naming_them() {
     let cases: [(&[&str], &str); 12] = [
@@ -308,6 +322,10 @@ fn s17_grey_furnace_without_offset_darkens_the_failure_case() {
     let (far, _) = grey_furnace_mean(Offset::Fixed(1e-4), Vec3::new(1e4, 5e3, 2.5e3));
     eprintln!("S17 t > 1e-4 at X = 1e4: mean {far}");
     assert!(far < 0.45, "mean {far}");
+    let page = "10_7_mirror_glass.md";
+    assert_quotes(page, "**0.316**, and with a fixed", mean);
+    assert_quotes(page, "to **0.356**.", far);
+    assert_quotes(page, "0.316; offset the", mean);
 }
 
 // ---------------------------------------------------------------- S18
@@ -362,6 +380,11 @@ fn s18_rmse_slope_independent_is_minus_one_half_jittered_steeper() {
     eprintln!("S18 jittered {jittered:?} slope {b}");
     assert!((a + 0.5).abs() <= 0.05, "independent slope {a}");
     assert!(b < -0.55, "jittered slope {b}");
+    let page = "10_path_tracing.md";
+    assert_quotes(page, "**−0.487** for independent", a);
+    assert_quotes(page, "**−0.764** for jittered", b);
+    assert_quotes(page, "two slopes, −0.487 and", a);
+    assert_quotes(page, "and −0.764.\n", b);
 }
 
 // ---------------------------------------------------------------- S19
@@ -408,16 +431,47 @@ fn s19_estimators() -> Vec<(&'static str, Settings)> {
 #[test]
 fn s19_direct_lighting_estimators_are_unbiased() {
     let n = 50_000;
-    for r in [0.5f32, 0.1] {
+    let radii = [0.1f32, 0.5];
+    let mut sigma = vec![[0.0; 2]; s19_estimators().len()];
+    for (column, r) in radii.into_iter().enumerate() {
         let scene = s19_scene(r);
         let ray = Ray::new(Vec3::new(0.0, 0.5 * (1.0 - r), 0.0), -Vec3::Y).unwrap();
-        for (label, s) in s19_estimators() {
+        for (row, (label, s)) in s19_estimators().into_iter().enumerate() {
             let mut rng = Rng::for_pixel(7, 0, 0);
             let st = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
             eprintln!("S19 R = {r} {label}: mean {:.6} sigma {:.4}", st.0, st.1);
             assert_within_4_sigma(&format!("R = {r}, {label}"), st, n, f64::from(r * r));
+            sigma[row][column] = st.1;
         }
     }
+    // Step 5's table, a Markdown table the page includes.
+    let mut table = String::from(
+        "| estimator | $\\sigma$ of one sample, $R = 0.1$ | $\\sigma$, $R = 0.5$ |\n\
+         |-----------|-----------:|----------:|\n",
+    );
+    for ((label, _), [small, large]) in s19_estimators().iter().zip(&sigma) {
+        table += &format!("| {label} | {small:.4} | {large:.4} |\n");
+    }
+    insta::assert_snapshot!("s19_sigmas", table);
+    // The page's prose divides the table's numbers: R = 0.1, cosine and uniform
+    // against light area (rows 1, 0 and 2).
+    let page = "10_5_next_event.md";
+    // The ratio of the numbers as the table prints them, to 4 decimals.
+    let shown = |row: usize| format!("{:.4}", sigma[row][0]).parse::<f64>().unwrap();
+    let ratio = |row: usize| (shown(row) / shown(2)).powi(2);
+    assert_quotes(
+        page,
+        &format!("({:.4}/{:.4})^2 \\approx", sigma[1][0], sigma[2][0]),
+        sigma[1][0],
+    );
+    assert_quotes(
+        page,
+        &format!("({:.4}/{:.4})^2 \\approx", sigma[0][0], sigma[2][0]),
+        sigma[0][0],
+    );
+    let says = |row: usize| format!("/{:.4})^2 \\approx {:.0}$", sigma[2][0], ratio(row));
+    assert_quotes(page, &says(1), sigma[2][0]);
+    assert_quotes(page, &says(0), sigma[2][0]);
 }
 
 /// The S19 check for a quad light: a white floor point under the centre of a square
@@ -442,6 +496,7 @@ fn s19_for_a_quad_light_every_estimator_is_unbiased() {
     let light = Object::emitting(Shape::Quad(quad), Material::BLACK, Vec3::ONE);
     let scene = Scene::new(vec![floor, light], Vec3::ZERO).unwrap();
     let exact = square_light_exact(1.0, 1.0);
+    assert_quotes("10_5_next_event.md", "exact form factor 0.239456", exact);
     let ray = Ray::new(Vec3::new(0.0, 0.5, 0.0), -Vec3::Y).unwrap();
     let n = 50_000;
     for (label, s) in s19_estimators() {
@@ -452,6 +507,62 @@ fn s19_for_a_quad_light_every_estimator_is_unbiased() {
             st.0, st.1
         );
         assert_within_4_sigma(&format!("quad, {label}"), st, n, exact);
+    }
+}
+
+/// Step 6's table: the standard deviation of one sample of direct light (depth 1) at
+/// the floor point under each light's centre of the two-light scene, 100 000 samples
+/// per estimator, as a Markdown table the page includes.
+#[test]
+fn two_lights_direct_light_sigmas() {
+    let (scene, _) = two_lights(8, 6).unwrap();
+    let estimators = [
+        ("cosine", Sampling::Cosine, SphereSampling::Area),
+        ("light area", Sampling::NextEvent, SphereSampling::Area),
+        ("MIS (area)", Sampling::Mis, SphereSampling::Area),
+        ("light cone", Sampling::NextEvent, SphereSampling::Cone),
+        ("MIS (cone)", Sampling::Mis, SphereSampling::Cone),
+    ];
+    let mut table = String::from(
+        "| estimator | $\\sigma$ under the small light | $\\sigma$ under the large light |\n\
+         |-----------|-----------:|----------:|\n",
+    );
+    let mut sigma = Vec::new();
+    for (label, sampling, sphere_lights) in estimators {
+        let s = Settings {
+            sphere_lights,
+            ..settings(sampling, Some(1), false)
+        };
+        let mut row = [0.0; 2];
+        for (k, x) in [-1.5f32, 1.5].into_iter().enumerate() {
+            let ray = Ray::new(Vec3::new(x, 0.01, 0.0), -Vec3::Y).unwrap();
+            let mut rng = Rng::for_pixel(7, 0, 0);
+            let n = 100_000;
+            let (mean, sd) = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
+            row[k] = sd;
+            eprintln!("two lights, x = {x}, {label}: mean {mean:.4} sigma {sd:.3}");
+        }
+        table += &format!("| {label} | {:.2} | {:.2} |\n", row[0], row[1]);
+        sigma.push(row);
+    }
+    insta::assert_snapshot!("two_lights_sigmas", table);
+    // The page compares MIS (area) with its two parts under the large light.
+    assert!(
+        sigma[2][1] < sigma[0][1].min(sigma[1][1]) / 3.0,
+        "{sigma:?}"
+    );
+    // It also names the other measurement of cosine sampling that the listing's
+    // comment quotes.
+    let listing = std::fs::read_to_string("src/pathtrace/scenes.rs").unwrap();
+    let page = page("10_6_mis.md");
+    for (src, book) in [
+        ("cosine sampling gives 9.9", "9.9 and"),
+        ("cosine 1.69", "and 1.69"),
+    ] {
+        assert!(
+            !page.contains(book) || listing.contains(src),
+            "10_6_mis.md quotes the listing's {src:?}, which changed"
+        );
     }
 }
 
@@ -760,6 +871,67 @@ fn thin_lens_rays_meet_on_the_plane_in_focus() {
         let p = r.at((-4.0 - r.origin().z) / r.direction().z);
         assert!((p - target).length() < 1e-5, "{p} vs {target}");
     }
+}
+
+/// Where the lines of two rays come closest, in f64 (the lens rays of one pixel are
+/// nearly parallel): the midpoint of the two closest points, and their distance.
+fn closest_approach(a: &Ray, b: &Ray) -> (glam::DVec3, f64) {
+    let (oa, ob) = (a.origin().as_dvec3(), b.origin().as_dvec3());
+    let (da, db) = (a.direction().as_dvec3(), b.direction().as_dvec3());
+    let w = oa - ob;
+    let (k, d, e) = (da.dot(db), da.dot(w), db.dot(w));
+    let denom = da.length_squared() * db.length_squared() - k * k;
+    let s = (k * e - d * db.length_squared()) / denom;
+    let t = (da.length_squared() * e - k * d) / denom;
+    let (pa, pb) = (oa + s * da, ob + t * db);
+    ((pa + pb) / 2.0, (pa - pb).length())
+}
+
+#[test]
+fn the_thin_lens_focus_point_is_in_front_of_the_eye_at_the_focus_distance() {
+    // A placed camera (eye away from the origin, looking down and to the side), screen
+    // distance s = 1.7, focus distance z_f = 5: the page's p_f = s z_f / s.
+    let (s, z_f) = (1.7, 5.0);
+    let film = Film::new(20, 15, (-0.3, 0.3), (-0.2, 0.25)).unwrap();
+    let eye = Vec3::new(1.0, 2.0, 3.0);
+    let frame = Frame::look(eye, Vec3::new(0.3, -0.2, -1.0), Vec3::Y).unwrap();
+    let pinhole = PinholeCamera::new(film, s, frame).unwrap();
+    let lens = LensCamera::new(pinhole, 0.3, z_f).unwrap();
+    let w = frame.basis().w();
+    for (x, y) in [(0u32, 0u32), (7, 11), (19, 14)] {
+        let pixel = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
+        // The point in focus as the page computes it, in world space.
+        let screen_cam = pinhole.screen_point(x, y);
+        assert!((screen_cam.z + s).abs() < 1e-6, "screen point z = -s");
+        let focus = frame.point_to_world(screen_cam * (z_f / s));
+        // In front of the eye (the camera looks along -w), at the focus distance.
+        assert!(
+            ((focus - eye).dot(w) + z_f).abs() < 1e-4,
+            "(p_f - eye) . w = {}",
+            (focus - eye).dot(w)
+        );
+        // The mistaken s z_f / s_z, with s_z = -s, is the mirror image behind the eye.
+        let behind = frame.point_to_world(screen_cam * (z_f / screen_cam.z));
+        assert!(((behind - eye).dot(w) - z_f).abs() < 1e-4);
+        // Every lens ray of the pixel passes through p_f, ahead of its origin; where
+        // it crosses the pinhole ray is p_f too; no ray comes near the point behind.
+        let pinhole_ray = pinhole.ray(x, y);
+        for u in render_lessons::sampling::grid(3) {
+            let r = lens.ray(pixel, u);
+            assert!((r.origin() - eye).dot(w).abs() < 1e-5, "starts on the lens");
+            let t = r.t_closest_to(focus);
+            assert!(t > 0.0, "p_f ahead of the lens ray: t = {t}");
+            assert!((r.at(t) - focus).length() < 1e-4, "{} vs {focus}", r.at(t));
+            let (meet, gap) = closest_approach(&r, &pinhole_ray);
+            assert!(gap < 1e-4, "the lens ray misses the pinhole ray by {gap}");
+            assert!((meet - focus.as_dvec3()).length() < 1e-2, "meets at {meet}");
+            let miss = r.at(r.t_closest_to(behind).max(0.0));
+            assert!((miss - behind).length() > 1.0);
+        }
+    }
+    // The page states the formula with the positive screen distance.
+    let text = page("10_8_thin_lens.md");
+    assert!(text.contains(r"\mathbf{p}_f = \mathbf{s}\,\frac{z_f}{s}"));
 }
 
 #[test]
@@ -1166,4 +1338,447 @@ fn each_step_figure_is_what_its_command_writes() {
         let written = render_lessons::framebuffer::Framebuffer::beside(&written, 4).unwrap();
         assert!(written == step.render(32, 24).unwrap(), "{}", step.file);
     }
+}
+
+// ---------------------------------------------------------------- the pages' numbers
+
+/// A page of the book, as written.
+fn page(name: &str) -> String {
+    std::fs::read_to_string(format!("chapters/{name}"))
+        .unwrap_or_else(|e| panic!("chapters/{name}: {e}"))
+}
+
+/// A snapshot of this file's tests, header included.
+fn snapshot(name: &str) -> String {
+    std::fs::read_to_string(format!("tests/snapshots/10_path_tracing__{name}.snap"))
+        .unwrap_or_else(|e| panic!("snapshot {name}: {e}"))
+}
+
+/// The first number in `phrase`, as printed: digits with an optional sign (`-` or
+/// `−`) and decimal point.
+fn first_number(phrase: &str) -> &str {
+    let is_sign = |c: char| c == '-' || c == '−';
+    let start = phrase
+        .char_indices()
+        .find(|&(i, c)| {
+            c.is_ascii_digit()
+                || (is_sign(c)
+                    && phrase[i + c.len_utf8()..].starts_with(|d: char| d.is_ascii_digit()))
+        })
+        .map(|(i, _)| i)
+        .unwrap_or_else(|| panic!("no number in {phrase:?}"));
+    let len = phrase[start..]
+        .char_indices()
+        .skip(1)
+        .find(|&(_, c)| !(c.is_ascii_digit() || c == '.'))
+        .map_or(phrase.len() - start, |(i, _)| i);
+    phrase[start..start + len].trim_end_matches('.')
+}
+
+/// The page `name` contains `phrase`, and the first number in it is `value` rounded
+/// to the decimals it shows ("0.07" for 0.06995, "−0.487" for -0.4871).
+fn assert_quotes(name: &str, phrase: &str, value: f64) {
+    let text = page(name);
+    assert!(
+        text.contains(phrase),
+        "chapters/{name} no longer says {phrase:?}"
+    );
+    let quoted = first_number(phrase);
+    let plain = quoted.replace('−', "-");
+    let decimals = plain.split_once('.').map_or(0, |(_, d)| d.len());
+    assert_eq!(
+        format!("{value:.decimals$}"),
+        plain,
+        "chapters/{name} quotes {quoted} in {phrase:?}; the value is {value}"
+    );
+}
+
+/// The number in `column` (0: the first after the label) of the row of a snapshot's
+/// table whose label is `label` (followed by at least two spaces).
+fn cell(snap: &str, label: &str, column: usize) -> f64 {
+    snap.lines()
+        .find_map(|line| {
+            let rest = line.strip_prefix(label)?;
+            rest.starts_with("  ").then_some(())?;
+            rest.split_whitespace().nth(column)?.parse().ok()
+        })
+        .unwrap_or_else(|| panic!("no row {label:?} with a column {column}"))
+}
+
+/// The number that follows `before` in a snapshot (up to a space or `;`).
+fn after(snap: &str, before: &str) -> f64 {
+    let start = snap.find(before).unwrap_or_else(|| panic!("no {before:?}")) + before.len();
+    let rest = &snap[start..];
+    let end = rest.find([' ', ';', '\n', ')']).unwrap_or(rest.len());
+    rest[..end].parse().unwrap()
+}
+
+/// The numbers of one row of lesson 07's table (snapshot `07_intersections__numbers`):
+/// the crossings, the hit point and the outward normal.
+fn lesson_07_row(shape: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let snap = std::fs::read_to_string("tests/snapshots/07_intersections__numbers.snap").unwrap();
+    let line = snap
+        .lines()
+        .find(|l| l.split_whitespace().next() == Some(shape))
+        .unwrap_or_else(|| panic!("no row {shape}"));
+    let numbers = |s: &str| -> Vec<f64> {
+        s.split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|x| !x.is_empty())
+            .map(|x| x.parse().unwrap())
+            .collect()
+    };
+    // Origin, direction, crossings (not in brackets), hit point, normal.
+    let tuples: Vec<&str> = line
+        .split('(')
+        .skip(1)
+        .map(|s| &s[..s.find(')').unwrap()])
+        .collect();
+    let after_direction = line.split(')').nth(2).unwrap();
+    let crossings = &after_direction[..after_direction.find('(').unwrap()];
+    (numbers(crossings), numbers(tuples[2]), numbers(tuples[3]))
+}
+
+#[test]
+fn lesson_07_pages_quote_the_intersections_snapshot() {
+    let (sphere, _, _) = lesson_07_row("sphere");
+    let page = "07_intersections.md";
+    assert_quotes(page, "2.134$ and $t = 3.866$. Two", sphere[0]);
+    assert_quotes(page, "3.866$. Two crossings", sphere[1]);
+    assert_quotes(page, "2.134$ and $3.866$ above", sphere[0]);
+    assert_quotes(page, "3.866$ above", sphere[1]);
+    let (plane, hit, normal) = lesson_07_row("plane");
+    assert_quotes(page, r"4.2426$, the box's", plane[0]);
+    let (boxed, _, _) = lesson_07_row("box");
+    assert_quotes(page, "2.236, 3.354]", boxed[0]);
+    assert_quotes(page, "3.354]$", boxed[1]);
+    let (triangle, _, _) = lesson_07_row("triangle");
+    assert_quotes(page, "3.015$, the paraboloid's", triangle[0]);
+    let page = "07_2_plane.md";
+    assert_quotes(page, r"4.2426$, at the point", plane[0]);
+    assert_quotes(page, "4.243$; the normal", plane[0]);
+    assert_quotes(page, "4.243, with the normal", plane[0]);
+    assert_quotes(page, "4.2426$ and the hit point", plane[0]);
+    assert_eq!(hit, [1.0, -1.0, 0.0], "the page's (1, -1, 0)");
+    assert_quotes(page, "-0.4472, -0.8944, 0)$", -normal[0]);
+    assert_quotes(page, "-0.8944, 0)$", -normal[1]);
+    let (paraboloid, hit, normal) = lesson_07_row("paraboloid");
+    let page = "07_5_quadrics.md";
+    assert_quotes(page, "0.5402$ and $3.7025$", paraboloid[0]);
+    assert_quotes(page, "3.7025$. The first", paraboloid[1]);
+    assert_quotes(page, "-1.618, 0, 2.618)$", hit[0]);
+    assert_quotes(page, "2.618)$,", hit[2]);
+    assert_quotes(page, "-0.9554, 0, -0.2952)$", normal[0]);
+    assert_quotes(page, "-0.2952)$: the", normal[2]);
+    // The figure's label has 3 decimals, the table 4: round the exact root, which the
+    // table agrees with, rather than the table's rounding of it.
+    let exact = (3.0 + 5.0f64.sqrt()) / 2.0f64.sqrt();
+    assert!((exact - paraboloid[1]).abs() < 1e-4);
+    assert_quotes(page, "3.702; the normal", exact);
+}
+
+#[test]
+fn the_page_helpers_read_numbers_as_printed() {
+    assert_eq!(first_number("is **−0.487** for"), "−0.487");
+    assert_eq!(first_number("at $N = 2$"), "2");
+    assert_eq!(first_number("close to the 0.7567 in the table."), "0.7567");
+    assert_eq!(first_number("about 3700."), "3700");
+    let snap = "spp  RMSE\n1    0.69119  0.6912\n16   0.18918  0.7567\nmean 0.33415; x";
+    assert_eq!(cell(snap, "1", 1), 0.6912);
+    assert_eq!(cell(snap, "16", 0), 0.18918);
+    assert_eq!(after(snap, "mean "), 0.33415);
+}
+
+#[test]
+fn the_chapter_quotes_the_numbers_snapshot() {
+    let snap = snapshot("numbers");
+    let page = "10_path_tracing.md";
+    let at_1 = cell(&snap, "1", 1);
+    let at_16 = cell(&snap, "16", 1);
+    // The 16-sample error, inflated by a 64-sample reference: sqrt(1 + 16/64).
+    let inflation = (1.0 + 16.0 / 64.0f64).sqrt();
+    assert_quotes(page, "1.118$ times its true one", inflation);
+    assert_quotes(page, r"$0.6912 \times 1.118", at_1);
+    assert_quotes(page, "= 0.773$", at_1 * 1.118);
+    assert_quotes(page, "close to the 0.7567 in the table", at_16);
+    assert_quotes(page, "reference's 0.334", after(&snap, "reference mean "));
+}
+
+#[test]
+fn the_pages_quote_the_default_run_snapshot() {
+    let snap = snapshot("default_run");
+    let rmse = |label: &str| cell(&snap, label, 0);
+    let (uniform, cosine) = (rmse("uniform hemisphere"), rmse("cosine"));
+    let (nee, mis) = (rmse("next event"), rmse("MIS"));
+    assert_eq!(rmse("64"), mis, "the ladder's top is the MIS render");
+    let gain = |worse: f64, better: f64| (worse / better).powi(2);
+    let page = "10_path_tracing.md";
+    assert_quotes(page, "(0.21993/0.17371)^2", uniform);
+    assert_quotes(page, "0.17371)^2 \\approx 1.6$", cosine);
+    assert_quotes(page, "1.6$ times fewer", gain(uniform, cosine));
+    assert_quotes(page, "(0.17371/0.09154)^2", cosine);
+    assert_quotes(page, "0.09154)^2 \\approx 3.6$", nee);
+    assert_quotes(page, "3.6$ times fewer", gain(cosine, nee));
+    assert_quotes(page, "1.5.\n", gain(nee, mis));
+    assert_quotes(page, "0.07578 at 64 samples", mis);
+    assert_quotes(page, "64\\cdot(0.07578/0.01)^2", 64.0);
+    assert_quotes(page, "0.07578/0.01)^2 \\approx 64", mis);
+    assert_quotes(page, "57.4", (mis / 0.01).powi(2));
+    assert!(
+        (64.0 * (mis / 0.01).powi(2) - 3700.0).abs() < 50.0,
+        "about 3700"
+    );
+    assert_quotes(page, "0.07578\\cdot\\sqrt{64/512} \\approx 0.027", mis);
+    assert_quotes(page, "0.027$", mis * (64.0f64 / 512.0).sqrt());
+    let page = "10_3_cosine.md";
+    assert_quotes(page, "0.21993 (uniform)", uniform);
+    assert_quotes(page, "0.17371 (cosine): $1.6", cosine);
+    assert_quotes(page, "1.6$ times fewer", gain(uniform, cosine));
+    let page = "10_5_next_event.md";
+    assert_quotes(page, "0.17371 (cosine) to", cosine);
+    assert_quotes(page, "0.09154: $3.6", nee);
+    assert_quotes(page, "3.6$ times fewer", gain(cosine, nee));
+    let page = "10_6_mis.md";
+    assert_quotes(page, "0.09154 (NEE) to", nee);
+    assert_quotes(page, "0.07578, $1.5", mis);
+    assert_quotes(page, "1.5$ times", gain(nee, mis));
+}
+
+#[test]
+fn the_monte_carlo_page_quotes_its_snapshot() {
+    let snap = snapshot("monte_carlo");
+    let page = "10_1_monte_carlo.md";
+    // Columns after N: estimate, error, RMSE, RMSE x sqrt(N).
+    assert_quotes(page, "0.07 at $N = 2$", cell(&snap, "2", 1));
+    assert_quotes(page, "0.56 at $N = 8$", cell(&snap, "8", 1));
+    assert_quotes(page, "0.0012 at $N = 8192$", cell(&snap, "8192", 1));
+    assert_quotes(page, "0.0038 at $N = 65536$", cell(&snap, "65536", 1));
+    let ns = [
+        1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192,
+    ];
+    let ns = ns.iter().chain(&[16384, 32768, 65536]);
+    let scaled: Vec<f64> = ns.map(|n| cell(&snap, &n.to_string(), 3)).collect();
+    let lo = scaled.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = scaled.iter().copied().fold(0.0, f64::max);
+    assert_quotes(page, "stays between 0.75 and", lo);
+    assert_quotes(page, "and 0.95 around", hi);
+    assert_quotes(
+        page,
+        "$\\sigma = 0.8928$ (64 runs",
+        after(&snap, "sample = "),
+    );
+    assert_quotes(page, "fitted slope is −0.511", after(&snap, "log N: "));
+    assert_quotes(page, "from 0.88 at N = 1", cell(&snap, "1", 2));
+    assert_quotes(page, "to 0.0035 at\nN = 65536", cell(&snap, "65536", 2));
+}
+
+#[test]
+fn the_light_sample_exercises_are_the_crates_numbers() {
+    // Step 5's exercise: the Cornell box's floor under its ceiling light, through the
+    // crate's own scene, light density and BRDF.
+    let (scene, _) = cornell(16, 12).unwrap();
+    let light = &scene.objects()[scene.lights()[0]];
+    let Shape::Quad(quad) = &light.shape else {
+        panic!("the Cornell light is a quad")
+    };
+    let floor = scene
+        .objects()
+        .iter()
+        .find(|o| matches!(&o.shape, Shape::Plane(p) if p.normal() == Vec3::Y))
+        .unwrap();
+    let centre = quad.point(0.5, 0.5);
+    assert!(
+        (centre - Vec3::new(50.0, 81.55, 81.6)).length() < 1e-4,
+        "{centre}"
+    );
+    assert!((quad.area() - 1017.6).abs() < 0.05, "{}", quad.area());
+    let page = "10_5_next_event.md";
+    let contribution = |p: Vec3| {
+        let pdf = light::pdf(&light.shape, p, centre, quad.normal(), SphereSampling::Area);
+        let to_light = (centre - p).normalize();
+        let cos = to_light.dot(Vec3::Y);
+        let f_r = render_lessons::material::diffuse_brdf(floor.colour()).x;
+        (pdf, f_r * light.emission.x * cos / pdf)
+    };
+    let under = Vec3::new(50.0, 0.0, 81.6);
+    let (pdf, value) = contribution(under);
+    assert_quotes(page, r"\approx 6.535\ \text{sr}^{-1}", f64::from(pdf));
+    assert_quotes(page, "0.438$. At 45°", f64::from(value));
+    let at_45 = Vec3::new(50.0, 0.0, 163.15);
+    let (pdf_45, value_45) = contribution(at_45);
+    let seen_at = (centre - at_45)
+        .normalize()
+        .dot(Vec3::Y)
+        .acos()
+        .to_degrees();
+    assert!((seen_at - 45.0).abs() < 1e-3, "{seen_at}");
+    assert_quotes(page, r"\approx 18.48\ \text{sr}^{-1}", f64::from(pdf_45));
+    assert_quotes(page, "0.110$. That is a quarter", f64::from(value_45));
+    assert!((value_45 / value - 0.25).abs() < 1e-4, "a quarter");
+    // Step 6's exercise: the power-heuristic weights of the same light sample.
+    let p_bsdf = 1.0 / std::f32::consts::PI;
+    let page = "10_6_mis.md";
+    let w_light = f64::from(render_lessons::pathtrace::mis::power_heuristic(pdf, p_bsdf));
+    let w_bsdf = f64::from(render_lessons::pathtrace::mis::power_heuristic(p_bsdf, pdf));
+    assert_quotes(page, r"\approx 0.9976$", w_light);
+    assert_quotes(page, r"w_\text{bsdf} \approx 0.0024$", w_bsdf);
+    assert!((w_light + w_bsdf - 1.0).abs() < 1e-6);
+    let w_a = f64::from(render_lessons::pathtrace::mis::power_heuristic(0.2, 0.3));
+    assert_quotes(page, r"\approx 0.308$", w_a);
+    assert_quotes(page, r"$w_b \approx 0.692$", 1.0 - w_a);
+}
+
+// ---------------------------------------------------------------- the pages' links
+
+/// The pages of lessons 07 and 10 this file checks for links to the stability cases.
+const CASE_PAGES: [&str; 14] = [
+    "07_intersections.md",
+    "07_2_plane.md",
+    "07_5_quadrics.md",
+    "07_6_instances.md",
+    "07_7_exercises.md",
+    "10_path_tracing.md",
+    "10_1_monte_carlo.md",
+    "10_2_naive.md",
+    "10_3_cosine.md",
+    "10_4_roulette.md",
+    "10_5_next_event.md",
+    "10_6_mis.md",
+    "10_7_mirror_glass.md",
+    "10_8_thin_lens.md",
+];
+
+/// The stability cases a text names: `S` and a number, not inside a word.
+fn case_numbers(text: &str) -> Vec<u32> {
+    let bytes = text.as_bytes();
+    let mut found = Vec::new();
+    for (i, _) in text.match_indices('S') {
+        if i > 0 && bytes[i - 1].is_ascii_alphanumeric() {
+            continue;
+        }
+        let digits: String = text[i + 1..]
+            .chars()
+            .take_while(char::is_ascii_digit)
+            .collect();
+        let next = text[i + 1 + digits.len()..].chars().next();
+        if !digits.is_empty() && !next.is_some_and(|c| c.is_ascii_alphabetic()) {
+            found.push(digits.parse().unwrap());
+        }
+    }
+    found
+}
+
+/// mdBook's id of a heading: lower case; letters, digits, `-` and `_` kept; spaces
+/// become `-`; everything else is dropped.
+fn heading_id(heading: &str) -> String {
+    heading
+        .trim()
+        .chars()
+        .filter_map(|c| {
+            if c.is_alphanumeric() || c == '-' || c == '_' {
+                Some(c.to_ascii_lowercase())
+            } else if c.is_whitespace() {
+                Some('-')
+            } else {
+                None
+            }
+        })
+        .collect()
+}
+
+/// The prose of a page as paragraphs (blocks of lines without a blank one): fenced
+/// code blocks, headings and code spans left out.
+fn prose_paragraphs(text: &str) -> Vec<String> {
+    let mut paragraphs = vec![String::new()];
+    let mut in_fence = false;
+    for line in text.lines() {
+        if line.trim_start().starts_with("```") {
+            in_fence = !in_fence;
+            continue;
+        }
+        if in_fence || line.starts_with('#') {
+            continue;
+        }
+        if line.trim().is_empty() {
+            paragraphs.push(String::new());
+            continue;
+        }
+        let mut kept = String::new();
+        for (k, piece) in line.split('`').enumerate() {
+            if k % 2 == 0 {
+                kept += piece;
+            }
+        }
+        let last = paragraphs.last_mut().unwrap();
+        *last += &kept;
+        *last += "\n";
+    }
+    paragraphs.retain(|p| !p.is_empty());
+    paragraphs
+}
+
+/// Does `paragraph` link to the section of case `n` in a *Where methods fail* page:
+/// to the page that has the case's heading, and to that heading if it names one?
+fn links_case(paragraph: &str, n: u32) -> bool {
+    paragraph.split("](").skip(1).any(|rest| {
+        let target = &rest[..rest.find(')').unwrap_or(rest.len())];
+        let (file, fragment) = target.split_once('#').unwrap_or((target, ""));
+        if !file.starts_with("where_methods_fail") {
+            return false;
+        }
+        let Ok(text) = std::fs::read_to_string(format!("chapters/{file}")) else {
+            return false;
+        };
+        let ids: Vec<String> = text
+            .lines()
+            .filter_map(|l| l.strip_prefix("## "))
+            .filter(|h| case_numbers(h.split('.').next().unwrap_or("")).contains(&n))
+            .map(heading_id)
+            .collect();
+        !ids.is_empty() && (fragment.is_empty() || ids.iter().any(|id| id == fragment))
+    })
+}
+
+#[test]
+fn the_link_checker_finds_cases_and_ids_as_mdbook_does() {
+    assert_eq!(
+        case_numbers("STABILITY S1 to S9; S4 and S5. x"),
+        [1, 9, 4, 5]
+    );
+    assert_eq!(case_numbers("SS3 S3x s3 MS4 (S17)"), [17]);
+    assert_eq!(
+        heading_id("S3. smallpt's walls in `f32`"),
+        "s3-smallpts-walls-in-f32"
+    );
+    let par = "([STABILITY S3](where_methods_fail_roots.md#s3-smallpts-walls-in-f32))";
+    assert!(links_case(par, 3));
+    assert!(!links_case(par, 1), "S1 has another heading");
+    assert!(!links_case(
+        "(S3, [x](where_methods_fail_roots.md#s3-wrong))",
+        3
+    ));
+    assert!(links_case("[S1 to S3](where_methods_fail_roots.md)", 2));
+    assert!(!links_case("[S1 to S3](where_methods_fail_roots.md)", 4));
+    let text = "```text\nS1\n```\n## S2 heading\nsee `S5` and\nS7 here\n\nS8\n";
+    assert_eq!(prose_paragraphs(text), ["see  and\nS7 here\n", "S8\n"]);
+}
+
+#[test]
+fn each_page_links_a_stability_case_where_it_first_names_it() {
+    let mut missing = Vec::new();
+    for name in CASE_PAGES {
+        let mut seen = std::collections::HashSet::new();
+        for paragraph in prose_paragraphs(&page(name)) {
+            for n in case_numbers(&paragraph) {
+                if seen.insert(n) && !links_case(&paragraph, n) {
+                    missing.push(format!("{name}: S{n} in {paragraph:?}"));
+                }
+            }
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "a page names a stability case first without linking its section of \
+         Where methods fail:\n{}",
+        missing.join("\n")
+    );
 }

@@ -4,7 +4,7 @@
 //! the weights of any one direction add up to 1.
 
 // ANCHOR: power_heuristic
-/// Veach's power heuristic with beta = 2: the weight p_a^2 / (p_a^2 + p_b^2) of a
+/// Veach's power heuristic with the exponent 2 (Veach writes it beta): the weight p_a^2 / (p_a^2 + p_b^2) of a
 /// sample drawn by strategy a, written as 1 / (1 + (p_b / p_a)^2) so that large
 /// densities cannot overflow. 0 when p_a is 0 (a could not have drawn the sample).
 pub fn power_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {

@@ -160,11 +160,12 @@ pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, Len
 /// one (radius 0.05, radiance 400) on the left, a large dim one (radius 1, radiance 1)
 /// on the right: Veach's (1997, fig. 9.2) lesson with a Lambertian floor.
 ///
-/// Direct light only, 100 000 samples, standard deviation of one sample (measured):
-/// under the small light cosine sampling gives 9.9, area light sampling 1.08; under
-/// the large light area light sampling gives 1.24 (points on the sphere seen at wide
-/// angles), cosine 1.69, and MIS of the two 0.25. Cone sampling of the spheres (0.48
-/// and 0.21) leaves MIS little to add on a Lambertian floor.
+/// Direct light only: the standard deviation of one sample under each light, per
+/// estimator, is measured by `tests/10_path_tracing.rs` (`two_lights_sigmas`
+/// snapshot). Cosine sampling does worst under the small hot light, area sampling
+/// under the large one (points on the sphere seen at wide angles), MIS is close to
+/// the better of the two under each, and cone sampling of the spheres leaves MIS
+/// little to add on a Lambertian floor.
 pub fn two_lights(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     let small = Sphere::new(Vec3::new(-1.5, 1.0, 0.0), 0.05)?;

@@ -89,8 +89,9 @@ impl Instance {
     /// is, every point has the same `t` in both spaces, and the hit's `t` could be
     /// returned unchanged. But d' is not of unit length under a scale, and [`Ray`]
     /// always holds a unit direction (its `t` is a distance). So the object ray uses
-    /// d' / s with s = |d'|, and object-space distances are world `t` times s:
-    /// the range is searched as (t_min s, t_max s) and the hit's `t` divided by s.
+    /// d' / |d'|, and object-space distances are world `t` times the stretch |d'|:
+    /// the range is searched as (t_min |d'|, t_max |d'|) and the hit's `t` divided
+    /// by |d'|.
     ///
     /// The hit point goes back by M as a point; the normal by the inverse transpose
     /// (M^-1)^T, then is normalised, which keeps it perpendicular to the surface
@@ -100,14 +101,16 @@ impl Instance {
     pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
         let origin = self.to_object.point(ray.origin());
         let direction = self.to_object.vector(ray.direction());
-        let s = direction.length();
+        let stretch = direction.length();
         let unit = direction.normalize_or_zero();
-        if !origin.is_finite() || unit == Vec3::ZERO || !(s.is_finite() && s > 0.0) {
+        if !origin.is_finite() || unit == Vec3::ZERO || !(stretch.is_finite() && stretch > 0.0) {
             return None;
         }
         let object_ray = Ray::from_checked(origin, unit);
-        let local = self.shape.hit(&object_ray, t_min * s, t_max * s)?;
-        let t = local.t / s;
+        let local = self
+            .shape
+            .hit(&object_ray, t_min * stretch, t_max * stretch)?;
+        let t = local.t / stretch;
         let point = self.to_world.point(local.point);
         let normal = self
             .normal_matrix
@@ -122,17 +125,17 @@ impl Instance {
 
     /// Every crossing of the world ray's line, ascending, `t` measured along the world
     /// ray: the shape's crossings of the object-space ray o' = M^-1 o, d' = M^-1 d / s
-    /// (s = |M^-1 d|), each divided by s, as in [`Instance::hit`].
+    /// (the stretch |M^-1 d|), each divided by it, as in [`Instance::hit`].
     pub fn crossings(&self, ray: &Ray) -> Crossings {
         let origin = self.to_object.point(ray.origin());
         let direction = self.to_object.vector(ray.direction());
-        let s = direction.length();
+        let stretch = direction.length();
         let unit = direction.normalize_or_zero();
-        if !origin.is_finite() || unit == Vec3::ZERO || !(s.is_finite() && s > 0.0) {
+        if !origin.is_finite() || unit == Vec3::ZERO || !(stretch.is_finite() && stretch > 0.0) {
             return Crossings::NONE;
         }
         let object_ray = Ray::from_checked(origin, unit);
-        self.shape.crossings(&object_ray).map(|t| t / s)
+        self.shape.crossings(&object_ray).map(|t| t / stretch)
     }
 
     /// The outward unit normal at the world point `p`: the shape's normal at the

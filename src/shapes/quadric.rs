@@ -154,15 +154,15 @@ impl Quadric {
 
     /// The infinite double cone about the line through the origin along `axis`
     /// (normalised to a), apex at the origin, radius `slope` times the height along a:
-    /// |x|^2 - (a.x)^2 = s^2 (a.x)^2, so Q's upper-left block is I - a a^T - s^2 a a^T
-    /// and Q_33 = 0; `cone_along(Vec3::Z, s)` is [`Quadric::cone`].
+    /// |x|^2 - (a.x)^2 = k^2 (a.x)^2 with k the slope, so Q's upper-left block is
+    /// I - a a^T - k^2 a a^T and Q_33 = 0; `cone_along(Vec3::Z, k)` is [`Quadric::cone`].
     ///
     /// The Ray Tracer Challenge's cone (ch. 13) is `cone_along(Vec3::Y, 1.0)`, without
     /// its caps. Errors name `axis` and `slope`.
     pub fn cone_along(axis: Vec3, slope: f32) -> Result<Quadric> {
         let a = unit("axis", axis)?;
-        let s2 = positive("slope", positive("slope", slope)? * slope)?;
-        Quadric::new(along(a, s2, 0.0))
+        let k2 = positive("slope", positive("slope", slope)? * slope)?;
+        Quadric::new(along(a, k2, 0.0))
     }
     // ANCHOR_END: along_axis
 

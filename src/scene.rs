@@ -17,9 +17,10 @@ use crate::shapes::{Candidate, Hit, PreparedRay, Shape};
 
 /// One primitive with its material and the radiance L_e it emits.
 ///
-/// Emission is two-sided: L_e leaves the surface on both sides. The furnace seen
-/// from inside a sphere needs that; a light that must shine one way (the Cornell
-/// box's ceiling panel) is placed with its back facing a wall.
+/// Emission is two-sided ([`Object::emitting`]): L_e leaves the surface on both
+/// sides, which the furnace seen from inside a sphere needs. A lamp
+/// ([`Object::lamp`]) shines from its front only, the side its normal points to,
+/// as a ceiling panel does: its back emits nothing.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// The surface.
@@ -28,6 +29,8 @@ pub struct Object {
     pub material: Material,
     /// The radiance it emits, linear RGB; zero for most objects.
     pub emission: Vec3,
+    /// `true` if it emits from its front side only (a lamp).
+    pub front_only: bool,
 }
 
 impl Object {
@@ -37,6 +40,7 @@ impl Object {
             shape,
             material,
             emission: Vec3::ZERO,
+            front_only: false,
         }
     }
 
@@ -46,12 +50,34 @@ impl Object {
         Object::new(shape, Material::Diffuse { albedo })
     }
 
-    /// A surface that emits `emission`.
+    /// A surface that emits `emission` from both sides.
     pub fn emitting(shape: Shape, material: Material, emission: Vec3) -> Object {
         Object {
             shape,
             material,
             emission,
+            front_only: false,
+        }
+    }
+
+    /// A lamp: a black surface that emits `emission` from its front side only, the
+    /// side its outward normal points to.
+    pub fn lamp(shape: Shape, emission: Vec3) -> Object {
+        Object {
+            shape,
+            material: Material::BLACK,
+            emission,
+            front_only: true,
+        }
+    }
+
+    /// The radiance it emits towards a viewer on the `front` side (or the back):
+    /// [`Object::emission`], or zero from the back of a lamp.
+    pub fn emission_seen(&self, front: bool) -> Vec3 {
+        if front || !self.front_only {
+            self.emission
+        } else {
+            Vec3::ZERO
         }
     }
 

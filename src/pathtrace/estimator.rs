@@ -68,9 +68,13 @@ pub fn radiance_observed(
     let (mut ray, mut t_min) = (ray, 0.0);
     let mut previous = Previous::Full;
     let mut bounce = 0u32;
+    // A diffuse vertex, then only specular ones since: light found now is a caustic
+    // (told to the observer only; the sample is the same).
+    let (mut diffuse_seen, mut caustic) = (false, false);
     loop {
         let Some((hit, index)) = scene.closest(&ray, t_min, f32::INFINITY) else {
             sum += beta * scene.background();
+            observer.light(beta * scene.background(), caustic);
             observer.escaped(ray.direction());
             break;
         };
@@ -78,7 +82,9 @@ pub fn radiance_observed(
         let object = &scene.objects()[index];
         if object.is_emissive() {
             let weight = emission_weight(scene, index, &hit, previous, settings);
-            sum += beta * object.emission * weight;
+            let found = beta * object.emission_seen(hit.front_face) * weight;
+            sum += found;
+            observer.light(found, caustic);
         }
         // A hit so far away that its point overflowed (an infinite plane met at a
         // grazing angle) gives no finite place to continue from: the path ends.
@@ -90,6 +96,12 @@ pub fn radiance_observed(
             break;
         };
         sum += beta * next.direct;
+        observer.light(beta * next.direct, false);
+        (diffuse_seen, caustic) = if next.specular {
+            (diffuse_seen, diffuse_seen)
+        } else {
+            (true, false)
+        };
         beta *= next.weight;
         bounce += 1;
         if !survives_roulette(&mut beta, bounce, rng, settings) {
@@ -115,6 +127,8 @@ struct Bounce {
     weight: Vec3,
     /// How emission found by the next ray is weighted.
     previous: Previous,
+    /// The bounce was specular (mirror or glass).
+    specular: bool,
 }
 
 // ANCHOR: scatter
@@ -141,6 +155,7 @@ fn scatter(
                 direction,
                 weight,
                 previous: after_diffuse(s.sampling, start.point, pdf),
+                specular: false,
             })
         }
         specular => {
@@ -153,6 +168,7 @@ fn scatter(
                 direction: next.direction,
                 weight: next.weight,
                 previous: Previous::Full,
+                specular: true,
             })
         }
     }

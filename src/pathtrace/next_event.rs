@@ -56,7 +56,13 @@ pub(super) fn direct_light(
     let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
         return Vec3::ZERO;
     };
-    let seen = unoccluded(scene, from, n, y.point, y.normal, s.offset);
+    // Behind a lamp there is nothing to see, and no shadow ray to trace.
+    let radiance = light.emission_seen(y.normal.dot(from.point - y.point) > 0.0);
+    let seen = if radiance == Vec3::ZERO {
+        None
+    } else {
+        unoccluded(scene, from, n, y.point, y.normal, s.offset)
+    };
     observer.light_sample(y.point, seen.is_some());
     let Some(cos) = seen else {
         return Vec3::ZERO;
@@ -66,7 +72,7 @@ pub(super) fn direct_light(
         Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
         _ => 1.0,
     };
-    diffuse_brdf(albedo) * light.emission * (cos * weight / pdf)
+    diffuse_brdf(albedo) * radiance * (cos * weight / pdf)
 }
 // ANCHOR_END: direct_light
 

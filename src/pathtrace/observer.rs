@@ -18,6 +18,10 @@ pub trait PathObserver {
     fn light_sample(&mut self, _point: Vec3, _unoccluded: bool) {}
     /// The path left the scene along the unit `direction`.
     fn escaped(&mut self, _direction: Vec3) {}
+    /// Light added to the sample: `contribution` (already weighted), and whether it
+    /// is a caustic, light that reached a diffuse vertex through mirror or glass
+    /// (only the specular bounce can find it; light sampling cannot help).
+    fn light(&mut self, _contribution: Vec3, _caustic: bool) {}
 }
 
 impl PathObserver for () {}

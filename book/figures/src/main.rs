@@ -13,6 +13,7 @@ use render_lessons::course::lesson::{self, Output};
 
 mod lesson09;
 mod lesson10;
+mod variance;
 
 /// Writes every book-only figure into `--out`.
 #[derive(Parser, Debug)]
@@ -29,6 +30,7 @@ type Figures = fn(&Output) -> Result<()>;
 const LESSONS: &[(&str, Figures)] = &[
     ("lesson 09", lesson09::figures),
     ("lesson 10", lesson10::figures),
+    ("lesson 10, variance", variance::figures),
 ];
 
 fn main() -> ExitCode {

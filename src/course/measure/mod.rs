@@ -11,7 +11,9 @@ pub mod precision;
 pub mod renderers;
 pub mod scaling;
 pub mod sphere;
+pub mod tax;
 pub mod triangle;
+pub mod variance;
 
 use std::time::Instant;
 

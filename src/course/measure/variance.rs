@@ -1,0 +1,174 @@
+//! Where a path tracer's noise comes from, pixel by pixel.
+//!
+//! The error of a pixel after N samples is sigma / sqrt(N), sigma^2 the variance of
+//! one sample there (lesson 10, step 1). The image's mean squared error is the mean
+//! of sigma^2 / N over the pixels, so the pixels with the largest sigma^2 are where
+//! the time goes. This measures sigma^2 in every pixel from `spp` samples,
+//! sigma^2 = E[x^2] - E[x]^2 of the grey value (the mean of the three channels), and
+//! sorts it by what the pixel's centre ray meets first: the pixels a strategy cannot
+//! improve (seen through glass or in a mirror, where only the specular bounce finds
+//! the light) set a ceiling on what any light sampling can gain. So do the
+//! caustics anywhere: light that reaches a diffuse surface through mirror or glass,
+//! which the estimator finds only by following the specular bounce, whatever the
+//! strategy; sigma^2 is measured a second time with them left out.
+
+use glam::{DVec4, Vec2, Vec3};
+use rayon::prelude::*;
+
+use crate::error::Result;
+use crate::framebuffer::Framebuffer;
+use crate::material::Material;
+use crate::pathtrace::progressive::pixel_ray;
+use crate::pathtrace::{
+    LensCamera, PathCamera, PathObserver, PixelSampling, Rng, Settings, radiance_observed,
+};
+use crate::render::in_pool;
+use crate::scene::Scene;
+
+/// The variance of one sample in every pixel, and the object each pixel's centre
+/// ray meets first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelVariance {
+    width: u32,
+    height: u32,
+    /// sigma^2 of the grey value, row by row.
+    variance: Vec<f64>,
+    /// sigma^2 of the same samples with their caustic light left out.
+    without_caustics: Vec<f64>,
+    /// The object the centre ray meets first, or `None` if it escapes.
+    first: Vec<Option<usize>>,
+}
+
+/// What the camera sees first in a pixel, for the table of where the variance is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Seen {
+    /// A diffuse surface: light sampling helps here.
+    Diffuse,
+    /// A mirror or glass: the light is found only by the specular bounce.
+    Specular,
+    /// The lamp itself, or nothing.
+    LampOrNothing,
+}
+
+impl PixelVariance {
+    /// sigma^2 in pixel (`x`, `y`).
+    pub fn at(&self, x: u32, y: u32) -> f64 {
+        self.variance[(y * self.width + x) as usize]
+    }
+
+    /// The mean of sigma^2 over the image: N times the image's expected mean squared
+    /// error after N samples.
+    pub fn mean(&self) -> f64 {
+        self.variance.iter().sum::<f64>() / self.variance.len().max(1) as f64
+    }
+
+    /// The mean of sigma^2 over the image with the caustic light left out of every
+    /// sample: what the variance would be if caustics cost nothing.
+    pub fn mean_without_caustics(&self) -> f64 {
+        self.without_caustics.iter().sum::<f64>() / self.without_caustics.len().max(1) as f64
+    }
+
+    /// The share of the summed sigma^2 in pixels that see `seen` first, and the share
+    /// of pixels that do.
+    pub fn share(&self, scene: &Scene, seen: Seen) -> (f64, f64) {
+        let total: f64 = self.variance.iter().sum();
+        let (mut part, mut pixels) = (0.0, 0usize);
+        for (v, first) in self.variance.iter().zip(&self.first) {
+            if classify(scene, *first) == seen {
+                part += v;
+                pixels += 1;
+            }
+        }
+        (
+            part / total.max(f64::MIN_POSITIVE),
+            pixels as f64 / self.variance.len().max(1) as f64,
+        )
+    }
+
+    /// The share of the summed sigma^2 in the `fraction` (0..1) of pixels with the
+    /// largest sigma^2.
+    pub fn top_share(&self, fraction: f64) -> f64 {
+        let mut v = self.variance.clone();
+        v.sort_by(|a, b| b.total_cmp(a));
+        let k = ((v.len() as f64 * fraction).ceil() as usize).min(v.len());
+        let total: f64 = v.iter().sum();
+        v[..k].iter().sum::<f64>() / total.max(f64::MIN_POSITIVE)
+    }
+
+    /// An image of sigma / (sigma + 1) in grey (sigma the standard deviation): black
+    /// where a pixel is noise-free, white where one sample's error dwarfs 1.
+    pub fn image(&self) -> Result<Framebuffer> {
+        Framebuffer::from_fn(self.width, self.height, |x, y| {
+            let sigma = self.at(x, y).sqrt() as f32;
+            glam::Vec3::splat(sigma / (sigma + 1.0))
+        })
+    }
+}
+
+fn classify(scene: &Scene, first: Option<usize>) -> Seen {
+    match first.map(|i| &scene.objects()[i]) {
+        Some(o) if o.is_emissive() => Seen::LampOrNothing,
+        Some(o) => match o.material {
+            Material::Diffuse { .. } => Seen::Diffuse,
+            _ => Seen::Specular,
+        },
+        None => Seen::LampOrNothing,
+    }
+}
+
+/// sigma^2 in every pixel of `camera`'s image from `spp` samples with `settings`,
+/// each pixel's random stream seeded from (`seed`, x, y), on `threads` threads.
+pub fn pixel_variance(
+    scene: &Scene,
+    camera: &LensCamera,
+    settings: &Settings,
+    spp: u32,
+    seed: u64,
+    threads: Option<usize>,
+) -> Result<PixelVariance> {
+    let (width, height) = (camera.film().width(), camera.film().height());
+    let pixel = |i: usize| -> ((f64, f64), Option<usize>) {
+        let (x, y) = ((i % width as usize) as u32, (i / width as usize) as u32);
+        let mut rng = Rng::for_pixel(seed, x, y);
+        let corner = Vec2::new(x as f32, y as f32);
+        // Sums of x, x^2 for the whole sample and for its part without caustics.
+        let mut moments = DVec4::ZERO;
+        for s in 0..spp {
+            let ray = pixel_ray(camera, corner, PixelSampling::Independent, spp, s, &mut rng);
+            let mut caustics = Caustics(Vec3::ZERO);
+            let sample = radiance_observed(scene, ray, &mut rng, settings, &mut caustics);
+            let grey = f64::from(sample.element_sum() / 3.0);
+            let rest = grey - f64::from(caustics.0.element_sum() / 3.0);
+            if grey.is_finite() && rest.is_finite() {
+                moments += DVec4::new(grey, grey * grey, rest, rest * rest);
+            }
+        }
+        let m = moments / f64::from(spp.max(1));
+        let centre = camera.sample_ray(corner + Vec2::splat(0.5), Vec2::splat(0.5));
+        let first = scene.closest(&centre, 0.0, f32::INFINITY).map(|(_, i)| i);
+        let variance = |mean: f64, square: f64| (square - mean * mean).max(0.0);
+        ((variance(m.x, m.y), variance(m.z, m.w)), first)
+    };
+    let n = width as usize * height as usize;
+    let (both, first): (Vec<(f64, f64)>, _) =
+        in_pool(threads, || (0..n).into_par_iter().map(pixel).unzip())?;
+    let (variance, without_caustics) = both.into_iter().unzip();
+    Ok(PixelVariance {
+        width,
+        height,
+        variance,
+        without_caustics,
+        first,
+    })
+}
+
+/// The caustic light of one sample, as the estimator reports it.
+struct Caustics(Vec3);
+
+impl PathObserver for Caustics {
+    fn light(&mut self, contribution: Vec3, caustic: bool) {
+        if caustic {
+            self.0 += contribution;
+        }
+    }
+}

@@ -31,8 +31,8 @@ impl PreparedRay {
     pub fn new(ray: &Ray) -> PreparedRay {
         let d = ray.direction();
         let kz = d.abs().max_position();
-        let kx = (kz + 1) % 3;
-        let ky = (kx + 1) % 3;
+        let next = |k: usize| if k == 2 { 0 } else { k + 1 }; // (k + 1) mod 3
+        let (kx, ky) = (next(kz), next(next(kz)));
         let inv_kz = 1.0 / d[kz];
         PreparedRay {
             ray: *ray,

@@ -4,6 +4,7 @@
 //!
 //! - [`diagram`]: ray diagrams drawn with tiny-skia from the real cameras and shapes;
 //! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;
+//! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
@@ -14,6 +15,7 @@ pub mod chart;
 pub mod diagram;
 pub mod exercises;
 pub mod flags;
+pub mod ladder_figure;
 pub mod lesson;
 pub mod measure;
 pub mod report;

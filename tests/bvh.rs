@@ -179,6 +179,27 @@ fn same_hits_as_the_list_on_a_1k_triangle_sphere() {
     assert!(hits > 1000, "{hits} hits");
 }
 
+/// Rays parallel to an axis (1/d infinite on two axes) starting exactly in the
+/// planes of vertices, so that node boxes' faces hold the origin: the slab test's
+/// 0 * inf = NaN case, which the traversal's careful path must treat as the list does.
+#[test]
+fn same_hits_as_the_list_for_axis_parallel_rays_in_box_face_planes() {
+    let mesh = Mesh::uv_sphere(Vec3::ZERO, 1.0, 12, 12).unwrap();
+    let scene = scene(mesh_objects(&mesh));
+    let mut rays = Vec::new();
+    for p in mesh.positions.iter().step_by(3) {
+        for (o, d) in [
+            (Vec3::new(p.x, p.y, 5.0), -Vec3::Z),
+            (Vec3::new(-5.0, p.y, p.z), Vec3::X),
+            (Vec3::new(p.x, 5.0, p.z), -Vec3::Y),
+        ] {
+            rays.push(Ray::new(o, d).unwrap());
+        }
+    }
+    let hits = assert_same_answers(&scene, &rays);
+    assert!(hits > rays.len() / 2, "{hits} of {} hit", rays.len());
+}
+
 #[test]
 fn same_hits_as_the_list_on_a_random_soup() {
     let mut rng = Rng(2);

@@ -158,10 +158,8 @@ impl Bvh {
 
 /// A node slot reserved before its contents are known.
 const LEAF_PLACEHOLDER: Node = Node {
-    min: Vec3::ZERO,
-    first: 0,
-    max: Vec3::ZERO,
-    count: 0,
+    min_first: glam::Vec4::ZERO,
+    max_count: glam::Vec4::ZERO,
 };
 
 /// The tree as it grows.
@@ -218,12 +216,12 @@ impl Builder {
 /// `first` and `first + 1` when `count` is 0. The counts fit in u32: the build takes
 /// at most u32::MAX objects into the tree.
 fn node(bounds: &Bounds, first: usize, count: usize) -> Node {
-    Node {
-        min: Vec3::from(bounds.min),
-        first: first as u32,
-        max: Vec3::from(bounds.max),
-        count: count as u32,
-    }
+    Node::new(
+        Vec3::from(bounds.min),
+        Vec3::from(bounds.max),
+        first as u32,
+        count as u32,
+    )
 }
 
 /// The box around the items' boxes and the box around their centroids, in one pass.

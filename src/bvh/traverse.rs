@@ -127,8 +127,9 @@ fn box_entry(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
     if !ray.finite {
         return box_entry_careful(node, ray, t_min, t_max);
     }
-    let lo = (Vec3A::from(node.min) - ray.origin) * ray.inv_d;
-    let hi = (Vec3A::from(node.max) - ray.origin) * ray.inv_d;
+    let (min, max) = node.corners();
+    let lo = (min - ray.origin) * ray.inv_d;
+    let hi = (max - ray.origin) * ray.inv_d;
     let (near, far) = (lo.min(hi), lo.max(hi));
     enter(near.max_element(), far.min_element(), t_min, t_max)
 }
@@ -137,8 +138,9 @@ fn box_entry(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
 /// or +inf (an exit).
 #[inline(never)]
 fn box_entry_careful(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
-    let lo = (Vec3A::from(node.min) - ray.origin) * ray.inv_d;
-    let hi = (Vec3A::from(node.max) - ray.origin) * ray.inv_d;
+    let (min, max) = node.corners();
+    let lo = (min - ray.origin) * ray.inv_d;
+    let hi = (max - ray.origin) * ray.inv_d;
     let negative = ray.inv_d.cmplt(Vec3A::ZERO);
     let near = Vec3A::select(negative, hi, lo);
     let far = Vec3A::select(negative, lo, hi);
@@ -253,14 +255,14 @@ impl Bvh {
         loop {
             let here = &self.nodes[node];
             let mut next = None;
-            if here.count > 0 {
-                let first = here.first as usize;
-                match leaf(first..first + here.count as usize) {
+            if here.count() > 0 {
+                let first = here.first() as usize;
+                match leaf(first..first + here.count() as usize) {
                     Walk::Continue { t_max: t } => t_max = t,
                     Walk::Stop => return,
                 }
             } else {
-                let left = here.first as usize;
+                let left = here.first() as usize;
                 let hit = |i: usize| box_entry(&self.nodes[i], &box_ray, t_min, t_max);
                 next = match (hit(left), hit(left + 1)) {
                     (Some(a), Some(b)) => {

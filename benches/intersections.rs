@@ -4,8 +4,9 @@
 
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group};
 use glam::Vec3;
+use render_lessons::course::measure::machine::CpuWatch;
 use render_lessons::ray::Ray;
 use render_lessons::shapes::{Aabb, Plane, Quadric, Sphere, Triangle};
 
@@ -81,4 +82,11 @@ fn bench(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench);
-criterion_main!(benches);
+
+/// criterion's figures, then the machine and whether the CPU was quiet meanwhile.
+fn main() {
+    let watch = CpuWatch::start();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    println!("{}", watch.report());
+}

@@ -10,10 +10,11 @@
 //! repeat ten times; it is measured on every 30th row (36 rows, 69 120 rays) and
 //! reported per ray. Frame time = 2 073 600 rays / (rays per second).
 
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
 use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
+use render_lessons::course::measure::machine::CpuWatch;
 use render_lessons::lighting::lambert;
 use render_lessons::raster::{Cull, Mesh, Model, RasterSettings, rasterize};
 use render_lessons::raycast::lit_unshadowed;
@@ -135,4 +136,11 @@ fn bvh_ray_cast(c: &mut Criterion) {
 }
 
 criterion_group!(benches, raster, bvh_ray_cast, ray_cast);
-criterion_main!(benches);
+
+/// criterion's figures, then the machine and whether the CPU was quiet meanwhile.
+fn main() {
+    let watch = CpuWatch::start();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    println!("{}", watch.report());
+}

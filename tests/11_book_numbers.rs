@@ -128,6 +128,12 @@ fn every_chart_has_a_fragment_from_a_full_run_and_its_times_say_where() {
             run.starts_with("Times from one `--full` run on ") && run.contains(" cores of "),
             "{stem}.md: {run}"
         );
+        let machine =
+            anchored(&text, "machine").unwrap_or_else(|| panic!("{stem}.md: no `machine`"));
+        assert!(
+            run.contains(machine.trim_end()),
+            "{stem}.md: {machine} is not in {run}"
+        );
         // Every timed table ends with the run's line: look at each table's block.
         for block in text.split("<!-- ANCHOR: ").skip(1) {
             let name = block.split_whitespace().next().unwrap_or("");

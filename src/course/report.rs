@@ -214,10 +214,10 @@ impl Run {
         }
     }
 
-    /// The line under every timed table.
-    pub fn line(&self) -> String {
+    /// The run in a few words, for a sentence: "`--full` run on 2 cores of ..., 2026-11-23".
+    pub fn short(&self) -> String {
         format!(
-            "Times from one `{}` run on {}, {}: they change with the machine and its load.",
+            "`{}` run on {}, {}",
             if self.quality == "full" {
                 "--full"
             } else {
@@ -225,6 +225,14 @@ impl Run {
             },
             self.machine,
             self.date
+        )
+    }
+
+    /// The line under every timed table.
+    pub fn line(&self) -> String {
+        format!(
+            "Times from one {}: they change with the machine and its load.",
+            self.short()
         )
     }
 }
@@ -292,11 +300,15 @@ impl Fragment {
         let mut out = Vec::new();
         for t in &self.tables {
             let line = |cells: &[String]| format!("| {} |\n", cells.join(" | "));
-            // Columns of numbers are right-aligned, so their digits line up.
+            // Columns of numbers are right-aligned, so their digits line up; a cell
+            // that says a number is missing ("-", "not run") does not count.
             let numeric = |c: usize| {
-                t.rows.iter().all(|r| {
-                    r.get(c)
-                        .and_then(|cell| cell.trim_start_matches('-').chars().next())
+                let cells = t.rows.iter().filter_map(|r| r.get(c));
+                let mut numbers = cells.filter(|cell| !matches!(cell.as_str(), "-" | "not run"));
+                numbers.all(|cell| {
+                    cell.trim_start_matches('-')
+                        .chars()
+                        .next()
                         .is_some_and(|ch| ch.is_ascii_digit())
                 })
             };
@@ -322,7 +334,8 @@ impl Fragment {
     }
 
     /// The whole file: a comment saying where it comes from, then every table and
-    /// value between its anchors, and the run's line under the anchor `run`.
+    /// value between its anchors, the run's line under the anchor `run` and its few
+    /// words ([`Run::short`]) under `machine`.
     pub fn markdown(&self, stem: &str, run: &Run) -> String {
         let mut out = format!(
             "<!-- {stem}.md: the numbers of chart {stem} that the book quotes, written by \
@@ -335,6 +348,8 @@ impl Fragment {
             out.push('\n');
         }
         out.push_str(&anchored_block("run", &format!("{}\n", run.line())));
+        out.push('\n');
+        out.push_str(&anchored_block("machine", &format!("{}\n", run.short())));
         out
     }
 }

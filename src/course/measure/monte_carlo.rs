@@ -297,6 +297,24 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
             format!("{:.1e}", efficiency(c) / best),
         ]);
     }
+    // Both tables side by side, for the chapter (timed: a test compares `estimators`).
+    let mut summary = Quoted::new(
+        "summary",
+        true,
+        &[
+            "estimator",
+            "slope",
+            "variance of one sample",
+            "ns per sample",
+            "efficiency / the best's",
+        ],
+    );
+    for row in &exact_table.rows {
+        let timed = times.rows.iter().find(|t| t[0] == row[0]);
+        let mut cells = row.clone();
+        cells.extend(timed.map_or(vec!["-".into(), "-".into()], |t| t[1..].to_vec()));
+        summary = summary.row(cells);
+    }
     let ratio = |a: Estimator, b: Estimator| {
         let e = |x: Estimator| costs.iter().find(|c| c.0 == x).map_or(f64::NAN, efficiency);
         e(a) / e(b)
@@ -304,6 +322,7 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
     let quoted = Fragment::default()
         .table(exact_table)
         .table(times)
+        .table(summary)
         .value(
             "cone_over_cosine",
             true,

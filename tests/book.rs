@@ -740,520 +740,101 @@ const SLOPE: &str = "slope of log RMSE";
 const RMSE: &str = "RMSE after 256 spp";
 const DIFFER: &str = "pixels differing (%)";
 
-/// Every number the chapters quote inline from lesson 11's fragments.
+/// Every number the chapters quote inline from lesson 11's fragments (one a line).
+#[rustfmt::skip]
 const QUOTES: &[Quote] = &[
     // S1, chart 1: lesson 07, "Where methods fail", lesson 11.
-    quote(
-        CH07_1,
-        "textbook's $t$ is off by ${}$",
-        S1,
-        "accuracy",
-        ("1e3", TB),
-        0,
-    ),
-    quote(
-        CH07_1,
-        "$D/r = 3\\cdot 10^3$, **{} %**",
-        S1,
-        "accuracy",
-        ("3e3", TB_WRONG),
-        0,
-    ),
-    quote(
-        CH07_1,
-        "at $D/r = 10^4$ **{} %**",
-        S1,
-        "accuracy",
-        ("1e4", TB_WRONG),
-        0,
-    ),
+    quote(CH07_1, "textbook's $t$ is off by ${}$", S1, "accuracy", ("1e3", TB), 0),
+    quote(CH07_1, "$D/r = 3\\cdot 10^3$, **{} %**", S1, "accuracy", ("3e3", TB_WRONG), 0),
+    quote(CH07_1, "at $D/r = 10^4$ **{} %**", S1, "accuracy", ("1e4", TB_WRONG), 0),
     value(CH07_1, "never exceeds ${}$", S1, "stable_f32_max"),
-    quote(
-        ROOTS,
-        "${}$ of $t$ on average",
-        S1,
-        "accuracy",
-        ("1e3", TB),
-        0,
-    ),
-    quote(
-        ROOTS,
-        "at $3\\cdot 10^3$ **{} %**",
-        S1,
-        "accuracy",
-        ("3e3", TB_WRONG),
-        0,
-    ),
-    quote(
-        ROOTS,
-        "$10^4$ **{} %**: at ten",
-        S1,
-        "accuracy",
-        ("1e4", TB_WRONG),
-        0,
-    ),
+    quote(ROOTS, "${}$ of $t$ on average", S1, "accuracy", ("1e3", TB), 0),
+    quote(ROOTS, "at $3\\cdot 10^3$ **{} %**", S1, "accuracy", ("3e3", TB_WRONG), 0),
+    quote(ROOTS, "$10^4$ **{} %**: at ten", S1, "accuracy", ("1e4", TB_WRONG), 0),
     value(ROOTS, "at most ${}$, the rounding", S1, "stable_f32_max"),
-    quote(
-        FAIL,
-        "$10^4$ | {} %, ",
-        S1,
-        "accuracy",
-        ("3e3", TB_WRONG),
-        0,
-    ),
-    quote(
-        FAIL,
-        ", {} % wrong | 0 %, 0 %",
-        S1,
-        "accuracy",
-        ("1e4", TB_WRONG),
-        0,
-    ),
-    quote(
-        CH11,
-        "grows with $D/r$: ${}$ at",
-        S1,
-        "accuracy",
-        ("1e3", TB),
-        0,
-    ),
-    quote(
-        CH11,
-        "falls apart: {} % of the rays",
-        S1,
-        "accuracy",
-        ("3e3", TB_WRONG),
-        0,
-    ),
-    quote(
-        CH11,
-        "$3\\cdot 10^3$, {} % at $10^4$",
-        S1,
-        "accuracy",
-        ("1e4", TB_WRONG),
-        0,
-    ),
+    quote(FAIL, "$10^4$ | {} %, ", S1, "accuracy", ("3e3", TB_WRONG), 0),
+    quote(FAIL, ", {} % wrong | 0 %, 0 %", S1, "accuracy", ("1e4", TB_WRONG), 0),
+    quote(CH11, "grows with $D/r$: ${}$ at", S1, "accuracy", ("1e3", TB), 0),
+    quote(CH11, "falls apart: {} % of the rays", S1, "accuracy", ("3e3", TB_WRONG), 0),
+    quote(CH11, "$3\\cdot 10^3$, {} % at $10^4$", S1, "accuracy", ("1e4", TB_WRONG), 0),
     value(CH11, "stay below ${}$", S1, "stable_f32_max"),
-    quote(
-        CH11,
-        "lower floor (${}$ at $10^6$)",
-        S1,
-        "accuracy",
-        ("1e6", "textbook f64"),
-        0,
-    ),
+    quote(CH11, "lower floor (${}$ at $10^6$)", S1, "accuracy", ("1e6", "textbook f64"), 0),
     // S4, S5, S6, chart 2.
-    quote(
-        CH07_4,
-        "leaks **{} of 242** vertex",
-        S4,
-        "leaks",
-        (AT_V, MT),
-        0,
-    ),
-    quote(
-        CH07_4,
-        "**12 of {}** vertex",
-        S4,
-        "leaks",
-        (AT_V, "rays"),
-        0,
-    ),
-    quote(
-        CH07_4,
-        "({} %) and **52 of 720**",
-        S4,
-        "leaks",
-        (AT_V, MT),
-        1,
-    ),
+    quote(CH07_4, "leaks **{} of 242** vertex", S4, "leaks", (AT_V, MT), 0),
+    quote(CH07_4, "**12 of {}** vertex", S4, "leaks", (AT_V, "rays"), 0),
+    quote(CH07_4, "({} %) and **52 of 720**", S4, "leaks", (AT_V, MT), 1),
     quote(CH07_4, "**{} of 720** edge", S4, "leaks", (AT_E, MT), 0),
     quote(CH07_4, "**52 of {}** edge", S4, "leaks", (AT_E, "rays"), 0),
     quote(CH07_4, "edge rays ({} %)", S4, "leaks", (AT_E, MT), 1),
-    quote(
-        TRIS,
-        "leaks **{} of 242** vertex",
-        S4,
-        "leaks",
-        (AT_V, MT),
-        0,
-    ),
-    quote(
-        TRIS,
-        "({} %) and\n**52 of 720**",
-        S4,
-        "leaks",
-        (AT_V, MT),
-        1,
-    ),
+    quote(TRIS, "leaks **{} of 242** vertex", S4, "leaks", (AT_V, MT), 0),
+    quote(TRIS, "({} %) and\n**52 of 720**", S4, "leaks", (AT_V, MT), 1),
     quote(TRIS, "**{} of 720** edge", S4, "leaks", (AT_E, MT), 0),
     quote(TRIS, "edge rays ({} %)", S4, "leaks", (AT_E, MT), 1),
-    quote(
-        FAIL,
-        "rays at vertices | {} / 242",
-        S4,
-        "leaks",
-        (AT_V, MT),
-        0,
-    ),
+    quote(FAIL, "rays at vertices | {} / 242", S4, "leaks", (AT_V, MT), 0),
     quote(FAIL, "| 12 / {} leak", S4, "leaks", (AT_V, "rays"), 0),
     quote(FAIL, "shared edges | {} / 720", S4, "leaks", (AT_E, MT), 0),
     quote(FAIL, "| 52 / {} leak", S4, "leaks", (AT_E, "rays"), 0),
     quote(CH11, "at the {} vertices", S4, "leaks", (AT_V, "rays"), 0),
     quote(CH11, "each of its {}", S4, "leaks", (AT_E, "rays"), 0),
-    quote(
-        CH11,
-        "lets {} % of them",
-        S4,
-        "leaks",
-        ("vertices + 7 per edge", MT),
-        1,
-    ),
+    quote(CH11, "lets {} % of them", S4, "leaks", ("vertices + 7 per edge", MT), 1),
     quote(CH11, "hence its {} % and", S4, "leaks", (AT_V, MT), 1),
     quote(CH11, "% and {} %:", S4, "leaks", (AT_E, MT), 1),
-    quote(
-        CH11,
-        "slivers it leaks {} %",
-        S4,
-        "leaks",
-        ("a mesh of slivers", "widened by 1e-6"),
-        1,
-    ),
-    quote(
-        CH07_3,
-        "test hits: {} of them",
-        S4,
-        "boxes",
-        ("plain", "rays at a vertex"),
-        0,
-    ),
-    quote(
-        CH07_3,
-        "box for\n**{}**",
-        S4,
-        "boxes",
-        ("plain", "rejected"),
-        0,
-    ),
-    quote(
-        CH07_3,
-        "**11 327** ({} %)",
-        S4,
-        "boxes",
-        ("plain", "rejected"),
-        1,
-    ),
-    quote(
-        CH07_3,
-        "rejects about {} % of",
-        S4,
-        "boxes",
-        ("plain", "rejected"),
-        1,
-    ),
-    quote(
-        TRIS,
-        "run, the {} in",
-        S4,
-        "boxes",
-        ("plain", "rays at a vertex"),
-        0,
-    ),
-    quote(
-        TRIS,
-        "box in **{}** of the",
-        S4,
-        "boxes",
-        ("plain", "rejected"),
-        0,
-    ),
-    quote(
-        TRIS,
-        "{} cases (",
-        S4,
-        "boxes",
-        ("plain", "rays at a vertex"),
-        0,
-    ),
+    quote(CH11, "slivers it leaks {} %", S4, "leaks", ("a mesh of slivers", "widened by 1e-6"), 1),
+    quote(CH07_3, "test hits: {} of them", S4, "boxes", ("plain", "rays at a vertex"), 0),
+    quote(CH07_3, "box for\n**{}**", S4, "boxes", ("plain", "rejected"), 0),
+    quote(CH07_3, "**11 327** ({} %)", S4, "boxes", ("plain", "rejected"), 1),
+    quote(CH07_3, "rejects about {} % of", S4, "boxes", ("plain", "rejected"), 1),
+    quote(TRIS, "run, the {} in", S4, "boxes", ("plain", "rays at a vertex"), 0),
+    quote(TRIS, "box in **{}** of the", S4, "boxes", ("plain", "rejected"), 0),
+    quote(TRIS, "{} cases (", S4, "boxes", ("plain", "rays at a vertex"), 0),
     quote(TRIS, "cases ({} %)", S4, "boxes", ("plain", "rejected"), 1),
-    quote(
-        FAIL,
-        "hit triangle | {} % rejected",
-        S4,
-        "boxes",
-        ("plain", "rejected"),
-        1,
-    ),
-    quote(
-        CH11,
-        "slab test rejects {} % of",
-        S4,
-        "boxes",
-        ("plain", "rejected"),
-        1,
-    ),
+    quote(FAIL, "hit triangle | {} % rejected", S4, "boxes", ("plain", "rejected"), 1),
+    quote(CH11, "slab test rejects {} % of", S4, "boxes", ("plain", "rejected"), 1),
     // S13, S14, chart 3.
-    quote(
-        OFFSETS,
-        "but **{} %** at $10^4$",
-        S13,
-        "self_hits",
-        ("1e4", FIXED),
-        0,
-    ),
-    quote(
-        OFFSETS,
-        "$10^4$ and {} % at",
-        S13,
-        "self_hits",
-        ("1e5", FIXED),
-        0,
-    ),
-    quote(
-        FAIL,
-        "$t > 10^{-4}$: {} % self-hits",
-        S13,
-        "self_hits",
-        ("1e4", FIXED),
-        0,
-    ),
-    quote(
-        CH11,
-        "{} % of the rays hit themselves",
-        S13,
-        "self_hits",
-        ("1", "no offset (%)"),
-        0,
-    ),
-    quote(
-        CH11,
-        "on: {} % at $10^4$",
-        S13,
-        "self_hits",
-        ("1e4", FIXED),
-        0,
-    ),
-    quote(
-        CH11,
-        "$10^4$, {} % at $10^5$",
-        S13,
-        "self_hits",
-        ("1e5", FIXED),
-        0,
-    ),
+    quote(OFFSETS, "but **{} %** at $10^4$", S13, "self_hits", ("1e4", FIXED), 0),
+    quote(OFFSETS, "$10^4$ and {} % at", S13, "self_hits", ("1e5", FIXED), 0),
+    quote(FAIL, "$t > 10^{-4}$: {} % self-hits", S13, "self_hits", ("1e4", FIXED), 0),
+    quote(CH11, "{} % of the rays hit themselves", S13, "self_hits", ("1", "no offset (%)"), 0),
+    quote(CH11, "on: {} % at $10^4$", S13, "self_hits", ("1e4", FIXED), 0),
+    quote(CH11, "$10^4$, {} % at $10^5$", S13, "self_hits", ("1e5", FIXED), 0),
     quote(CH11, "(${}$ at 1,", S13, "self_hits", ("1", SIZE), 0),
-    quote(
-        CH11,
-        "${}$ at $10^3$, $0.51",
-        S13,
-        "self_hits",
-        ("1e3", SIZE),
-        0,
-    ),
-    quote(
-        CH11,
-        "${}$ at $10^5$), keeps",
-        S13,
-        "self_hits",
-        ("1e5", SIZE),
-        0,
-    ),
+    quote(CH11, "${}$ at $10^3$, $0.51", S13, "self_hits", ("1e3", SIZE), 0),
+    quote(CH11, "${}$ at $10^5$), keeps", S13, "self_hits", ("1e5", SIZE), 0),
     // S15, chart 4.
     quote(OFFSETS, "${}$ at $X = 1$", S15, "errors", ("1", WORLD), 0),
-    quote(
-        OFFSETS,
-        "${}$ at $10^4$ and",
-        S15,
-        "errors",
-        ("1e4", WORLD),
-        0,
-    ),
-    quote(
-        OFFSETS,
-        "**${}$** at $10^6$",
-        S15,
-        "errors",
-        ("1e6", WORLD),
-        0,
-    ),
-    quote(
-        OFFSETS,
-        "every $X$**, ${}$ at $10^6$",
-        S15,
-        "errors",
-        ("1e6", RELATIVE),
-        0,
-    ),
-    quote(
-        OFFSETS,
-        "gives ${}$ there",
-        S15,
-        "errors",
-        ("1e6", "f64 world space"),
-        0,
-    ),
+    quote(OFFSETS, "${}$ at $10^4$ and", S15, "errors", ("1e4", WORLD), 0),
+    quote(OFFSETS, "**${}$** at $10^6$", S15, "errors", ("1e6", WORLD), 0),
+    quote(OFFSETS, "every $X$**, ${}$ at $10^6$", S15, "errors", ("1e6", RELATIVE), 0),
+    quote(OFFSETS, "gives ${}$ there", S15, "errors", ("1e6", "f64 world space"), 0),
     quote(FAIL, "world `f32`: ${}$", S15, "errors", ("1e6", WORLD), 0),
-    quote(
-        FAIL,
-        "camera-relative: ${}$",
-        S15,
-        "errors",
-        ("1e6", RELATIVE),
-        0,
-    ),
+    quote(FAIL, "camera-relative: ${}$", S15, "errors", ("1e6", RELATIVE), 0),
     quote(CH11, "at $X$: ${}$ at", S15, "errors", ("1", WORLD), 0),
-    quote(
-        CH11,
-        "$X = 1$, ${}$ at $10^4$",
-        S15,
-        "errors",
-        ("1e4", WORLD),
-        0,
-    ),
-    quote(
-        CH11,
-        "$10^4$, ${}$ at $10^6$ (STABILITY S15)",
-        S15,
-        "errors",
-        ("1e6", WORLD),
-        0,
-    ),
-    quote(
-        CH11,
-        "error at ${}$ at $10^6$, as near",
-        S15,
-        "errors",
-        ("1e6", RELATIVE),
-        0,
-    ),
-    quote(
-        CH11,
-        "start\n(${}$ at",
-        S15,
-        "errors",
-        ("1e6", "f64 world space"),
-        0,
-    ),
+    quote(CH11, "$X = 1$, ${}$ at $10^4$", S15, "errors", ("1e4", WORLD), 0),
+    quote(CH11, "$10^4$, ${}$ at $10^6$ (STABILITY S15)", S15, "errors", ("1e6", WORLD), 0),
+    quote(CH11, "error at ${}$ at $10^6$, as near", S15, "errors", ("1e6", RELATIVE), 0),
+    quote(CH11, "start\n(${}$ at", S15, "errors", ("1e6", "f64 world space"), 0),
     // S18, S19, chart 5.
-    quote(
-        CH11,
-        "line has slope ${}$",
-        MC,
-        "estimators",
-        ("cosine", SLOPE),
-        0,
-    ),
-    quote(
-        CH11,
-        "${}$ for uniform directions",
-        MC,
-        "estimators",
-        ("uniform hemisphere", VAR),
-        0,
-    ),
-    quote(
-        CH11,
-        "${}$ for cosine",
-        MC,
-        "estimators",
-        ("cosine", VAR),
-        0,
-    ),
-    quote(
-        CH11,
-        "${}$ for sampling the light's area",
-        MC,
-        "estimators",
-        ("light area", VAR),
-        0,
-    ),
-    quote(
-        CH11,
-        "${}$ for sampling the cone",
-        MC,
-        "estimators",
-        ("light cone", VAR),
-        0,
-    ),
-    quote(
-        CH11,
-        "with the cone, slope ${}$",
-        MC,
-        "estimators",
-        ("light cone, jittered", SLOPE),
-        0,
-    ),
-    quote(
-        CH11,
-        "has variance ${}$ and one cone",
-        MC,
-        "estimators",
-        ("cosine", VAR),
-        0,
-    ),
-    quote(
-        CH11,
-        "${}$. How many",
-        MC,
-        "estimators",
-        ("light cone", VAR),
-        0,
-    ),
+    quote(CH11, "line has slope ${}$", MC, "estimators", ("cosine", SLOPE), 0),
+    quote(CH11, "${}$ for uniform directions", MC, "estimators", ("uniform hemisphere", VAR), 0),
+    quote(CH11, "${}$ for cosine", MC, "estimators", ("cosine", VAR), 0),
+    quote(CH11, "${}$ for sampling the light's area", MC, "estimators", ("light area", VAR), 0),
+    quote(CH11, "${}$ for sampling the cone", MC, "estimators", ("light cone", VAR), 0),
+    quote(CH11, "with the cone, slope ${}$", MC, "estimators", ("light cone, jittered", SLOPE), 0),
+    quote(CH11, "has variance ${}$ and one cone", MC, "estimators", ("cosine", VAR), 0),
+    quote(CH11, "${}$. How many", MC, "estimators", ("light cone", VAR), 0),
     // Chart 6.
-    quote(
-        CH11,
-        "uniform {}, cosine",
-        RENDER,
-        "rmse",
-        ("uniform hemisphere", RMSE),
-        0,
-    ),
-    quote(
-        CH11,
-        "algorithm) {}, next",
-        RENDER,
-        "rmse",
-        ("cosine (smallpt)", RMSE),
-        0,
-    ),
-    quote(
-        CH11,
-        "event {}, MIS",
-        RENDER,
-        "rmse",
-        ("next event", RMSE),
-        0,
-    ),
+    quote(CH11, "uniform {}, cosine", RENDER, "rmse", ("uniform hemisphere", RMSE), 0),
+    quote(CH11, "algorithm) {}, next", RENDER, "rmse", ("cosine (smallpt)", RMSE), 0),
+    quote(CH11, "event {}, MIS", RENDER, "rmse", ("next event", RMSE), 0),
     quote(CH11, "MIS {}; the errors", RENDER, "rmse", ("MIS", RMSE), 0),
     // Chart 7: the largest scene.
     value(CH11, "scenes of 1 to {} triangles", BVH, "largest"),
     value(CH11_1, "from 1 to {}", BVH, "largest"),
     value(TRIS, "rays per second through {}", BVH, "largest"),
     // Chart 8.
-    quote(
-        CH11,
-        "rasterizer gets {} % of its",
-        LESSONS,
-        "errors",
-        ("rasterized, no shadows", DIFFER),
-        0,
-    ),
-    quote(
-        CH11,
-        "agrees to {} %",
-        LESSONS,
-        "errors",
-        ("64 segments, 1024^2 map", DIFFER),
-        0,
-    ),
-    quote(
-        CH11,
-        "(8 segments: {} % wrong)",
-        LESSONS,
-        "errors",
-        ("8 segments, 1024^2 map", DIFFER),
-        0,
-    ),
+    quote(CH11, "rasterizer gets {} % of its", LESSONS, "errors", ("rasterized, no shadows", DIFFER), 0),
+    quote(CH11, "agrees to {} %", LESSONS, "errors", ("64 segments, 1024^2 map", DIFFER), 0),
+    quote(CH11, "(8 segments: {} % wrong)", LESSONS, "errors", ("8 segments, 1024^2 map", DIFFER), 0),
 ];
 
 /// A number as a chapter or a fragment prints it: its value and the size of one
@@ -1550,4 +1131,97 @@ fn the_quote_checker_reads_numbers_as_printed_and_can_fail() {
     assert!(problems[0].contains("prints 7e-8") || problems[0].contains("0.00000007"));
     assert!(problems[2].contains("no row `1e4`"));
     assert!(problems[3].contains("not found"));
+}
+
+/// The chapters whose times come from lesson 11's fragments.
+const TIMED_CHAPTERS: [&str; 11] = [
+    CH07_1,
+    CH07_3,
+    CH07_4,
+    FAIL,
+    ROOTS,
+    TRIS,
+    OFFSETS,
+    "where_methods_fail_cameras.md",
+    "where_methods_fail_monte_carlo.md",
+    CH11,
+    CH11_1,
+];
+
+/// The times typed by hand in `text` (outside code blocks), as "number unit": a
+/// number followed by ns, ms or "million", in a paragraph that does not name
+/// `cargo bench` (whose times `BENCHMARKS.md` records, by hand, for the cases
+/// lesson 11 does not time).
+fn typed_times(text: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut in_code = false;
+    let mut paragraph = Vec::new();
+    let flush = |paragraph: &mut Vec<&str>, found: &mut Vec<String>| {
+        let joined = paragraph.join(" ");
+        paragraph.clear();
+        if joined.contains("cargo bench") {
+            return;
+        }
+        let mut rest = joined.as_str();
+        while !rest.is_empty() {
+            let before_ok = joined.len() == rest.len()
+                || !joined.as_bytes()[joined.len() - rest.len() - 1].is_ascii_alphanumeric();
+            if let Some((p, after)) = printed(rest).filter(|_| before_ok) {
+                let unit = ["ns", "ms", "million"].into_iter().find(|u| {
+                    after.trim_start().strip_prefix(u).is_some_and(|r| {
+                        r.chars().next().is_none_or(|c| !c.is_ascii_alphanumeric())
+                    })
+                });
+                if let Some(unit) = unit {
+                    found.push(format!("{} {unit}", p.value));
+                }
+                rest = after;
+            } else {
+                let next = rest.chars().next().map_or(1, char::len_utf8);
+                rest = &rest[next..];
+            }
+        }
+    };
+    for line in text.lines() {
+        if fence(line).is_some() {
+            in_code = !in_code;
+            flush(&mut paragraph, &mut found);
+            continue;
+        }
+        if in_code {
+            continue;
+        }
+        if line.trim().is_empty() {
+            flush(&mut paragraph, &mut found);
+        } else {
+            paragraph.push(line);
+        }
+    }
+    flush(&mut paragraph, &mut found);
+    found
+}
+
+#[test]
+fn lesson_11_times_are_included_never_typed() {
+    let chapters = Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters");
+    let mut problems = Vec::new();
+    for name in TIMED_CHAPTERS {
+        let text = fs::read_to_string(chapters.join(name)).expect("read chapter");
+        for time in typed_times(&text) {
+            problems.push(format!("{name}: `{time}` typed by hand"));
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "times go stale at the next run of lesson 11: include them from its fragments \
+         ({{{{#include figures/11_N_name.md:anchor}}}}), or name `cargo bench` if they are \
+         BENCHMARKS.md's:\n  {}",
+        problems.join("\n  ")
+    );
+    assert_eq!(
+        typed_times("It takes 7.1 ns, or 2.14 million rays\nper second.\n\n```\n3 ns\n```\n"),
+        vec!["7.1 ns", "2.14 million"]
+    );
+    assert!(typed_times("With `cargo bench`, 28.2 ns.").is_empty());
+    assert!(typed_times("{{#include figures/11_7_scaling.md:bvh_mrays}} million").is_empty());
 }

@@ -20,7 +20,7 @@ use render_lessons::Result;
 use render_lessons::course::chart::{Chart, Scale};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
-use render_lessons::course::report::{Fragment, Quoted, Run};
+use render_lessons::course::report::{BookNumbers, Quoted, Run};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
 use render_lessons::output::write_atomically;
@@ -200,7 +200,7 @@ fn lessons_quoted(
     segments: &[(f64, f64)],
     maps: &[(f64, f64)],
     no_shadows: (f64, f64),
-) -> Fragment {
+) -> BookNumbers {
     let mut settings = vec![("ray cast with shadow rays".to_string(), (traced_ms, 0.0))];
     settings.push(("rasterized, no shadows".into(), no_shadows));
     for (n, &p) in [8, 16, 32, 64, 128].iter().zip(segments) {
@@ -225,7 +225,7 @@ fn lessons_quoted(
         times = times.row(vec![name.clone(), format!("{ms:.0}")]);
         summary = summary.row(vec![name, format!("{differ:.2}"), format!("{ms:.0}")]);
     }
-    Fragment::default()
+    BookNumbers::default()
         .table(errors)
         .table(times)
         .table(summary)

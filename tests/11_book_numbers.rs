@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 use render_lessons::course::measure::{
     ALL, Measure, Quality, monte_carlo, offsets, precision, renderers, sphere, triangle,
 };
-use render_lessons::course::report::{Fragment, Quoted, Run, anchored};
+use render_lessons::course::report::{BookNumbers, Quoted, Run, anchored};
 
 #[path = "../examples/11_speed_vs_accuracy.rs"]
 #[allow(dead_code)]
@@ -40,7 +40,7 @@ fn committed(stem: &str) -> String {
 }
 
 /// Every exact table and value of `fresh` must read the same in the committed file.
-fn same_exact_parts(stem: &str, fresh: &Fragment) {
+fn same_exact_parts(stem: &str, fresh: &BookNumbers) {
     let text = committed(stem);
     assert!(
         text.contains("(quality: full)"),
@@ -163,7 +163,7 @@ fn a_fragment_is_markdown_between_anchors() {
         machine: "2 cores of a test CPU".into(),
         date: "2026-01-02".into(),
     };
-    let fragment = Fragment::default()
+    let fragment = BookNumbers::default()
         .table(
             Quoted::new("errors", false, &["x", "error"])
                 .row(vec!["1e3".into(), "3.7e-5".into()])

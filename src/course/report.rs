@@ -117,14 +117,14 @@ impl Timings {
 /// machine and its load: every timed table ends with the line that says where and
 /// when it was measured).
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Fragment {
+pub struct BookNumbers {
     /// The tables, in the file's order.
     pub tables: Vec<Quoted>,
     /// Single numbers for sentences, in the file's order.
     pub values: Vec<Value>,
 }
 
-/// One table of a [`Fragment`].
+/// One table of a [`BookNumbers`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Quoted {
     /// The anchor it is included by.
@@ -137,7 +137,7 @@ pub struct Quoted {
     pub rows: Vec<Vec<String>>,
 }
 
-/// One number of a [`Fragment`], for a sentence.
+/// One number of a [`BookNumbers`], for a sentence.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Value {
     /// The anchor it is included by.
@@ -176,7 +176,7 @@ impl Quoted {
     }
 }
 
-/// Where and when the times of a [`Fragment`] were measured.
+/// Where and when the times of a [`BookNumbers`] were measured.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Run {
     /// `"full"` (`--full`) or `"quick"`.
@@ -257,15 +257,15 @@ fn anchored_block(name: &str, body: &str) -> String {
     format!("<!-- ANCHOR: {name} -->\n{body}<!-- ANCHOR_END: {name} -->\n")
 }
 
-impl Fragment {
+impl BookNumbers {
     /// The fragment with one more table.
-    pub fn table(mut self, table: Quoted) -> Fragment {
+    pub fn table(mut self, table: Quoted) -> BookNumbers {
         self.tables.push(table);
         self
     }
 
     /// The fragment with one more value.
-    pub fn value(mut self, anchor: &str, timed: bool, text: String) -> Fragment {
+    pub fn value(mut self, anchor: &str, timed: bool, text: String) -> BookNumbers {
         self.values.push(Value {
             anchor: anchor.to_string(),
             timed,
@@ -275,7 +275,7 @@ impl Fragment {
     }
 
     /// The fragment's other tables and values appended to this one's.
-    pub fn merge(mut self, other: Fragment) -> Fragment {
+    pub fn merge(mut self, other: BookNumbers) -> BookNumbers {
         self.tables.extend(other.tables);
         self.values.extend(other.values);
         self
@@ -287,15 +287,15 @@ impl Fragment {
     }
 
     /// The fragment without its timed tables and values: what a test can regenerate.
-    pub fn exact(&self) -> Fragment {
-        Fragment {
+    pub fn exact(&self) -> BookNumbers {
+        BookNumbers {
             tables: self.tables.iter().filter(|t| !t.timed).cloned().collect(),
             values: self.values.iter().filter(|v| !v.timed).cloned().collect(),
         }
     }
 
     /// Each table's and value's anchor and the Markdown between its anchor lines, as
-    /// [`Fragment::markdown`] writes it (`run` only matters for timed parts).
+    /// [`BookNumbers::markdown`] writes it (`run` only matters for timed parts).
     pub fn blocks(&self, run: &Run) -> Vec<(String, String)> {
         let mut out = Vec::new();
         for t in &self.tables {

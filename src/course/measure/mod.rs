@@ -3,7 +3,7 @@
 //! student should read off it. Times are measured here, in the lesson, never in a
 //! test: the tests check only what physics and numerics say must hold.
 //!
-//! Each chart also returns the numbers the book quotes ([`Fragment`]): the lesson
+//! Each chart also returns the numbers the book quotes ([`BookNumbers`]): the lesson
 //! writes them as `11_N_name.md` next to the chart, and the chapters include them
 //! from there, so a number is measured in one place and printed from one file. The
 //! exact parts (errors, counts, shares) come from the `*_quoted` functions, which
@@ -20,7 +20,7 @@ pub mod triangle;
 use std::time::Instant;
 
 use crate::course::chart::Chart;
-use crate::course::report::Fragment;
+use crate::course::report::BookNumbers;
 use crate::error::Result;
 
 /// How long to measure: a quick look (about a minute for the whole lesson) or
@@ -56,7 +56,7 @@ pub struct Measured {
     /// One line per finding, e.g. "textbook roots: 47% wrong at D/r = 1e4".
     pub findings: Vec<String>,
     /// The numbers the book quotes from this chart, exact and timed.
-    pub quoted: Fragment,
+    pub quoted: BookNumbers,
 }
 
 /// A measurement of one chart.

@@ -20,7 +20,7 @@ use rayon::prelude::*;
 
 use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale, log_log_slope};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::material::Material;
 use crate::pathtrace::light::{self, SphereSampling};
@@ -319,7 +319,7 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
         let e = |x: Estimator| costs.iter().find(|c| c.0 == x).map_or(f64::NAN, efficiency);
         e(a) / e(b)
     };
-    let quoted = Fragment::default()
+    let quoted = BookNumbers::default()
         .table(exact_table)
         .table(times)
         .table(summary)

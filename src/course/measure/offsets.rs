@@ -14,7 +14,7 @@ use glam::Vec3;
 use super::{Measured, Quality};
 use crate::basis::Basis;
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::offset::{Offset, offset_ray_origin};
 use crate::ray::Ray;
@@ -119,7 +119,7 @@ pub(crate) fn label(x: f64) -> String {
 /// The numbers the book quotes from chart 3, all exact: table `self_hits`, each
 /// method's self-hit rate and the scaled offset's size at [`QUOTED_DISTANCES`] (from
 /// `rates`, as [`data`] returns them); table `contact`, S14's contact shadow.
-pub fn quoted(rates: &[Vec<(f64, f64)>]) -> Result<Fragment> {
+pub fn quoted(rates: &[Vec<(f64, f64)>]) -> Result<BookNumbers> {
     let rate = |method: usize, x: f64| {
         rates
             .get(method)
@@ -162,11 +162,11 @@ pub fn quoted(rates: &[Vec<(f64, f64)>]) -> Result<Fragment> {
         blocks(contact_shadow_blocked(Offset::Fixed(1e-4))?).into(),
         blocks(contact_shadow_blocked(Offset::Scaled)?).into(),
     ]);
-    Ok(Fragment::default().table(table).table(contact))
+    Ok(BookNumbers::default().table(table).table(contact))
 }
 
 /// The numbers the book quotes from chart 3, measured at `quality`.
-pub fn exact_quoted(quality: Quality) -> Result<Fragment> {
+pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
     quoted(&data(quality)?)
 }
 

@@ -25,7 +25,7 @@ use super::sphere::{reference, stable_f64};
 use super::{Measured, Quality};
 use crate::camera::{Film, Frame, PinholeCamera};
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::shapes::Sphere;
 
@@ -133,7 +133,7 @@ fn spacing(x: f64) -> f64 {
 /// The numbers the book quotes from chart 4, all exact: table `errors`, each
 /// method's mean hit-point error at [`QUOTED_DISTANCES`] (from `curves`, as [`data`]
 /// returns them), with the f32 spacing there.
-pub fn quoted(curves: &[Vec<(f64, f64)>]) -> Fragment {
+pub fn quoted(curves: &[Vec<(f64, f64)>]) -> BookNumbers {
     let at = |m: usize, x: f64| {
         curves
             .get(m)
@@ -150,11 +150,11 @@ pub fn quoted(curves: &[Vec<(f64, f64)>]) -> Fragment {
         cells.push(format!("{:.1e}", spacing(x)));
         table = table.row(cells);
     }
-    Fragment::default().table(table)
+    BookNumbers::default().table(table)
 }
 
 /// The numbers the book quotes from chart 4, measured at `quality`.
-pub fn exact_quoted(quality: Quality) -> Result<Fragment> {
+pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
     Ok(quoted(&data(quality)?))
 }
 

@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use super::{Measured, Quality};
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
@@ -216,7 +216,7 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
         cells.extend(timed[1..].iter().cloned());
         summary = summary.row(cells);
     }
-    let quoted = Fragment::default()
+    let quoted = BookNumbers::default()
         .table(rmse_table)
         .table(time_table)
         .table(summary);

@@ -12,7 +12,7 @@ use super::{Measured, Quality};
 use crate::bvh::BvhScene;
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::raster::Mesh;
 use crate::ray::Ray;
@@ -179,7 +179,7 @@ pub fn measure(quality: Quality) -> Result<Measured> {
 /// `frames`, every row's frame, build and throughput; values `bvh_mrays` (million
 /// rays per second through the tree at the largest size) and `largest` (its
 /// number of primitives).
-fn quoted(rows: &[Row], rays: u32) -> Fragment {
+fn quoted(rows: &[Row], rays: u32) -> BookNumbers {
     let ms = |s: f64| format!("{:.2}", 1e3 * s);
     let mrays = |s: f64| f64::from(rays) / s / 1e6;
     let mut table = Quoted::new(
@@ -202,7 +202,7 @@ fn quoted(rows: &[Row], rays: u32) -> Fragment {
             format!("{:.2}", mrays(r.bvh)),
         ]);
     }
-    let mut fragment = Fragment::default().table(table);
+    let mut fragment = BookNumbers::default().table(table);
     if let Some(last) = rows.last() {
         fragment = fragment
             .value("bvh_mrays", true, format!("{:.2}", mrays(last.bvh)))

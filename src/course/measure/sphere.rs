@@ -19,7 +19,7 @@ use glam::{DVec3, Vec3};
 
 use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::ray::Ray;
 use crate::shapes::Sphere;
@@ -268,7 +268,7 @@ pub const QUOTED_DISTANCES: [f64; 7] = [1e1, 1e2, 1e3, 3e3, 1e4, 1e5, 1e6];
 /// every method's mean relative error and the f32 methods' shares of wrong answers
 /// (table `accuracy`); the largest error of each stable method anywhere on the chart
 /// (values `stable_f32_max`, `stable_f64_max`).
-pub fn quoted(curves: &[Curve]) -> Fragment {
+pub fn quoted(curves: &[Curve]) -> BookNumbers {
     let curve = |m: SphereMethod| curves.iter().find(|c| c.method == m);
     let error = |m, x| curve(m).map_or(f64::NAN, |c| at(&c.errors, x));
     let wrong = |m, x| curve(m).map_or(f64::NAN, |c| 100.0 * at(&c.wrong, x));
@@ -297,7 +297,7 @@ pub fn quoted(curves: &[Curve]) -> Fragment {
         cells.push(format!("{:.2}", wrong(SphereMethod::StableF32, x)));
         table = table.row(cells);
     }
-    Fragment::default()
+    BookNumbers::default()
         .table(table)
         .value(
             "stable_f32_max",
@@ -312,14 +312,14 @@ pub fn quoted(curves: &[Curve]) -> Fragment {
 }
 
 /// The exact part of chart 1's numbers, measured at `quality` (no timing).
-pub fn exact_quoted(quality: Quality) -> Result<Fragment> {
+pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
     Ok(quoted(&data(quality)?))
 }
 
 /// The times the book quotes from chart 1 (`ns`, in the order of
 /// [`SphereMethod::ALL`]): table `times`, and the row `cost` for the cost table of
 /// "Where methods fail".
-pub fn quoted_times(ns: [f64; 4]) -> Fragment {
+pub fn quoted_times(ns: [f64; 4]) -> BookNumbers {
     let mut times = Quoted::new(
         "times",
         true,
@@ -343,7 +343,7 @@ pub fn quoted_times(ns: [f64; 4]) -> Fragment {
         format!("{:.1} / {:.1}", ns[0], ns[1]),
         format!("{:.2}x", ns[1] / ns[0]),
     ]);
-    Fragment::default().table(times).table(cost)
+    BookNumbers::default().table(times).table(cost)
 }
 
 /// The chart: relative error of the hit distance against D/r, one line per method,

@@ -17,7 +17,7 @@ use glam::Vec3;
 use super::sphere::fastest;
 use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{Fragment, Quoted};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::pathtrace::Rng;
 use crate::ray::Ray;
@@ -295,7 +295,7 @@ fn share(k: usize, n: usize) -> String {
 /// timing): table `leaks`, each method's leaks on the rays at the lesson mesh's
 /// vertices (S4), at its edge midpoints (S5), on the chart's whole ray set and on
 /// the mesh of slivers; table `boxes`, the S6 rejections of both slab tests.
-pub fn exact_quoted(quality: Quality) -> Result<Fragment> {
+pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
     let (vertices, _) = bumpy_sphere(MESH.0, MESH.1);
     let (tris, midpoint_rays) = mesh_and_rays(MESH, 1)?;
     let (at_vertices, at_midpoints) = midpoint_rays.split_at(vertices.len());
@@ -339,13 +339,13 @@ pub fn exact_quoted(quality: Quality) -> Result<Fragment> {
         cases.to_string(),
         share(conservative, cases),
     ]);
-    Ok(Fragment::default().table(leaks_table).table(boxes))
+    Ok(BookNumbers::default().table(leaks_table).table(boxes))
 }
 
 /// The times the book quotes from chart 2: table `times` (each triangle test, and
 /// both slab tests, with the ratio to the naive one), and the rows `cost` for the
 /// cost table of "Where methods fail".
-fn quoted_times(ns: [f64; 3], plain_ns: f64, conservative_ns: f64) -> Fragment {
+fn quoted_times(ns: [f64; 3], plain_ns: f64, conservative_ns: f64) -> BookNumbers {
     let mut times = Quoted::new("times", true, &["test", "ns per test", "x the naive test"]);
     for (m, t) in TriangleMethod::ALL.iter().zip(ns) {
         times = times.row(vec![
@@ -382,7 +382,7 @@ fn quoted_times(ns: [f64; 3], plain_ns: f64, conservative_ns: f64) -> Fragment {
         format!("{plain_ns:.1} / {conservative_ns:.1}"),
         format!("{:.2}x", conservative_ns / plain_ns),
     ]);
-    Fragment::default().table(times).table(cost)
+    BookNumbers::default().table(times).table(cost)
 }
 
 /// The methods not beaten by another on both counts (faster and leaking no more, or

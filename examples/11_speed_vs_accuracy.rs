@@ -3,11 +3,14 @@
 //! Every chart of the lesson is measured here and now: how much each robust method
 //! of lessons 07-10 costs and how much accuracy it buys, where a naive method fails,
 //! and when an acceleration structure starts to pay. Each chart is written as SVG
-//! (to look at) and CSV (to plot again), and a summary is printed.
+//! (to look at), CSV (to plot again) and Markdown (the numbers the book quotes,
+//! which its chapters include), and a summary is printed.
 //!
 //!     cargo run --release --example 11_speed_vs_accuracy            # about a minute
 //!     cargo run --release --example 11_speed_vs_accuracy -- --full  # publication quality
 //!     cargo run --release --example 11_speed_vs_accuracy -- --only 11_1_sphere
+//!     cargo run --release --example 11_speed_vs_accuracy -- --full --out chapters/figures
+//!                                                # refresh the book's charts and numbers
 
 use std::process::ExitCode;
 use std::time::Instant;
@@ -17,8 +20,10 @@ use render_lessons::Result;
 use render_lessons::course::chart::{Chart, Scale};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
+use render_lessons::course::report::{BookNumbers, Quoted, Run};
 use render_lessons::error::Error;
 use render_lessons::offset::Offset;
+use render_lessons::output::write_atomically;
 use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, reference};
 use render_lessons::raster::{TOLERANCE, point_light, tessellate};
 use render_lessons::raycast::lit;
@@ -33,7 +38,7 @@ pub struct Args {
     #[arg(long)]
     pub full: bool,
     /// Measure only the charts whose name starts with this (e.g. 11_5); each chart is
-    /// written to --out as SVG and CSV.
+    /// written to --out as SVG, CSV and Markdown.
     #[arg(long)]
     pub only: Option<String>,
     #[command(flatten)]
@@ -70,10 +75,14 @@ fn main() -> ExitCode {
         for (stem, measure) in chosen {
             lesson::check_interrupt()?;
             let start = Instant::now();
+            let run = Run::here(quality.name());
             let measured = measure(quality)?;
             for path in measured.chart.save(&args.output.out, stem)? {
                 lesson::wrote(&path);
             }
+            let md = args.output.file(&format!("{stem}.md"));
+            write_atomically(&md, measured.quoted.markdown(stem, &run).as_bytes())?;
+            lesson::wrote(&md);
             summary.push_str(&format!(
                 "{} ({:.1} s)\n",
                 measured.chart.title,
@@ -161,7 +170,8 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     );
     let findings = vec![
         format!(
-            "ray cast with shadow rays: {traced_ms:.0} ms; rasterized with 64 segments and a 1024^2 map: {:.0} ms, {:.2}% of pixels differ",
+            "ray cast with shadow rays: {traced_ms:.0} ms; rasterized with 64 segments and a \
+             1024^2 map: {:.0} ms, {:.2}% of pixels differ",
             segments[3].0, segments[3].1
         ),
         format!(
@@ -173,6 +183,50 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
          the others leave out; chart 6 is its time against error"
             .to_string(),
     ];
-    Ok(Measured { chart, findings })
+    let quoted = lessons_quoted(traced_ms, &segments, &maps, no_shadows);
+    Ok(Measured {
+        chart,
+        findings,
+        quoted,
+    })
 }
 // ANCHOR_END: lessons
+
+/// The numbers the book quotes from chart 8: table `errors` (exact: the share of
+/// pixels that differ from the ray-traced image, for each setting) and table `times`
+/// (the time per frame of each).
+fn lessons_quoted(
+    traced_ms: f64,
+    segments: &[(f64, f64)],
+    maps: &[(f64, f64)],
+    no_shadows: (f64, f64),
+) -> BookNumbers {
+    let mut settings = vec![("ray cast with shadow rays".to_string(), (traced_ms, 0.0))];
+    settings.push(("rasterized, no shadows".into(), no_shadows));
+    for (n, &p) in [8, 16, 32, 64, 128].iter().zip(segments) {
+        settings.push((format!("{n} segments, 1024^2 map"), p));
+    }
+    // The 1024^2 map of 64 segments is a row of both sweeps: listed once.
+    for (size, &p) in [128, 256, 512, 1024, 2048, 4096].iter().zip(maps) {
+        if *size != 1024 {
+            settings.push((format!("64 segments, {size}^2 map"), p));
+        }
+    }
+    let mut errors = Quoted::new("errors", false, &["setting", "pixels differing (%)"]);
+    let mut times = Quoted::new("times", true, &["setting", "ms per frame"]);
+    // Both side by side, for the chapter (timed: a test compares `errors`).
+    let mut summary = Quoted::new(
+        "summary",
+        true,
+        &["setting", "pixels differing (%)", "ms per frame"],
+    );
+    for (name, (ms, differ)) in settings {
+        errors = errors.row(vec![name.clone(), format!("{differ:.2}")]);
+        times = times.row(vec![name.clone(), format!("{ms:.0}")]);
+        summary = summary.row(vec![name, format!("{differ:.2}"), format!("{ms:.0}")]);
+    }
+    BookNumbers::default()
+        .table(errors)
+        .table(times)
+        .table(summary)
+}

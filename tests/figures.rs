@@ -150,3 +150,133 @@ fn a_tick_value_under_a_label_is_left_out_and_a_collision_is_reported() {
     );
     assert_eq!(place, Place::Left);
 }
+
+/// Figures wider than [`MAX_WIDTH`], with the width they may have and why: strips of
+/// renders side by side at the lessons' own 480 px per panel, which the page shows
+/// scaled down. Renders carry no text; a strip's captions are drawn large enough for
+/// the scale (the browser test, tests/browser/check.mjs, checks every figure's
+/// smallest text as the page shows it).
+const STRIPS: [(&str, u32, &str); 4] = [
+    (
+        "09_side_by_side.png",
+        3 * 480 + 2 * 8,
+        "three renders, captions at twice the labels' size",
+    ),
+    ("09_shadows.png", 2 * 480 + 8, "two renders, no text"),
+    ("09_shadow_bias.png", 2 * 480 + 8, "two renders, no text"),
+    ("09_mesh.png", 2 * 480 + 8, "two renders, no text"),
+];
+
+/// The width of a PNG (from its IHDR chunk) or an SVG (its root element's `width`),
+/// in pixels.
+fn image_width(path: &std::path::Path) -> Option<u32> {
+    let bytes = std::fs::read(path).ok()?;
+    match path.extension()?.to_str()? {
+        "png" => {
+            let ihdr = bytes.get(12..24)?;
+            (&ihdr[..4] == b"IHDR")
+                .then(|| u32::from_be_bytes([ihdr[4], ihdr[5], ihdr[6], ihdr[7]]))
+        }
+        "svg" => {
+            let text = String::from_utf8(bytes).ok()?;
+            let root = &text[text.find("<svg")?..];
+            let root = &root[..root.find('>')?];
+            let width = root.split_once(" width=\"")?.1;
+            width[..width.find('"')?]
+                .trim_end_matches("px")
+                .parse::<f64>()
+                .ok()
+                .map(|w| w.ceil() as u32)
+        }
+        _ => None,
+    }
+}
+
+#[test]
+fn every_png_and_svg_of_the_book_fits_the_page() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters/figures");
+    let mut problems = Vec::new();
+    let mut checked = 0;
+    let mut entries: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    entries.sort();
+    for path in entries {
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        let image = path.extension().is_some_and(|e| e == "png" || e == "svg");
+        if !image {
+            continue;
+        }
+        let Some(width) = image_width(&path) else {
+            problems.push(format!("{name}: cannot read its width"));
+            continue;
+        };
+        checked += 1;
+        let allowed = STRIPS
+            .iter()
+            .find(|s| s.0 == name)
+            .map_or(MAX_WIDTH, |s| s.1);
+        if width > allowed {
+            problems.push(format!("{name}: {width} px wide, more than {allowed}"));
+        }
+    }
+    assert!(
+        checked > 40,
+        "only {checked} figures found in {}",
+        dir.display()
+    );
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn the_width_check_reads_png_and_svg() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("a.png");
+    Framebuffer::from_fn(801, 3, |_, _| glam::Vec3::ZERO)
+        .unwrap()
+        .save_png(&png)
+        .unwrap();
+    assert_eq!(image_width(&png), Some(801));
+    let svg = dir.path().join("b.svg");
+    std::fs::write(&svg, "<?xml version=\"1.0\"?>\n<svg width=\"800\" height=\"500\" viewBox=\"0 0 800 500\">\n<rect width=\"10\"/></svg>").unwrap();
+    assert_eq!(image_width(&svg), Some(800));
+    let chart = render_lessons::course::chart::Chart::new(
+        "t",
+        ("x (1)", render_lessons::course::chart::Scale::Linear),
+        ("y (1)", render_lessons::course::chart::Scale::Linear),
+    )
+    .with("s", vec![(0.0, 0.0), (1.0, 1.0)]);
+    std::fs::write(&svg, chart.svg().unwrap()).unwrap();
+    assert_eq!(
+        image_width(&svg),
+        Some(render_lessons::course::chart::WIDTH)
+    );
+}
+
+/// The browser test needs the size of each figure's smallest text; it keeps them as
+/// constants, which must match the code that draws the figures.
+#[test]
+fn the_browser_test_knows_the_figures_text_sizes() {
+    let check = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser/check.mjs"),
+    )
+    .unwrap();
+    let constant = |name: &str| -> f64 {
+        let line = check
+            .lines()
+            .find(|l| l.starts_with(&format!("const {name} = ")))
+            .unwrap_or_else(|| panic!("check.mjs has no `const {name} = `"));
+        line.split('=')
+            .nth(1)
+            .unwrap()
+            .trim()
+            .trim_end_matches(';')
+            .parse()
+            .unwrap()
+    };
+    // Tick values are the smallest text of a diagram: 0.8 of a label.
+    let tick = f64::from(render_lessons::course::diagram::LABEL_SIZE) * 0.8;
+    assert_eq!(constant("DIAGRAM_TEXT_PX"), tick);
+    assert_eq!(constant("MIN_TEXT_PX"), 9.0);
+}

@@ -53,6 +53,19 @@ pub struct Chart {
     pub series: Vec<Series>,
 }
 
+/// The size of a chart's SVG, in pixels: the width of the book's content column
+/// (about 750 px) or a little more, so the page shows it at (nearly) full size.
+pub const WIDTH: u32 = 800;
+/// The height of a chart's SVG, in pixels.
+pub const HEIGHT: u32 = 500;
+
+/// The font size of tick labels, axis names and the legend, in plotters' points:
+/// plotters writes `font-size` = points / 1.24 into the SVG, 12.9 px for 16, which
+/// the page shows at about 12 px (the browser test requires 9 px or more).
+pub const LABEL_SIZE: f64 = 16.0;
+/// The font size of the title, in plotters' points (19.4 px in the SVG).
+pub const TITLE_SIZE: f64 = 24.0;
+
 /// The lines' colours, in order.
 const COLOURS: [RGBColor; 8] = [
     RGBColor(30, 100, 200),
@@ -145,7 +158,7 @@ impl Chart {
         })
     }
 
-    /// The chart as an SVG document, 800 x 500.
+    /// The chart as an SVG document, [`WIDTH`] x [`HEIGHT`].
     pub fn svg(&self) -> Result<String> {
         let drawn: Vec<_> = self.series.iter().map(|s| self.drawable(s)).collect();
         let xs = self.range(drawn.iter().flatten().map(|p| p.0), self.x.scale)?;
@@ -186,18 +199,20 @@ impl Chart {
         X::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
         Y::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
     {
-        let root = SVGBackend::with_string(svg, (800, 500)).into_drawing_area();
+        let root = SVGBackend::with_string(svg, (WIDTH, HEIGHT)).into_drawing_area();
         root.fill(&WHITE)?;
         let mut chart = ChartBuilder::on(&root)
-            .caption(&self.title, ("sans-serif", 20))
+            .caption(&self.title, ("sans-serif", TITLE_SIZE))
             .margin(15)
-            .x_label_area_size(45)
-            .y_label_area_size(75)
+            .x_label_area_size(50)
+            .y_label_area_size(85)
             .build_cartesian_2d(x, y)?;
         chart
             .configure_mesh()
             .x_desc(self.x.label.as_str())
             .y_desc(self.y.label.as_str())
+            .label_style(("sans-serif", LABEL_SIZE))
+            .axis_desc_style(("sans-serif", LABEL_SIZE))
             .x_label_formatter(&|v| tick(*v))
             .y_label_formatter(&|v| tick(*v))
             .draw()?;
@@ -214,6 +229,7 @@ impl Chart {
         }
         chart
             .configure_series_labels()
+            .label_font(("sans-serif", LABEL_SIZE))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .position(self.legend_corner(drawn))

@@ -1,8 +1,8 @@
 // Loads every page of the built book in headless Chromium and checks that it
 // works offline: no requests leave 127.0.0.1, no console errors, no failed
 // same-origin requests, math rendered by KaTeX with its fonts loaded, every
-// figure decoded, every internal link (and #fragment) resolving, and search
-// returning results. Run through scripts/browser-test, which builds and serves
+// figure decoded with its smallest text at least 9 px as the page shows it,
+// every internal link (and #fragment) resolving, and search returning results. Run through scripts/browser-test, which builds and serves
 // the book; by hand:
 //
 //   node tests/browser/check.mjs --base http://127.0.0.1:8000/ \
@@ -85,6 +85,36 @@ function sourceHasMath(file) {
         .replace(/`[^`\n]*`/g, '')
         .replace(/\\\$/g, '');
     return md.includes('$');
+}
+
+// ---- figures: the size of their smallest text ------------------------------
+
+// A figure's smallest text, as the page shows it, must be at least MIN_TEXT_PX:
+// its size in the figure times the figure's rendered width over its natural
+// width. The sizes in the figures' own pixels (tests/figures.rs checks these
+// constants against the code that draws them):
+// - diagrams (src/course/diagram.rs): tick values, 0.8 of LABEL_SIZE = 15 px;
+// - strips of renders (book/figures/src/lesson09.rs): captions of CAPTION_SIZE;
+// - renders: no text at all;
+// - SVG charts (src/course/chart.rs): read from the SVG's own font-size attributes.
+const MIN_TEXT_PX = 9;
+const DIAGRAM_TEXT_PX = 12;
+const TEXT_PX = new Map([['09_side_by_side.png', 30]]);
+const NO_TEXT = new Set([
+    '03_origins.png', '06_ortho_vs_pinhole.png',
+    '08_far_fixed_epsilon.png', '08_far_scaled_offset.png', '08_lambert.png',
+    '08_shadowless_ortho.png', '08_shadowless_pinhole.png',
+    '09_difference.png', '09_mesh.png', '09_shadow_bias.png', '09_shadows.png',
+    '10_convergence.png', '10_step_cosine.png', '10_step_lens.png', '10_step_mis.png',
+    '10_step_nee.png', '10_step_roulette.png', '10_step_specular.png', '10_step_uniform.png',
+]);
+
+// The smallest text of the figure `file` (its name) in its own pixels, or null if
+// it has none; `svgSizes` are the font sizes an SVG declares.
+function smallestText(file, svgSizes) {
+    if (file.endsWith('.svg')) return svgSizes.length > 0 ? Math.min(...svgSizes) : null;
+    if (NO_TEXT.has(file)) return null;
+    return TEXT_PX.get(file) ?? DIAGRAM_TEXT_PX;
 }
 
 // ---- results ---------------------------------------------------------------
@@ -340,7 +370,22 @@ async function checkPage({ page: name, source }) {
             innerText: document.body.innerText,
             katexMainLoaded: document.fonts.check('16px KaTeX_Main'),
             katexFaces,
-            images: imgs.map((img) => ({ src: img.currentSrc || img.src, complete: img.complete, w: img.naturalWidth })),
+            images: await Promise.all(imgs.map(async (img) => {
+                const src = img.currentSrc || img.src;
+                // An SVG's font sizes, from its own text (same origin).
+                let svgSizes = [];
+                if (/\.svg($|[?#])/.test(src)) {
+                    const text = await fetch(src).then((r) => r.text()).catch(() => '');
+                    svgSizes = [...text.matchAll(/font-size="([0-9.]+)(px)?"/g)].map((m) => Number(m[1]));
+                }
+                return {
+                    src,
+                    complete: img.complete,
+                    w: img.naturalWidth,
+                    shown: img.getBoundingClientRect().width,
+                    svgSizes,
+                };
+            })),
             links,
             sidebar,
             ids: [
@@ -377,9 +422,16 @@ async function checkPage({ page: name, source }) {
         check(name, broken.length === 0, `KaTeX fonts failed to load: ${broken.map((f) => `${f.family} ${f.weight} ${f.style}`).join(', ')}`);
     }
 
-    // Figures.
+    // Figures: loaded, and their smallest text legible as the page shows it.
     for (const img of info.images) {
-        check(name, img.complete && img.w > 0, `image did not load: ${rel(img.src)}`);
+        if (!check(name, img.complete && img.w > 0, `image did not load: ${rel(img.src)}`)) continue;
+        const file = decodeURIComponent(new URL(img.src).pathname.split('/').pop());
+        const text = smallestText(file, img.svgSizes);
+        if (text === null || img.shown === 0) continue;
+        const shown = (text * img.shown) / img.w;
+        check(name, shown >= MIN_TEXT_PX,
+            `figure ${file}: its ${text.toFixed(1)} px text is shown at ${shown.toFixed(1)} px ` +
+            `(${Math.round(img.shown)} of ${img.w} px wide), less than ${MIN_TEXT_PX} px`);
     }
 
     // Sidebar: the chapters it shows are the ones SUMMARY.md lists.

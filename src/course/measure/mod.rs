@@ -2,6 +2,12 @@
 //! Each file measures one chart of the lesson and returns it with the findings a
 //! student should read off it. Times are measured here, in the lesson, never in a
 //! test: the tests check only what physics and numerics say must hold.
+//!
+//! Each chart also returns the numbers the book quotes ([`BookNumbers`]): the lesson
+//! writes them as `11_N_name.md` next to the chart, and the chapters include them
+//! from there, so a number is measured in one place and printed from one file. The
+//! exact parts (errors, counts, shares) come from the `*_quoted` functions, which
+//! measure no time, so a test can regenerate them and compare.
 
 pub mod machine;
 pub mod monte_carlo;
@@ -18,6 +24,7 @@ pub mod variance;
 use std::time::Instant;
 
 use crate::course::chart::Chart;
+use crate::course::report::BookNumbers;
 use crate::error::Result;
 
 /// How long to measure: a quick look (about a minute for the whole lesson) or
@@ -38,6 +45,11 @@ impl Quality {
             Quality::Full => full,
         }
     }
+
+    /// `"quick"` or `"full"`, as a fragment records it.
+    pub fn name(self) -> &'static str {
+        self.pick("quick", "full")
+    }
 }
 
 /// One chart and what it shows.
@@ -47,6 +59,8 @@ pub struct Measured {
     pub chart: Chart,
     /// One line per finding, e.g. "textbook roots: 47% wrong at D/r = 1e4".
     pub findings: Vec<String>,
+    /// The numbers the book quotes from this chart, exact and timed.
+    pub quoted: BookNumbers,
 }
 
 /// A measurement of one chart.

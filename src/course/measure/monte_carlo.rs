@@ -20,6 +20,7 @@ use rayon::prelude::*;
 
 use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale, log_log_slope};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::material::Material;
 use crate::pathtrace::light::{self, SphereSampling};
@@ -244,6 +245,11 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
     );
     let mut slopes = Vec::new();
     let mut costs = Vec::new();
+    let mut exact_table = Quoted::new(
+        "estimators",
+        false,
+        &["estimator", "slope of log RMSE", "variance of one sample"],
+    );
     let all = Estimator::INDEPENDENT
         .iter()
         .chain(&[Estimator::LightConeJittered]);
@@ -252,8 +258,14 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
         let slope = log_log_slope(&curve).unwrap_or(f64::NAN);
         chart = chart.with(&format!("{} (slope {slope:.2})", estimator.name()), curve);
         slopes.push(format!("{} {slope:.2}", estimator.name()));
-        if estimator != Estimator::LightConeJittered {
+        let mut cells = vec![estimator.name().to_string(), format!("{slope:.2}")];
+        if estimator == Estimator::LightConeJittered {
+            cells.push("(not independent)".into());
+            exact_table = exact_table.row(cells);
+        } else {
             let var = variance(estimator, variance_samples, 11_600 + i as u64)?;
+            cells.push(format!("{var:.2e}"));
+            exact_table = exact_table.row(cells);
             let settings = estimator.settings();
             let mut rng = Rng::for_pixel(11_700, i as u32, 0);
             // The least of three timings: other work on the machine only adds time.
@@ -273,6 +285,54 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
         .iter()
         .map(|(e, var, ns)| format!("{} {:.1e} / {ns:.0} ns", e.name(), var))
         .collect();
+    let mut times = Quoted::new(
+        "times",
+        true,
+        &["estimator", "ns per sample", "efficiency / the best's"],
+    );
+    for c in &costs {
+        times = times.row(vec![
+            c.0.name().to_string(),
+            format!("{:.0}", c.2),
+            format!("{:.1e}", efficiency(c) / best),
+        ]);
+    }
+    // Both tables side by side, for the chapter (timed: a test compares `estimators`).
+    let mut summary = Quoted::new(
+        "summary",
+        true,
+        &[
+            "estimator",
+            "slope",
+            "variance of one sample",
+            "ns per sample",
+            "efficiency / the best's",
+        ],
+    );
+    for row in &exact_table.rows {
+        let timed = times.rows.iter().find(|t| t[0] == row[0]);
+        let mut cells = row.clone();
+        cells.extend(timed.map_or(vec!["-".into(), "-".into()], |t| t[1..].to_vec()));
+        summary = summary.row(cells);
+    }
+    let ratio = |a: Estimator, b: Estimator| {
+        let e = |x: Estimator| costs.iter().find(|c| c.0 == x).map_or(f64::NAN, efficiency);
+        e(a) / e(b)
+    };
+    let quoted = BookNumbers::default()
+        .table(exact_table)
+        .table(times)
+        .table(summary)
+        .value(
+            "cone_over_cosine",
+            true,
+            format!("{:.1e}", ratio(Estimator::LightCone, Estimator::Cosine)),
+        )
+        .value(
+            "cone_over_mis_cone",
+            true,
+            format!("{:.1}", ratio(Estimator::LightCone, Estimator::MisCone)),
+        );
     let findings = vec![
         format!("slopes of log RMSE against log N: {}", slopes.join(", ")),
         format!("variance / time of one sample: {}", per_sample.join(", ")),
@@ -281,7 +341,11 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
             relative.join(", ")
         ),
     ];
-    Ok(Measured { chart, findings })
+    Ok(Measured {
+        chart,
+        findings,
+        quoted,
+    })
 }
 
 /// The chart of the lesson: N up to 1024, timed on this machine.

@@ -14,6 +14,7 @@ use glam::Vec3;
 use super::{Measured, Quality};
 use crate::basis::Basis;
 use crate::course::chart::{Chart, Scale};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::offset::{Offset, offset_ray_origin};
 use crate::ray::Ray;
@@ -103,6 +104,72 @@ pub fn contact_shadow_blocked(offset: Offset) -> Result<bool> {
         .is_some())
 }
 
+/// The distances |p| of the book's table.
+pub const QUOTED_DISTANCES: [f32; 5] = [1.0, 1e2, 1e3, 1e4, 1e5];
+
+/// A distance as the book's tables print it: 1, 1e2, 1e3, ...
+pub(crate) fn label(x: f64) -> String {
+    if x == 1.0 {
+        "1".into()
+    } else {
+        format!("{x:.0e}")
+    }
+}
+
+/// The numbers the book quotes from chart 3, all exact: table `self_hits`, each
+/// method's self-hit rate and the scaled offset's size at [`QUOTED_DISTANCES`] (from
+/// `rates`, as [`data`] returns them); table `contact`, S14's contact shadow.
+pub fn quoted(rates: &[Vec<(f64, f64)>]) -> Result<BookNumbers> {
+    let rate = |method: usize, x: f64| {
+        rates
+            .get(method)
+            .and_then(|r| r.iter().find(|p| p.0 == x))
+            .map_or(f64::NAN, |p| 100.0 * p.1)
+    };
+    let mut table = Quoted::new(
+        "self_hits",
+        false,
+        &[
+            "distance from the origin",
+            "fixed t > 1e-4 (%)",
+            "no offset (%)",
+            "scaled offset (%)",
+            "scaled offset's size",
+        ],
+    );
+    for x in QUOTED_DISTANCES {
+        let x64 = f64::from(x);
+        table = table.row(vec![
+            label(x64),
+            format!("{:.2}", rate(0, x64)),
+            format!("{:.2}", rate(1, x64)),
+            format!("{:.2}", rate(2, x64)),
+            format!("{:.1e}", scaled_offset_size(x)?),
+        ]);
+    }
+    let blocks = |b: bool| if b { "blocks it" } else { "leaks light" };
+    let contact = Quoted::new(
+        "contact",
+        false,
+        &[
+            "occluder 5e-5 above the floor, 1 from the origin",
+            "fixed t > 1e-4",
+            "scaled offset",
+        ],
+    )
+    .row(vec![
+        "shadow ray from the floor".into(),
+        blocks(contact_shadow_blocked(Offset::Fixed(1e-4))?).into(),
+        blocks(contact_shadow_blocked(Offset::Scaled)?).into(),
+    ]);
+    Ok(BookNumbers::default().table(table).table(contact))
+}
+
+/// The numbers the book quotes from chart 3, measured at `quality`.
+pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
+    quoted(&data(quality)?)
+}
+
 /// The chart: self-hit rate in percent against |p|, one line per way to start the
 /// bounce.
 pub fn measure(quality: Quality) -> Result<Measured> {
@@ -159,5 +226,9 @@ pub fn measure(quality: Quality) -> Result<Measured> {
             blocks(scaled_blocks)
         ),
     ];
-    Ok(Measured { chart, findings })
+    Ok(Measured {
+        chart,
+        findings,
+        quoted: quoted(&rates)?,
+    })
 }

@@ -25,6 +25,7 @@ use super::sphere::{reference, stable_f64};
 use super::{Measured, Quality};
 use crate::camera::{Film, Frame, PinholeCamera};
 use crate::course::chart::{Chart, Scale};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::shapes::Sphere;
 
@@ -120,6 +121,43 @@ pub fn data(quality: Quality) -> Result<Vec<Vec<(f64, f64)>>> {
     Ok(curves)
 }
 
+/// The distances X of the book's table.
+pub const QUOTED_DISTANCES: [f64; 4] = [1.0, 1e2, 1e4, 1e6];
+
+/// The spacing of f32 values at `x`: the distance to the next float above it.
+fn spacing(x: f64) -> f64 {
+    let v = x as f32;
+    f64::from(f32::from_bits(v.to_bits() + 1) - v)
+}
+
+/// The numbers the book quotes from chart 4, all exact: table `errors`, each
+/// method's mean hit-point error at [`QUOTED_DISTANCES`] (from `curves`, as [`data`]
+/// returns them), with the f32 spacing there.
+pub fn quoted(curves: &[Vec<(f64, f64)>]) -> BookNumbers {
+    let at = |m: usize, x: f64| {
+        curves
+            .get(m)
+            .and_then(|c| c.iter().find(|p| p.0 == x))
+            .map_or(f64::NAN, |p| p.1)
+    };
+    let mut header = vec!["X"];
+    header.extend(PrecisionMethod::ALL.map(|m| m.name()));
+    header.push("f32 spacing at X");
+    let mut table = Quoted::new("errors", false, &header);
+    for x in QUOTED_DISTANCES {
+        let mut cells = vec![super::offsets::label(x)];
+        cells.extend([0, 1, 2].map(|m| format!("{:.1e}", at(m, x))));
+        cells.push(format!("{:.1e}", spacing(x)));
+        table = table.row(cells);
+    }
+    BookNumbers::default().table(table)
+}
+
+/// The numbers the book quotes from chart 4, measured at `quality`.
+pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
+    Ok(quoted(&data(quality)?))
+}
+
 /// The chart: mean hit-point error against X, one line per method.
 pub fn measure(quality: Quality) -> Result<Measured> {
     let curves = data(quality)?;
@@ -139,10 +177,6 @@ pub fn measure(quality: Quality) -> Result<Measured> {
             .iter()
             .find(|p| p.0 == x)
             .map_or(f64::NAN, |p| p.1)
-    };
-    let spacing = |x: f64| {
-        let v = x as f32;
-        f64::from(f32::from_bits(v.to_bits() + 1) - v)
     };
     let findings = vec![
         format!(
@@ -165,5 +199,9 @@ pub fn measure(quality: Quality) -> Result<Measured> {
             at(2, 1e6)
         ),
     ];
-    Ok(Measured { chart, findings })
+    Ok(Measured {
+        chart,
+        findings,
+        quoted: quoted(&curves),
+    })
 }

@@ -12,6 +12,7 @@ use std::time::Instant;
 
 use super::{Measured, Quality};
 use crate::course::chart::{Chart, Scale};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
@@ -167,6 +168,58 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
         min: 1,
     })?;
     let mut times = Vec::new();
+    let mut rmse_table = Quoted::new(
+        "rmse",
+        false,
+        &["technique", &format!("RMSE after {total} spp")],
+    );
+    let mut time_table = Quoted::new(
+        "times",
+        true,
+        &[
+            "technique",
+            &format!("s for {total} spp"),
+            "s to reach cosine's final RMSE",
+            "x as fast as cosine",
+        ],
+    );
+    for (name, curve) in &curves {
+        let &(t, e) = curve.last().unwrap_or(&(f64::NAN, f64::NAN));
+        rmse_table = rmse_table.row(vec![name.to_string(), format!("{e:.4}")]);
+        let reach = time_to_reach(curve, target);
+        let (to_reach, speed) = match reach {
+            Some((r, extrapolated)) => (
+                format!(
+                    "{r:.2}{}",
+                    if extrapolated { " (extrapolated)" } else { "" }
+                ),
+                format!("{:.1}", cosine_time / r),
+            ),
+            None => ("-".into(), "-".into()),
+        };
+        time_table = time_table.row(vec![name.to_string(), format!("{t:.2}"), to_reach, speed]);
+    }
+    // Both tables side by side, for the chapter (timed: a test compares `rmse`).
+    let mut summary = Quoted::new(
+        "summary",
+        true,
+        &[
+            "technique",
+            &format!("RMSE after {total} spp"),
+            "s for them",
+            "s to reach cosine's final RMSE",
+            "x as fast as cosine",
+        ],
+    );
+    for (exact, timed) in rmse_table.rows.iter().zip(&time_table.rows) {
+        let mut cells = exact.clone();
+        cells.extend(timed[1..].iter().cloned());
+        summary = summary.row(cells);
+    }
+    let quoted = BookNumbers::default()
+        .table(rmse_table)
+        .table(time_table)
+        .table(summary);
     for (name, curve) in curves.iter().filter(|(name, _)| *name != TECHNIQUES[1].1) {
         if let Some((t, extrapolated)) = time_to_reach(curve, target) {
             times.push(format!(
@@ -193,7 +246,11 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
             times.join(", ")
         ),
     ];
-    Ok(Measured { chart, findings })
+    Ok(Measured {
+        chart,
+        findings,
+        quoted,
+    })
 }
 
 /// The chart of the lesson, timed on this machine.

@@ -12,6 +12,7 @@ use super::{Measured, Quality};
 use crate::bvh::BvhScene;
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::course::chart::{Chart, Scale};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::raster::Mesh;
 use crate::ray::Ray;
@@ -168,10 +169,47 @@ pub fn measure(quality: Quality) -> Result<Measured> {
     .with("BVH build", build);
     Ok(Measured {
         findings: findings(&rows),
+        quoted: quoted(&rows, width * height),
         chart,
     })
 }
 // ANCHOR_END: measure
+
+/// The numbers the book quotes from chart 7, all timed but the sizes: table
+/// `frames`, every row's frame, build and throughput; values `bvh_mrays` (million
+/// rays per second through the tree at the largest size) and `largest` (its
+/// number of primitives).
+fn quoted(rows: &[Row], rays: u32) -> BookNumbers {
+    let ms = |s: f64| format!("{:.2}", 1e3 * s);
+    let mrays = |s: f64| f64::from(rays) / s / 1e6;
+    let mut table = Quoted::new(
+        "frames",
+        true,
+        &[
+            "primitives",
+            "list (ms)",
+            "BVH (ms)",
+            "BVH build (ms)",
+            "BVH (M rays/s)",
+        ],
+    );
+    for r in rows {
+        table = table.row(vec![
+            r.primitives.to_string(),
+            r.list.map_or("not run".into(), ms),
+            ms(r.bvh),
+            ms(r.build),
+            format!("{:.2}", mrays(r.bvh)),
+        ]);
+    }
+    let mut fragment = BookNumbers::default().table(table);
+    if let Some(last) = rows.last() {
+        fragment = fragment
+            .value("bvh_mrays", true, format!("{:.2}", mrays(last.bvh)))
+            .value("largest", false, last.primitives.to_string());
+    }
+    fragment
+}
 
 fn findings(rows: &[Row]) -> Vec<String> {
     let mut out = Vec::new();

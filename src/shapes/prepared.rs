@@ -33,10 +33,11 @@ impl PreparedRay {
         let kz = d.abs().max_position();
         let next = |k: usize| if k == 2 { 0 } else { k + 1 }; // (k + 1) mod 3
         let (kx, ky) = (next(kz), next(next(kz)));
-        let inv_kz = 1.0 / d[kz];
+        let inv_d = d.recip();
+        let inv_kz = inv_d[kz]; // 1 / d_kz, the same division
         PreparedRay {
             ray: *ray,
-            inv_d: d.recip(),
+            inv_d,
             axes: [kx, ky, kz],
             shear: Vec3::new(-d[kx] / d[kz], -d[ky] / d[kz], inv_kz),
         }

@@ -68,7 +68,7 @@ pub type Measure = fn(Quality) -> Result<Measured>;
 
 /// Every chart of the lesson: its file stem and how to measure it, in the order of
 /// the chapter.
-pub const ALL: [(&str, Measure); 7] = [
+pub const ALL: [(&str, Measure); 8] = [
     ("11_1_sphere", sphere::measure),
     ("11_2_triangle", triangle::measure),
     ("11_3_offsets", offsets::measure),
@@ -76,6 +76,7 @@ pub const ALL: [(&str, Measure); 7] = [
     ("11_5_monte_carlo", monte_carlo::measure),
     ("11_6_renderers", renderers::measure),
     ("11_7_scaling", scaling::measure),
+    ("11_9_tax", tax::measure),
 ];
 
 /// Nanoseconds per call of `work`, over `calls` calls (after one warm-up round of

@@ -15,6 +15,7 @@ use super::machine::interleaved_min;
 use super::plain::PlainScene;
 use super::{Measured, Quality};
 use crate::course::chart::{Chart, Scale, log_log_slope};
+use crate::course::report::{BookNumbers, Quoted};
 use crate::error::{Error, Result};
 use crate::ray::Ray;
 use crate::raycast::shadowless;
@@ -96,6 +97,27 @@ pub fn measure(quality: Quality) -> Result<Measured> {
             log_log_slope(&plain).unwrap_or(f64::NAN)
         ),
     ];
+    let mut table = Quoted::new(
+        "tax",
+        true,
+        &["primitives", "robust (ns/ray)", "plain (ns/ray)", "robust / plain"],
+    );
+    for (r, p) in robust.iter().zip(&plain) {
+        table = table.row(vec![
+            format!("{}", r.0),
+            format!("{:.1}", r.1),
+            format!("{:.1}", p.1),
+            format!("{:.2}", r.1 / p.1),
+        ]);
+    }
+    let quoted = BookNumbers::default()
+        .table(table)
+        .value("per_test_robust", true, format!("{sr:.2}"))
+        .value("per_test_plain", true, format!("{sp:.2}"))
+        .value("per_test_tax", true, format!("{:.2}", sr / sp))
+        .value("per_ray_robust", true, format!("{:.1}", at_zero(&robust, sr)))
+        .value("per_ray_plain", true, format!("{:.1}", at_zero(&plain, sp)))
+        .value("lesson08_tax", true, format!("{:.2}", robust[0].1 / plain[0].1));
     let chart = Chart::new(
         "9. The robustness tax: time per primary ray against primitives in the list",
         ("primitives tested per ray", Scale::Log),
@@ -103,5 +125,9 @@ pub fn measure(quality: Quality) -> Result<Measured> {
     )
     .with("robust (this crate)", robust)
     .with("plain (textbook tests)", plain);
-    Ok(Measured { chart, findings })
+    Ok(Measured {
+        chart,
+        findings,
+        quoted,
+    })
 }

@@ -712,7 +712,6 @@ const S4: &str = "figures/11_2_triangle.md";
 const S13: &str = "figures/11_3_offsets.md";
 const S15: &str = "figures/11_4_precision.md";
 const MC: &str = "figures/11_5_monte_carlo.md";
-const RENDER: &str = "figures/11_6_renderers.md";
 const BVH: &str = "figures/11_7_scaling.md";
 const LESSONS: &str = "figures/11_8_lessons.md";
 
@@ -737,7 +736,6 @@ const WORLD: &str = "f32 world space";
 const RELATIVE: &str = "f32 camera-relative";
 const VAR: &str = "variance of one sample";
 const SLOPE: &str = "slope of log RMSE";
-const RMSE: &str = "RMSE after 256 spp";
 const DIFFER: &str = "pixels differing (%)";
 
 /// Every number the chapters quote inline from lesson 11's fragments (one a line).
@@ -822,11 +820,7 @@ const QUOTES: &[Quote] = &[
     quote(CH11, "with the cone, slope ${}$", MC, "estimators", ("light cone, jittered", SLOPE), 0),
     quote(CH11, "has variance ${}$ and one cone", MC, "estimators", ("cosine", VAR), 0),
     quote(CH11, "${}$. How many", MC, "estimators", ("light cone", VAR), 0),
-    // Chart 6.
-    quote(CH11, "uniform {}, cosine", RENDER, "rmse", ("uniform hemisphere", RMSE), 0),
-    quote(CH11, "algorithm) {}, next", RENDER, "rmse", ("cosine (smallpt)", RMSE), 0),
-    quote(CH11, "event {}, MIS", RENDER, "rmse", ("next event", RMSE), 0),
-    quote(CH11, "MIS {}; the errors", RENDER, "rmse", ("MIS", RMSE), 0),
+    // Chart 6: its errors are included from the fragment, not quoted in a sentence.
     // Chart 7: the largest scene.
     value(CH11, "scenes of 1 to {} triangles", BVH, "largest"),
     value(CH11_1, "from 1 to {}", BVH, "largest"),

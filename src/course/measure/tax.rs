@@ -100,7 +100,12 @@ pub fn measure(quality: Quality) -> Result<Measured> {
     let mut table = Quoted::new(
         "tax",
         true,
-        &["primitives", "robust (ns/ray)", "plain (ns/ray)", "robust / plain"],
+        &[
+            "primitives",
+            "robust (ns/ray)",
+            "plain (ns/ray)",
+            "robust / plain",
+        ],
     );
     for (r, p) in robust.iter().zip(&plain) {
         table = table.row(vec![
@@ -115,9 +120,17 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         .value("per_test_robust", true, format!("{sr:.2}"))
         .value("per_test_plain", true, format!("{sp:.2}"))
         .value("per_test_tax", true, format!("{:.2}", sr / sp))
-        .value("per_ray_robust", true, format!("{:.1}", at_zero(&robust, sr)))
+        .value(
+            "per_ray_robust",
+            true,
+            format!("{:.1}", at_zero(&robust, sr)),
+        )
         .value("per_ray_plain", true, format!("{:.1}", at_zero(&plain, sp)))
-        .value("lesson08_tax", true, format!("{:.2}", robust[0].1 / plain[0].1));
+        .value(
+            "lesson08_tax",
+            true,
+            format!("{:.2}", robust[0].1 / plain[0].1),
+        );
     let chart = Chart::new(
         "9. The robustness tax: time per primary ray against primitives in the list",
         ("primitives tested per ray", Scale::Log),

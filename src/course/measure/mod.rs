@@ -9,6 +9,7 @@
 //! exact parts (errors, counts, shares) come from the `*_quoted` functions, which
 //! measure no time, so a test can regenerate them and compare.
 
+pub mod lessons;
 pub mod machine;
 pub mod monte_carlo;
 pub mod offsets;

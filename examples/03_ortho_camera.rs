@@ -67,7 +67,7 @@ pub fn numbers(cam: &OrthoCamera) -> String {
     let (w, h) = (film.width(), film.height());
     let [x0, x1, y0, y1] = [x0, x1, y0, y1].map(|e| num(e as f64, 2));
     let title = format!(
-        "Orthographic camera: plane [{x0}, {x1}] x [{y0}, {y1}], {w} x {h} pixels, row 0 at the top"
+        "Orthographic camera: plane [{x0}, {x1}] x [{y0}, {y1}], {w} x {h} pixels, row 0 on top"
     );
     let mut table = Table::new(&title, &["pixel", "ray origin", "ray direction"]);
     // ANCHOR: table

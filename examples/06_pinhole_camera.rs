@@ -85,7 +85,7 @@ pub fn numbers(at_origin: &PinholeCamera, placed: &PinholeCamera, d: Vec3, k: Ve
     let p = placed.frame().position();
     let (p, d, k) = (vec3(p, 3), vec3(d, 3), vec3(k, 3));
     let mut placed_table = Table::new(
-        &format!("Placed: p = {p}, d = {d}, k = {k}"),
+        &format!("Placed: p={p}, d={d}, k={k}"),
         &["pixel", "world origin", "world direction"],
     );
     for (x, y) in [(0, 0), (1, 0), (2, 1), (3, 2)] {

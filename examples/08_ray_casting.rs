@@ -137,7 +137,7 @@ pub fn numbers(
     }
     let mut acne = Table::new(
         &format!(
-            "Lambert + shadow ray, the scene moved by {}: pixels that differ from the clean image",
+            "Shadow rays, scene moved by {}: pixels differing from the clean image",
             vec3(far, 0)
         ),
         &["shadow-ray start", "pixels", "share"],

@@ -532,7 +532,7 @@ fn chapter_01_says_what_its_table_header_said() {
 fn chapters_03_to_06_say_what_their_table_headers_said() {
     let ortho = snapshot("03_ortho_camera__numbers");
     assert!(ortho.starts_with(
-        "Orthographic camera: plane [-8.00, 8.00] x [-6.00, 6.00], 4 x 3 pixels, row 0 at the top\n"
+        "Orthographic camera: plane [-8.00, 8.00] x [-6.00, 6.00], 4 x 3 pixels, row 0 on top\n"
     ));
     assert_says(
         "03_ortho_camera.md",
@@ -562,7 +562,7 @@ fn chapters_03_to_06_say_what_their_table_headers_said() {
     let pinhole = snapshot("06_pinhole_camera__numbers");
     assert_eq!(
         line_starting(&pinhole, "Placed:"),
-        "Placed: p = (0.000, 3.000, 6.000), d = (0.000, -1.000, -2.000), k = (0.000, 1.000, 0.000)"
+        "Placed: p=(0.000, 3.000, 6.000), d=(0.000, -1.000, -2.000), k=(0.000, 1.000, 0.000)"
     );
     assert_says(
         "06_1_placed_pinhole.md",
@@ -652,7 +652,7 @@ fn chapter_08_quotes_its_pixel_and_acne_tables() {
     let scaled = columns(line_starting(&acne, "scaled offset"));
     assert_eq!(&fixed[1..], ["5092", "3.93%"]);
     assert_eq!(&scaled[1..], ["8", "0.01%"]);
-    assert!(acne.starts_with("Lambert + shadow ray, the scene moved by (10000, 0, 0)"));
+    assert!(acne.starts_with("Shadow rays, scene moved by (10000, 0, 0)"));
     assert_says(
         "08_1_light_and_shadows.md",
         "The fixed epsilon changes **5092** of the 129 600 pixels (3.93 %), the scaled offset **8** \
@@ -782,12 +782,9 @@ const PAGE_CHARS: usize = 86;
 /// shorter title in the example, or tests/book.rs accepting a later first line (the
 /// chapter would then include from the table and say the title in its prose), fixes
 /// one. The list must shrink: an entry that is no longer too wide fails the test.
-const TOO_WIDE_TITLES: [(&str, usize); 6] = [
+const TOO_WIDE_TITLES: [(&str, usize); 3] = [
     ("01_transforms__numbers.snap", 6),
-    ("03_ortho_camera__numbers.snap", 6),
     ("05_arbitrary_ortho_camera__numbers.snap", 6),
-    ("06_pinhole_camera__numbers.snap", 14),
-    ("08_ray_casting__acne.snap", 5),
     ("09_rasterization__numbers.snap", 17),
 ];
 

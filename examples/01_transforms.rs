@@ -63,7 +63,7 @@ pub fn two_orders(degrees: f32) -> Result<[(&'static str, Transform); 2]> {
 pub fn numbers(degrees: f32, p: Vec3) -> Result<String> {
     let mut table = Table::new(
         &format!(
-            "The slides' matrices applied to the point {0} (w = 1) and the vector {0} (w = 0), angle {1} degrees",
+            "The slides' matrices, angle {1} degrees, applied to\nthe point {0} (w = 1) and the vector {0} (w = 0)",
             vec3(p, 3),
             degrees
         ),

@@ -57,7 +57,7 @@ pub fn numbers(cam: &OrthoCamera, d: Vec3, k: Vec3) -> String {
     let p = cam.frame().position();
     let (p, d, k) = (vec3(p, 3), vec3(d, 3), vec3(k, 3));
     let mut basis = Table::new(
-        &format!("Camera basis from p = {p}, d = {d}, k = {k}"),
+        &format!("Camera basis from p = {p},\nd = {d}, k = {k}"),
         &["vector", "formula", "world coordinates"],
     );
     basis.row(vec!["w".into(), "-d/|d|".into(), vec3(b.w(), 4)]);

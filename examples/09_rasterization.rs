@@ -159,7 +159,7 @@ pub fn numbers(
     let mut columns = vec!["rasterized image", "reference", "compared"];
     columns.extend(["differing", "agree", "max difference"]);
     let title = format!(
-        "Against the ray caster, {width} x {height} pixels, away from silhouettes (more than {tolerance}/255 apart in a channel counts as different)"
+        "Against the ray caster, {width} x {height} pixels, away from silhouettes\n(more than {tolerance}/255 apart in a channel counts as different)"
     );
     let mut compare = Table::new(&title, &columns);
     for (label, reference, a) in &lesson.agreements {

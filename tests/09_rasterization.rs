@@ -120,7 +120,7 @@ fn projection_table(camera: &Camera, points: &[Vec3]) -> String {
         assert!((0.0..=1.0).contains(&screen.z));
         writeln!(
             out,
-            "({}, {}, {}) -> clip ({}, {}, {}, {}) -> pixel ({}, {}) depth {}",
+            "({}, {}, {}) -> clip ({}, {}, {}, {})\n    -> pixel ({}, {}) depth {}",
             num(p.x),
             num(p.y),
             num(p.z),

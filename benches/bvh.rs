@@ -22,7 +22,7 @@ use glam::{Vec3, Vec3A};
 use obvhs::ray::RayHit;
 use render_lessons::bvh::{Bvh, BvhScene};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
-use render_lessons::course::measure::machine::{CpuWatch, interleaved_min};
+use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::scaling;
 use render_lessons::ray::Ray;
 use render_lessons::raycast::shadowless;
@@ -225,20 +225,18 @@ fn one_run() {
     }
 }
 
-/// True under `cargo bench` (criterion gets `--bench`), false when `cargo test
-/// --benches` runs this file once as a test.
-fn benchmarking() -> bool {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test" || a == "--list")
-}
-
 criterion_group!(benches, big_mesh, crossover);
+
+/// The command line's arguments after the program's name.
+fn args() -> Vec<String> {
+    std::env::args().skip(1).collect()
+}
 
 fn main() {
     let watch = CpuWatch::start();
     benches();
     Criterion::default().configure_from_args().final_summary();
-    if benchmarking() {
+    if benchmarking(&args()) {
         one_run();
         println!("{}", watch.report());
     }

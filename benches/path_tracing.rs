@@ -25,7 +25,7 @@ use std::time::{Duration, Instant};
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group};
 use glam::Vec3;
-use render_lessons::course::measure::machine::CpuWatch;
+use render_lessons::course::measure::machine::{CpuWatch, benchmarking};
 use render_lessons::course::measure::variance::{Seen, pixel_variance};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::pfm::save_pfm;
@@ -391,7 +391,7 @@ fn report(runs: &[Run], e_ref: f64) {
 /// `--bench`), and only with no name filter or the filter `equal-time`.
 fn wants_equal_time() -> bool {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if !args.iter().any(|a| a == "--bench") || args.iter().any(|a| a == "--test" || a == "--list") {
+    if !benchmarking(&args) {
         return false;
     }
     let filters: Vec<&String> = args.iter().filter(|a| !a.starts_with('-')).collect();

@@ -11,7 +11,7 @@
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
 use render_lessons::camera::Camera;
-use render_lessons::course::measure::machine::{CpuWatch, interleaved_min};
+use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::plain::PlainScene;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
@@ -100,20 +100,18 @@ fn one_run() {
     );
 }
 
-/// True under `cargo bench` (criterion gets `--bench`), false when `cargo test
-/// --benches` runs this file once as a test.
-fn benchmarking() -> bool {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test" || a == "--list")
-}
-
 criterion_group!(benches, bench);
+
+/// The command line's arguments after the program's name.
+fn args() -> Vec<String> {
+    std::env::args().skip(1).collect()
+}
 
 fn main() {
     let watch = CpuWatch::start();
     benches();
     Criterion::default().configure_from_args().final_summary();
-    if benchmarking() {
+    if benchmarking(&args()) {
         one_run();
         println!("{}", watch.report());
     }

@@ -117,3 +117,11 @@ pub fn interleaved_min(rounds: u32, work: &mut [&mut dyn FnMut()]) -> Vec<Durati
     }
     best
 }
+
+/// True when a benchmark's `args` (after the program's name) are those of `cargo
+/// bench`, which passes `--bench`; false when `cargo test --benches` runs it once as
+/// a test (`--test`) or lists it (`--list`). Benchmarks run their long measurements
+/// only then.
+pub fn benchmarking(args: &[String]) -> bool {
+    args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test" || a == "--list")
+}

@@ -390,10 +390,10 @@ fn report(runs: &[Run], e_ref: f64) {
 /// Whether to run the equal-time comparison: only under `cargo bench` (which passes
 /// `--bench`), and only with no name filter or the filter `equal-time`.
 fn wants_equal_time() -> bool {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    if !benchmarking(&args) {
+    if !benchmarking() {
         return false;
     }
+    let args: Vec<String> = std::env::args().skip(1).collect();
     let filters: Vec<&String> = args.iter().filter(|a| !a.starts_with('-')).collect();
     filters.is_empty() || filters.iter().any(|f| f.as_str() == "equal-time")
 }
@@ -424,28 +424,35 @@ fn variance_analysis() {
         ("(b1) NEE", Sampling::NextEvent),
         ("(b2) MIS", Sampling::Mis),
     ];
+    let measured: Vec<_> = methods
+        .iter()
+        .map(|&(name, sampling)| {
+            let v = pixel_variance(
+                &scene,
+                &camera,
+                &settings(sampling),
+                VARIANCE_SPP,
+                SEED,
+                None,
+            )
+            .expect("variance");
+            (name, v)
+        })
+        .collect();
+    let first = &measured[0].1;
     println!(
         "\nVariance of one sample per pixel ({VARIANCE_SPP} spp each, seed {SEED}), by what the \
          pixel's centre ray meets first:"
     );
     println!(
         "| method | mean sigma^2 | diffuse ({:.0}% of pixels) | mirror/glass ({:.0}%) | lamp/none | top 1% of pixels hold | without caustics |",
-        100.0 * pixel_share(&scene, &camera, Seen::Diffuse),
-        100.0 * pixel_share(&scene, &camera, Seen::Specular),
+        100.0 * first.pixels_seeing(&scene, Seen::Diffuse),
+        100.0 * first.pixels_seeing(&scene, Seen::Specular),
     );
     println!("|---|---|---|---|---|---|---|");
     let mut means = Vec::new();
-    for (name, sampling) in methods {
-        let v = pixel_variance(
-            &scene,
-            &camera,
-            &settings(sampling),
-            VARIANCE_SPP,
-            SEED,
-            None,
-        )
-        .expect("variance");
-        let part = |seen| v.mean() * v.share(&scene, seen).0;
+    for (name, v) in &measured {
+        let part = |seen| v.mean_in(&scene, seen);
         println!(
             "| {name} | {:.4} | {:.4} | {:.4} | {:.4} | {:.0}% | {:.4} |",
             v.mean(),
@@ -481,10 +488,3 @@ fn variance_analysis() {
     println!("(per-region columns sum to the mean; 'without caustics' leaves their light out)");
 }
 // ANCHOR_END: variance_analysis
-
-/// The share of pixels whose centre ray meets `seen` first.
-fn pixel_share(scene: &Scene, camera: &LensCamera, seen: Seen) -> f64 {
-    pixel_variance(scene, camera, &settings(Sampling::Cosine), 1, SEED, None)
-        .map(|v| v.share(scene, seen).1)
-        .unwrap_or(0.0)
-}

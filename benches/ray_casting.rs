@@ -102,16 +102,11 @@ fn one_run() {
 
 criterion_group!(benches, bench);
 
-/// The command line's arguments after the program's name.
-fn args() -> Vec<String> {
-    std::env::args().skip(1).collect()
-}
-
 fn main() {
     let watch = CpuWatch::start();
     benches();
     Criterion::default().configure_from_args().final_summary();
-    if benchmarking(&args()) {
+    if benchmarking() {
         one_run();
         println!("{}", watch.report());
     }

@@ -118,10 +118,10 @@ pub fn interleaved_min(rounds: u32, work: &mut [&mut dyn FnMut()]) -> Vec<Durati
     best
 }
 
-/// True when a benchmark's `args` (after the program's name) are those of `cargo
-/// bench`, which passes `--bench`; false when `cargo test --benches` runs it once as
-/// a test (`--test`) or lists it (`--list`). Benchmarks run their long measurements
-/// only then.
-pub fn benchmarking(args: &[String]) -> bool {
+/// True when this benchmark runs under `cargo bench`, which passes `--bench`; false
+/// when `cargo test --benches` runs it once as a test (`--test`) or lists it
+/// (`--list`). Benchmarks run their long measurements only then.
+pub fn benchmarking() -> bool {
+    let args: Vec<String> = std::env::args().skip(1).collect();
     args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test" || a == "--list")
 }

@@ -68,21 +68,28 @@ impl PixelVariance {
         self.without_caustics.iter().sum::<f64>() / self.without_caustics.len().max(1) as f64
     }
 
-    /// The share of the summed sigma^2 in pixels that see `seen` first, and the share
-    /// of pixels that do.
-    pub fn share(&self, scene: &Scene, seen: Seen) -> (f64, f64) {
-        let total: f64 = self.variance.iter().sum();
-        let (mut part, mut pixels) = (0.0, 0usize);
-        for (v, first) in self.variance.iter().zip(&self.first) {
-            if classify(scene, *first) == seen {
-                part += v;
-                pixels += 1;
-            }
-        }
-        (
-            part / total.max(f64::MIN_POSITIVE),
-            pixels as f64 / self.variance.len().max(1) as f64,
-        )
+    /// The part of [`PixelVariance::mean`] that comes from pixels seeing `seen` first:
+    /// their sigma^2 summed, over all the image's pixels. The three parts add up to
+    /// the mean.
+    pub fn mean_in(&self, scene: &Scene, seen: Seen) -> f64 {
+        let part: f64 = self
+            .variance
+            .iter()
+            .zip(&self.first)
+            .filter(|(_, first)| classify(scene, **first) == seen)
+            .map(|(v, _)| v)
+            .sum();
+        part / self.variance.len().max(1) as f64
+    }
+
+    /// The share of pixels whose centre ray meets `seen` first.
+    pub fn pixels_seeing(&self, scene: &Scene, seen: Seen) -> f64 {
+        let n = self
+            .first
+            .iter()
+            .filter(|f| classify(scene, **f) == seen)
+            .count();
+        n as f64 / self.first.len().max(1) as f64
     }
 
     /// The share of the summed sigma^2 in the `fraction` (0..1) of pixels with the

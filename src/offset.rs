@@ -10,7 +10,12 @@
 //!   thin gaps);
 //! - moving the origin off the surface along the normal by an amount that scales with
 //!   |p| (Wachter and Binder, "A Fast and Robust Method for Avoiding
-//!   Self-Intersection", Ray Tracing Gems ch. 6, 2019).
+//!   Self-Intersection", Ray Tracing Gems ch. 6, 2019). It fails where the hit
+//!   point's error does not scale with |p|: a point near the world origin found by a
+//!   ray from far away carries the error of o + t d, which grows with t;
+//! - moving the origin along the normal just past a bound on the hit point's own
+//!   rounding error, which each shape computes with its hit (pbrt-v4, Pharr, Jakob
+//!   and Humphreys, 4th ed., section 6.8.6, "Robust Spawned Ray Origins").
 
 use glam::Vec3;
 
@@ -22,18 +27,47 @@ pub enum Offset {
     /// Move the origin off the surface by a few units in the last place of |p|
     /// (Wachter and Binder), and accept any t > 0.
     Scaled,
+    /// Move the origin off the surface past the hit point's error bound (pbrt-v4),
+    /// and accept any t > 0. The renderers' default.
+    ErrorBound,
 }
 
 impl Offset {
-    /// The origin and minimum t of a ray leaving `p` on the side of `n` (a unit normal
-    /// pointing to the side the new ray goes to).
-    pub fn start(self, p: Vec3, n: Vec3) -> (Vec3, f32) {
+    /// The origin and minimum t of a ray leaving `p` (whose coordinates are off the
+    /// surface by at most `error`, see [`crate::shapes::Hit::error`]) on the side of
+    /// `n` (a unit normal pointing to the side the new ray goes to).
+    pub fn start(self, p: Vec3, error: Vec3, n: Vec3) -> (Vec3, f32) {
         match self {
             Offset::Fixed(epsilon) => (p, epsilon),
             Offset::Scaled => (offset_ray_origin(p, n), 0.0),
+            Offset::ErrorBound => (offset_by_error(p, error, n), 0.0),
         }
     }
 }
+
+// ANCHOR: offset_by_error
+/// Moves `p` off its surface along the unit normal `n` just past its rounding error
+/// (pbrt-v4 section 6.8.6). The true surface point lies in the box `p +- error`; the
+/// farthest that box reaches along n is |n| . error (|n| taken per coordinate), so
+/// the origin moves by that distance along n. The sum p + distance n is rounded
+/// itself, so each coordinate then goes one more float away from p, on the side n
+/// points to. A shape with an exact point (error 0, a box's face) still moves by one
+/// float.
+pub fn offset_by_error(p: Vec3, error: Vec3, n: Vec3) -> Vec3 {
+    let distance = n.abs().dot(error);
+    let moved = p + distance * n;
+    let away = |moved: f32, n: f32| {
+        if n > 0.0 {
+            moved.next_up()
+        } else if n < 0.0 {
+            moved.next_down()
+        } else {
+            moved
+        }
+    };
+    Vec3::new(away(moved.x, n.x), away(moved.y, n.y), away(moved.z, n.z))
+}
+// ANCHOR_END: offset_by_error
 
 // ANCHOR: offset_ray_origin
 /// Moves `p` off its surface along the unit normal `n` (Ray Tracing Gems ch. 6,

@@ -27,7 +27,7 @@ pub fn lit(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
         return scene.background();
     };
     lighting::at_hit(scene, &hit, object, |light| {
-        let (origin, t_min) = offset.start(hit.point, hit.facing());
+        let (origin, t_min) = offset.start(hit.point, hit.error, hit.facing());
         let distance = (light.position - hit.point).length();
         Ray::new(origin, light.position - origin)
             .is_ok_and(|r| !scene.occluded(&r, t_min, distance))

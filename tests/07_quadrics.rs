@@ -522,3 +522,18 @@ fn instance_t_is_world_distance() {
     }
     assert!(hits >= 4, "{hits}");
 }
+
+#[test]
+fn a_ray_tangent_to_a_cone_finds_its_double_root() {
+    // The Ray Tracer Challenge (ch. 13): the cone x^2 + z^2 = y^2 and the ray from
+    // (0, 0, -5) along (1, 1, 1) touch at t = 15 / sqrt(3) (b^2 = 4ac exactly). In
+    // f32 the rounded a, b and c put the discriminant a few ulps below 0.
+    let cone = Quadric::cone_along(Vec3::Y, 1.0).unwrap();
+    let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::ONE).unwrap();
+    let xs = cone.crossings(&ray);
+    let exact = 15.0 / 3f32.sqrt();
+    assert_eq!(xs.len(), 2, "{:?}", xs.as_slice());
+    for t in xs.iter() {
+        assert!((t - exact).abs() < 1e-4, "{t} vs {exact}");
+    }
+}

@@ -173,7 +173,7 @@ fn self_hits(x: f32, offset: Offset) -> (u32, u32) {
         };
         let frame = Basis::around(hit.normal);
         for u in grid(16) {
-            let (start, t_min) = offset.start(hit.point, hit.normal);
+            let (start, t_min) = offset.start(hit.point, hit.error, hit.normal);
             let bounce = Ray::new(start, frame.to_world(cosine_hemisphere(u))).unwrap();
             total += 1;
             if sphere.hit(&bounce, t_min, f32::INFINITY).is_some() {
@@ -195,6 +195,7 @@ fn s13_fixed_epsilon_self_intersects_far_from_the_origin_scaled_offset_never() {
     );
     for x in [1.0, 1e2, 1e3, 1e4, 1e5] {
         assert_eq!(self_hits(x, Offset::Scaled).0, 0, "scaled offset at {x}");
+        assert_eq!(self_hits(x, Offset::ErrorBound).0, 0, "error bound at {x}");
     }
     eprintln!("S13: fixed 1e-4 at 1e4: {far}/{total} bounce rays hit their own sphere");
 }
@@ -214,7 +215,7 @@ fn s14_a_thin_gap_still_casts_a_shadow() {
         )
         .unwrap();
     let blocked = |offset: Offset| {
-        let (start, t_min) = offset.start(hit.point, Vec3::Y);
+        let (start, t_min) = offset.start(hit.point, hit.error, Vec3::Y);
         let shadow_ray = Ray::new(start, Vec3::Y).unwrap();
         occluder.hit(&shadow_ray, t_min, 10.0).is_some()
     };
@@ -225,6 +226,10 @@ fn s14_a_thin_gap_still_casts_a_shadow() {
     assert!(
         blocked(Offset::Scaled),
         "the scaled offset is far smaller than the gap"
+    );
+    assert!(
+        blocked(Offset::ErrorBound),
+        "the error bound is far smaller than the gap"
     );
     assert!((offset_ray_origin(hit.point, Vec3::Y) - hit.point).length() < 5e-5);
 }

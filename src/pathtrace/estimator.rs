@@ -146,7 +146,7 @@ fn scatter(
     let facing = hit.facing();
     match material {
         Material::Diffuse { albedo } => {
-            let start = Start::new(hit.point, facing, s.offset);
+            let start = Start::new(hit.point, hit.error, facing, s.offset);
             let direct = direct_light(scene, start, facing, albedo, rng, s, observer);
             let (direction, weight, pdf) = diffuse_bounce(facing, albedo, rng, s);
             Some(Bounce {
@@ -164,7 +164,7 @@ fn scatter(
             let side = if next.transmitted { -facing } else { facing };
             Some(Bounce {
                 direct: Vec3::ZERO,
-                start: Start::new(hit.point, side, s.offset),
+                start: Start::new(hit.point, hit.error, side, s.offset),
                 direction: next.direction,
                 weight: next.weight,
                 previous: Previous::Full,

@@ -37,6 +37,8 @@ pub struct LightPoint {
     pub point: Vec3,
     /// The light's unit normal at y (outward; emission is two-sided).
     pub normal: Vec3,
+    /// A bound on y's rounding error, per coordinate (see [`crate::shapes::Hit::error`]).
+    pub error: Vec3,
     /// Density per unit solid angle at p, finite and positive.
     pub pdf: f32,
 }
@@ -97,14 +99,20 @@ pub fn sample(shape: &Shape, p: Vec3, u: Vec2, strategy: SphereSampling) -> Opti
                 pdf.is_finite().then_some(LightPoint {
                     point: hit.point,
                     normal: hit.normal,
+                    error: hit.error,
                     pdf,
                 })
             }
             _ => {
                 let normal = uniform_sphere(u);
-                let point = s.centre() + s.radius() * normal;
+                let (point, error) = s.surface_point(normal);
                 let pdf = area_to_solid_angle(p, point, normal, sphere_area(s))?;
-                Some(LightPoint { point, normal, pdf })
+                Some(LightPoint {
+                    point,
+                    normal,
+                    error,
+                    pdf,
+                })
             }
         },
         Shape::Quad(q) => quad_point(q, p, u),
@@ -118,6 +126,7 @@ fn quad_point(q: &Quad, p: Vec3, u: Vec2) -> Option<LightPoint> {
     Some(LightPoint {
         point,
         normal: q.normal(),
+        error: q.error_at(point),
         pdf,
     })
 }

@@ -27,9 +27,10 @@ pub(super) struct Start {
 }
 
 impl Start {
-    /// Rays leaving `p` on the side of the unit normal `n`.
-    pub(super) fn new(p: Vec3, n: Vec3, offset: Offset) -> Start {
-        let (point, t_min) = offset.start(p, n);
+    /// Rays leaving the hit point `p` (with its error bound `error`) on the side of
+    /// the unit normal `n`.
+    pub(super) fn new(p: Vec3, error: Vec3, n: Vec3, offset: Offset) -> Start {
+        let (point, t_min) = offset.start(p, error, n);
         Start { point, t_min }
     }
 }
@@ -61,7 +62,7 @@ pub(super) fn direct_light(
     let seen = if radiance == Vec3::ZERO {
         None
     } else {
-        unoccluded(scene, from, n, y.point, y.normal, s.offset)
+        unoccluded(scene, from, n, &y, s.offset)
     };
     observer.light_sample(y.point, seen.is_some());
     let Some(cos) = seen else {
@@ -77,16 +78,17 @@ pub(super) fn direct_light(
 // ANCHOR_END: direct_light
 
 /// The cosine (with the unit normal `n`) of the direction from `from` to the light
-/// point `y` (normal `n_l`), if y is above the surface and no object lies between:
-/// a shadow ray from `from` to y moved off the light towards it by `offset`.
+/// point `light` (its point y, normal n_l and error bound), if y is above the surface
+/// and no object lies between: a shadow ray from `from` to y moved off the light
+/// towards it by `offset`, the same rule at both ends.
 fn unoccluded(
     scene: &Scene,
     from: Start,
     n: Vec3,
-    y: Vec3,
-    n_l: Vec3,
+    light: &light::LightPoint,
     offset: Offset,
 ) -> Option<f32> {
+    let (y, n_l) = (light.point, light.normal);
     let direction = (y - from.point).try_normalize()?;
     let cos = n.dot(direction);
     if cos.is_nan() || cos <= 0.0 {
@@ -97,7 +99,7 @@ fn unoccluded(
     } else {
         -n_l
     };
-    let (to, t_end) = offset.start(y, n_l);
+    let (to, t_end) = offset.start(y, light.error, n_l);
     let gap = to - from.point;
     let ray = Ray::new(from.point, gap).ok()?;
     let t_max = gap.length() - t_end;

@@ -67,14 +67,14 @@ pub struct Settings {
 }
 
 impl Default for Settings {
-    /// MIS, cone-sampled spheres, depth 8, Russian roulette, scaled offset.
+    /// MIS, cone-sampled spheres, depth 8, Russian roulette, error-bound offset.
     fn default() -> Settings {
         Settings {
             sampling: Sampling::Mis,
             sphere_lights: SphereSampling::Cone,
             max_depth: Some(8),
             russian_roulette: true,
-            offset: Offset::Scaled,
+            offset: Offset::ErrorBound,
         }
     }
 }

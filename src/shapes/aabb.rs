@@ -214,7 +214,9 @@ impl Aabb {
     }
 
     /// The hit record at `t` on the face of `axis` with outward sign `outward`: that
-    /// normal, and the point snapped onto the face.
+    /// normal, and the point snapped onto the face. Along the face's axis the point
+    /// is the face's own coordinate, exact: its error there is 0. Along the face it
+    /// carries o + t d's rounding, which an offset along the normal never needs.
     pub fn hit_at(&self, ray: &Ray, t: f32, axis: usize, outward: f32) -> Hit {
         let mut normal = Vec3::ZERO;
         normal[axis] = outward;
@@ -224,7 +226,9 @@ impl Aabb {
         } else {
             self.min[axis]
         };
-        Hit::new(ray, t, point, normal)
+        let mut error = gamma(4) * point.abs();
+        error[axis] = 0.0;
+        Hit::new(ray, t, point, normal, error)
     }
 
     /// The nearest crossing of the box surface with `t_min < t < t_max`:

@@ -7,7 +7,7 @@
 //! (pbrt-v4, "Applying Transformations": normals). One routine per primitive then
 //! serves every placement, scale and shear of it.
 
-use glam::{Mat4, Vec3};
+use glam::{Mat3, Mat4, Vec3};
 
 use crate::error::{Error, Result};
 use crate::ray::Ray;
@@ -112,6 +112,7 @@ impl Instance {
             .hit(&object_ray, t_min * stretch, t_max * stretch)?;
         let t = local.t / stretch;
         let point = self.to_world.point(local.point);
+        let error = self.world_error(local.point, local.error, point);
         let normal = self
             .normal_matrix
             .transform_vector3(local.normal)
@@ -119,9 +120,27 @@ impl Instance {
         if !(t.is_finite() && point.is_finite()) || normal == Vec3::ZERO {
             return None;
         }
-        Some(Hit::new(ray, t, point, normal))
+        Some(Hit::new(ray, t, point, normal, error))
     }
     // ANCHOR_END: instance_hit
+
+    /// The error bound of the world point `world` = M `local`, where `local` is off
+    /// its surface by at most `local_error` (pbrt-v4 section 6.8.3, "Transforming
+    /// points with error"; |M| is M with every entry made positive, T its
+    /// translation):
+    /// - M p rounds each coordinate by at most gamma(3) (|M| |p| + |T|);
+    /// - the point's own error goes through |M|, grown by 1 + gamma(3);
+    /// - and a ray spawned from the world point is taken back to object space by
+    ///   M^-1 before it is tested, which rounds its origin by
+    ///   gamma(3) (|M^-1| |p_w| + |T^-1|) there, |M| times that in the world.
+    fn world_error(&self, local: Vec3, local_error: Vec3, world: Vec3) -> Vec3 {
+        let abs = |m: Mat4| (Mat3::from_mat4(m.abs()), m.w_axis.truncate().abs());
+        let (m, t) = abs(self.to_world.matrix());
+        let (inverse, inverse_t) = abs(self.to_object.matrix());
+        let forward = gamma(3) * (m * local.abs() + t) + (1.0 + gamma(3)) * (m * local_error);
+        let back = m * (gamma(3) * (inverse * world.abs() + inverse_t));
+        forward + back
+    }
 
     /// Every crossing of the world ray's line, ascending, `t` measured along the world
     /// ray: the shape's crossings of the object-space ray o' = M^-1 o, d' = M^-1 d / s

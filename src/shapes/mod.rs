@@ -9,6 +9,7 @@
 use glam::Vec3;
 
 use crate::ray::Ray;
+use crate::shapes::aabb::gamma;
 
 pub mod aabb;
 pub mod instance;
@@ -39,17 +40,23 @@ pub struct Hit {
     pub normal: Vec3,
     /// `true` if the ray arrived from the side the normal points to (d . n < 0).
     pub front_face: bool,
+    /// A conservative bound, per coordinate, on how far `point` lies from the true
+    /// surface: some surface point lies within `point +- error` (pbrt-v4 section 6.8,
+    /// "Managing Rounding Error"). A ray leaving the hit starts just beyond it
+    /// ([`crate::offset::offset_by_error`]).
+    pub error: Vec3,
 }
 
 impl Hit {
-    /// A hit at `t` and `point` with outward unit `normal`; `front_face` follows from
-    /// the sign of d . n.
-    pub(crate) fn new(ray: &Ray, t: f32, point: Vec3, normal: Vec3) -> Hit {
+    /// A hit at `t` and `point` with outward unit `normal` and the point's rounding
+    /// `error`; `front_face` follows from the sign of d . n.
+    pub(crate) fn new(ray: &Ray, t: f32, point: Vec3, normal: Vec3, error: Vec3) -> Hit {
         Hit {
             t,
             point,
             normal,
             front_face: ray.direction().dot(normal) < 0.0,
+            error,
         }
     }
 
@@ -185,10 +192,19 @@ impl From<quadric::Roots> for Crossings {
 }
 
 /// A hit record at `t` from the point on the ray and the shape's `normal_at`: what
-/// [`Shape::record`] answers for a candidate it cannot have made, to stay total.
+/// [`Shape::record`] answers for a candidate it cannot have made, to stay total. The
+/// error is [`on_ray_error`] with t taken as exact (nothing here knows t's error).
 fn fallback(shape: &Shape, ray: &Ray, t: f32) -> Hit {
     let point = ray.at(t);
-    Hit::new(ray, t, point, shape.normal_at(point))
+    Hit::new(ray, t, point, shape.normal_at(point), on_ray_error(ray, t))
+}
+
+/// The rounding of the point o + t d itself, for an exact `t`: each coordinate is a
+/// product and a sum, so gamma(2) (|o| + |t d|) (pbrt-v4 section 6.8.4). It does not
+/// hold t's own error, which grows with t: the shapes that need a tight bound
+/// re-project the point onto the surface instead.
+pub(crate) fn on_ray_error(ray: &Ray, t: f32) -> Vec3 {
+    gamma(2) * (ray.origin().abs() + (t * ray.direction()).abs())
 }
 
 /// `t_min < t < t_max`, and `false` for NaN.

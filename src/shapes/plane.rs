@@ -4,6 +4,7 @@ use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
 use crate::ray::Ray;
+use crate::shapes::aabb::gamma;
 use crate::shapes::{Crossings, Hit, in_open_range};
 
 /// The infinite plane through `point` with unit `normal`; the normal's side is the
@@ -60,7 +61,8 @@ impl Plane {
 
     /// The hit record at `t`: the point o + t d, the plane's normal.
     pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
-        Hit::new(ray, t, ray.at(t), self.normal)
+        let (point, error) = onto_plane(ray.at(t), self.point, self.normal);
+        Hit::new(ray, t, point, self.normal, error)
     }
 
     /// The crossing with `t_min < t < t_max`, if any.
@@ -80,4 +82,22 @@ impl Plane {
     pub fn normal_at(&self, _p: Vec3) -> Vec3 {
         self.normal
     }
+}
+
+/// `p` projected onto the plane through `p0` with unit normal `n`,
+/// p - ((p - p0) . n) n, and a bound on its rounding error.
+///
+/// o + t d carries t's error, which grows with t; the projection's does not. Its
+/// distance from the plane is the rounding of (p - p0) . n and of the subtraction,
+/// a few gamma times the coordinates involved: gamma(10) (|p| + |p0|) per coordinate
+/// bounds it with room to spare (and covers the same rounding when a spawned ray's
+/// test evaluates the plane again at its origin).
+pub(crate) fn onto_plane(p: Vec3, p0: Vec3, n: Vec3) -> (Vec3, Vec3) {
+    let point = p - (p - p0).dot(n) * n;
+    (point, plane_error(point, p0))
+}
+
+/// The error bound of a point near the plane through `p0`: gamma(10) (|p| + |p0|).
+pub(crate) fn plane_error(point: Vec3, p0: Vec3) -> Vec3 {
+    gamma(10) * (point.abs() + p0.abs())
 }

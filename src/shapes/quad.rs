@@ -5,6 +5,7 @@ use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
 use crate::ray::Ray;
+use crate::shapes::plane::{onto_plane, plane_error};
 use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
 
 /// The parallelogram with corner `corner` and edges `a`, `b`; its normal is
@@ -92,7 +93,14 @@ impl Quad {
 
     /// The hit record at `t`: the point o + t d, the quad's normal.
     pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
-        Hit::new(ray, t, ray.at(t), self.normal)
+        let (point, error) = onto_plane(ray.at(t), self.corner, self.normal);
+        Hit::new(ray, t, point, self.normal, error)
+    }
+
+    /// The error bound of a point of the quad found by [`Quad::point`] or a hit: the
+    /// plane's (see [`crate::shapes::Plane`]'s hits).
+    pub fn error_at(&self, point: Vec3) -> Vec3 {
+        plane_error(point, self.corner)
     }
 
     /// The crossing with `t_min < t < t_max`, if any.

@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::error::{Result, finite3, positive};
 use crate::ray::Ray;
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit, in_open_range, on_ray_error};
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -113,11 +113,34 @@ impl Sphere {
         }
     }
 
-    /// The hit record at `t`: the point o + t d and the outward normal (p - c) / r.
+    /// The hit record at `t`: the point, its error bound and the outward normal.
+    ///
+    /// o + t d carries t's rounding error, which grows with t: seen from far away the
+    /// point can lie inside the sphere by more than any offset scaled to |p|. So the
+    /// point is projected back onto the sphere in the sphere's own frame,
+    /// l = (o + t d - c) r / |o + t d - c| (pbrt-v4 section 6.8.5, "Refining the hit
+    /// point"), whose error no longer depends on t: gamma(5) |l| for the projection,
+    /// one step more for safety, and gamma(1) |c + l| for the sum that takes it back
+    /// to the world. The normal is l / r.
     pub fn hit_at(&self, ray: &Ray, t: f32) -> Hit {
-        let point = ray.at(t);
+        let local = ray.at(t) - self.centre;
+        let length = local.length();
+        if !(length > 0.0 && length.is_finite()) {
+            let point = ray.at(t);
+            return Hit::new(ray, t, point, -ray.direction(), on_ray_error(ray, t));
+        }
+        let (point, error) = self.surface_point(local / length);
         let normal = ((point - self.centre) / self.radius).normalize_or(-ray.direction());
-        Hit::new(ray, t, point, normal)
+        Hit::new(ray, t, point, normal, error)
+    }
+
+    /// The point c + r u of the sphere in the direction `u` (unit up to rounding), and
+    /// its error bound: gamma(6) r |u| for r u, whose length is r only up to u's
+    /// rounding, and gamma(1) |c + r u| for the sum.
+    pub fn surface_point(&self, u: Vec3) -> (Vec3, Vec3) {
+        let local = self.radius * u;
+        let point = self.centre + local;
+        (point, gamma(6) * local.abs() + gamma(1) * point.abs())
     }
 
     /// The nearest crossing with `t_min < t < t_max`: [`Sphere::nearest`], then

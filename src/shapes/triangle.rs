@@ -5,6 +5,7 @@ use glam::{DVec3, Vec3};
 
 use crate::error::{Error, Result, finite3};
 use crate::ray::Ray;
+use crate::shapes::aabb::gamma;
 use crate::shapes::{Aabb, Crossings, Hit, PreparedRay, in_open_range};
 
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
@@ -138,6 +139,9 @@ impl Triangle {
         let inv = 1.0 / det;
         let (t, b) = (t_scaled * inv, e.map(|x| x * inv));
         let finite = b.iter().all(|x| x.is_finite());
+        if t_min >= 0.0 && t <= t_error([p0, p1, p2], z, e, inv) {
+            return None; // t may be rounding above a crossing at or behind the origin
+        }
         (finite && in_open_range(t, t_min, t_max)).then_some((t, b[0], b[1], b[2]))
     }
     // ANCHOR_END: watertight
@@ -148,9 +152,13 @@ impl Triangle {
     ///
     /// The point is b0 v0 + b1 v1 + b2 v2, not o + t d: far from the origin the
     /// barycentric point stays on the triangle's plane, o + t d does not (STABILITY S7).
+    /// Its error bound is gamma(7) (|b0 v0| + |b1 v1| + |b2 v2|) per coordinate.
     pub fn hit_at(&self, ray: &Ray, t: f32, b: [f32; 3]) -> Hit {
-        let point = b[0] * self.v0 + b[1] * self.v1 + b[2] * self.v2;
-        Hit::new(ray, t, point, self.normal())
+        let [w0, w1, w2] = [b[0] * self.v0, b[1] * self.v1, b[2] * self.v2];
+        let point = w0 + w1 + w2;
+        // pbrt-v4 section 6.8.5: three products and two sums, gamma(7) of their sizes.
+        let error = gamma(7) * (w0.abs() + w1.abs() + w2.abs());
+        Hit::new(ray, t, point, self.normal(), error)
     }
 
     /// The crossing with `t_min < t < t_max`, by [`Triangle::watertight`].
@@ -189,6 +197,27 @@ fn surely_outside(t_scaled: f32, det: f32, t_min: f32, t_max: f32) -> bool {
     };
     (t_min >= 0.0 && t_abs <= 0.0) || t_abs > t_max * det_abs * MARGIN
 }
+
+// ANCHOR: t_error
+/// A bound on the rounding error of the watertight test's t (pbrt-v4 section 6.8.4,
+/// "Conservative Ray-Triangle t Tests"), from the sheared corners `p` (x and y),
+/// their scaled z values `z`, the edge functions `e` and 1/det. Each sheared x, y is
+/// off by gamma(5) (|x| + |z|) at most, each scaled z by gamma(3) |z|; an edge
+/// function multiplies two of them, and t sums three e_i z_i. A t below this bound
+/// cannot be told from 0: a ray leaving the triangle's own plane would find the
+/// triangle again just past its origin.
+fn t_error(p: [Vec3; 3], z: [f32; 3], e: [f32; 3], inv_det: f32) -> f32 {
+    let largest = |f: fn(&Vec3) -> f32| p.iter().map(|v| f(v).abs()).fold(0.0, f32::max);
+    let (max_x, max_y) = (largest(|v| v.x), largest(|v| v.y));
+    let max_z = z.iter().fold(0.0f32, |m, z| m.max(z.abs()));
+    let max_e = e.iter().fold(0.0f32, |m, e| m.max(e.abs()));
+    let delta_x = gamma(5) * (max_x + max_z);
+    let delta_y = gamma(5) * (max_y + max_z);
+    let delta_z = gamma(3) * max_z;
+    let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs()
+}
+// ANCHOR_END: t_error
 
 /// The shear that takes the permuted direction to the z axis: x += s_x z, y += s_y z;
 /// z is left alone here and scaled by s_z only when t is computed.

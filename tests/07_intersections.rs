@@ -846,3 +846,45 @@ fn s3_a_wall_modelled_as_a_huge_sphere_hits_itself_in_f32_a_plane_does_not() {
     assert_eq!(plane_hits, 0);
     assert!(plane_off < 1e-4 && sphere_off > 100.0 * plane_off);
 }
+
+/// The rays along the six faces of the cube [-1, 1]^3, each with its zero direction
+/// components of sign `zero` (+0.0 or -0.0): the origin lies in the face's plane, 5
+/// units before the box along the next axis, in the middle of the third.
+fn rays_along_faces(zero: f32) -> Vec<Ray> {
+    let mut rays = Vec::new();
+    for axis in 0..3 {
+        for side in [-1.0, 1.0] {
+            let (along, across) = ((axis + 1) % 3, (axis + 2) % 3);
+            let (mut o, mut d) = (Vec3::ZERO, Vec3::ZERO);
+            o[axis] = side;
+            o[along] = -5.0;
+            d[axis] = zero;
+            d[across] = zero;
+            d[along] = 1.0;
+            rays.push(Ray::new(o, d).unwrap());
+        }
+    }
+    rays
+}
+
+#[test]
+fn s8_a_ray_along_any_face_hits_for_either_sign_of_zero() {
+    // The closed box is hit by a ray running in a face's plane over the face, from
+    // t = 4 to 6, whether that direction component is +0 or -0.
+    let b = cube();
+    for zero in [0.0f32, -0.0] {
+        for r in rays_along_faces(zero) {
+            let (o, d) = (r.origin(), r.direction());
+            assert_eq!(
+                b.slab(&r, 0.0, f32::INFINITY),
+                Some((4.0, 6.0)),
+                "o {o}, d {d:?}"
+            );
+            let wide = b.slab_conservative(&r, 0.0, f32::INFINITY);
+            assert!(wide.is_some(), "conservative, o {o}, d {d:?}");
+            let hit = Shape::Aabb(b).hit(&r, 0.0, f32::INFINITY);
+            assert_eq!(hit.map(|h| h.t), Some(4.0), "hit, o {o}, d {d:?}");
+            assert_eq!(b.crossings(&r).as_slice(), [4.0, 6.0], "crossings, o {o}");
+        }
+    }
+}

@@ -201,6 +201,29 @@ fn same_hits_as_the_list_for_axis_parallel_rays_in_box_face_planes() {
 }
 
 #[test]
+fn a_ray_along_any_face_of_a_box_hits_in_the_tree_as_in_the_list() {
+    // STABILITY S8 for both signs of a zero direction component: the origin in one of
+    // the six face planes of the box [-1, 1]^3, the ray running over the face.
+    let cube = Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0)).unwrap();
+    let scene = scene(vec![object(Shape::Aabb(cube))]);
+    let bvh = BvhScene::new(scene.clone());
+    for zero in [0.0f32, -0.0] {
+        for axis in 0..3 {
+            for side in [-1.0, 1.0] {
+                let (along, across) = ((axis + 1) % 3, (axis + 2) % 3);
+                let (mut o, mut d) = (Vec3::ZERO, Vec3::ZERO);
+                (o[axis], o[along], d[axis], d[across], d[along]) = (side, -5.0, zero, zero, 1.0);
+                let r = Ray::new(o, d).unwrap();
+                let list = scene.closest_hit(&r, 0.0, f32::INFINITY).map(|(h, _)| h.t);
+                let tree = bvh.closest_hit(&r, 0.0, f32::INFINITY).map(|(h, _)| h.t);
+                assert_eq!(list, Some(4.0), "list, o {o}, d {d:?}");
+                assert_eq!(tree, Some(4.0), "tree, o {o}, d {d:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn same_hits_as_the_list_on_a_random_soup() {
     let mut rng = Rng(2);
     let scene = scene(random_soup(&mut rng, 1000));

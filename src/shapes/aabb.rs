@@ -121,12 +121,13 @@ impl Aabb {
     /// plane over the face hits, with t0 == t1 for a single touching point (STABILITY
     /// S8).
     ///
-    /// Per axis, t_near = (min - o) / d and t_far = (max - o) / d, computed as
-    /// (min - o) * (1 / d). A zero component of d gives 1/d = inf; a ray lying in a
-    /// face plane then gives 0 * inf = NaN. The updates are written
-    /// `if t_near > t0 { t0 = t_near }` (pbrt's form), so a NaN compares false and
-    /// leaves the interval alone, and that axis, on which the ray sits on the closed
-    /// box, constrains nothing.
+    /// Per axis, t = (min - o) / d and (max - o) / d, computed as (min - o) * (1 / d)
+    /// and ordered into an entry and an exit by the sign of 1/d. A zero component of
+    /// d (+0 or -0) gives 1/d = +inf or -inf; a ray lying in a face plane then gives
+    /// 0 * inf = NaN for that plane. Left as it is, the NaN would make the answer
+    /// depend on the sign of the zero; `slab_ends` turns it into -inf (an entry) or
+    /// +inf (an exit), so the axis on whose boundary the ray runs constrains nothing,
+    /// for either sign, as the closed box requires.
     pub fn slab(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
         let s = self.span(ray.origin(), ray.direction().recip(), t_min, t_max, 1.0)?;
         Some((s.t0, s.t1))
@@ -170,12 +171,8 @@ impl Aabb {
             axis1: 0,
         };
         for i in 0..3 {
-            let mut t_near = (self.min[i] - o[i]) * inv_d[i];
-            let mut t_far = (self.max[i] - o[i]) * inv_d[i];
-            if t_near > t_far {
-                std::mem::swap(&mut t_near, &mut t_far);
-            }
-            t_far = widen_up(t_far, widen);
+            let (t_near, t_far) = slab_ends(self.min[i] - o[i], self.max[i] - o[i], inv_d[i]);
+            let t_far = widen_up(t_far, widen);
             if t_near > s.t0 {
                 (s.t0, s.axis0) = (t_near, i);
             }
@@ -268,6 +265,31 @@ impl Aabb {
         n
     }
 }
+
+// ANCHOR: slab_ends
+/// Where a ray enters and leaves one slab, from the distances `to_min` = min - o and
+/// `to_max` = max - o of its two planes along the axis and `inv_d` = 1 / d there.
+///
+/// The ray meets the min plane first when d > 0 and the max plane first when d < 0,
+/// so the sign of 1/d orders the two ends (not a comparison of the values, which a
+/// NaN would defeat). Where d is +0 or -0, 1/d is +inf or -inf, and a ray whose
+/// origin lies exactly in one of the two planes gives 0 * inf = NaN for that end:
+/// the ray runs along the face, inside the closed slab for every t. The NaN becomes
+/// -inf as an entry and +inf as an exit, so that axis constrains nothing, whichever
+/// the sign of the zero (STABILITY S8; the BVH's traversal applies the same rule).
+#[inline(always)]
+fn slab_ends(to_min: f32, to_max: f32, inv_d: f32) -> (f32, f32) {
+    let (a, b) = (to_min * inv_d, to_max * inv_d);
+    let (near, far) = if inv_d < 0.0 { (b, a) } else { (a, b) };
+    let near = if near.is_nan() {
+        f32::NEG_INFINITY
+    } else {
+        near
+    };
+    let far = if far.is_nan() { f32::INFINITY } else { far };
+    (near, far)
+}
+// ANCHOR_END: slab_ends
 
 /// `t` moved away from the box by the factor `widen >= 1`: multiplied if positive,
 /// divided if negative; 0, infinities and NaN stay as they are.

@@ -8,7 +8,8 @@
 //! - Cone sampling (spheres only) picks a direction uniformly inside the cone of
 //!   directions from p that meet the sphere, density 1 / (2 pi (1 - cos theta_max))
 //!   with sin theta_max = r / |c - p| (pbrt-v3 section 14.2.2). Every sample then
-//!   lands on the visible side of the sphere; area sampling wastes the far half.
+//!   lands on the cap p can see, (1 - r/D)/2 of the sphere's area from a distance D
+//!   to its centre; area sampling wastes the other (1 + r/D)/2 on the hidden side.
 
 use std::f32::consts::{PI, TAU};
 

@@ -12,7 +12,8 @@ use glam::Vec4;
 
 use super::vertex::ClipVertex;
 
-/// The guard band in NDC units: 64 image widths either side. With the largest film
+/// The guard band in NDC units: |x|, |y| <= 64 w. NDC spans 2 units across the image,
+/// so that is 32 image widths from the centre, 31.5 beyond each edge. With the largest film
 /// (16384 pixels) a clipped vertex stays within about 2^19.1 pixels of the origin.
 pub const GUARD_BAND: f32 = 64.0;
 

@@ -52,8 +52,10 @@ impl Sphere {
     /// Both roots, ascending, by the school formula t = (-b +- sqrt(b^2 - 4ac)) / 2a.
     ///
     /// For a small sphere far away b^2 and 4ac are both about 4 D^2 and their
-    /// difference, of order r^2, is lost to rounding: at D/r = 1e3 in f32 a few percent
-    /// of hit/miss answers are wrong (STABILITY S1). Kept to show that failure.
+    /// difference, of order r^2, is lost to rounding: in f32 the roots' error grows with
+    /// D/r, and from a few thousand radii on hit/miss answers go wrong, about half of
+    /// them at D/r = 1e4 (STABILITY S1; lesson 11's chart 1 measures where). Kept to
+    /// show that failure.
     pub fn roots_textbook(&self, ray: &Ray) -> Option<(f32, f32)> {
         let f = ray.origin() - self.centre;
         let d = ray.direction();

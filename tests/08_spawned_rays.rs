@@ -16,7 +16,7 @@ use render_lessons::pathtrace::{Rng, Settings, radiance};
 use render_lessons::ray::Ray;
 use render_lessons::sampling::uniform_sphere;
 use render_lessons::scene::{Object, Scene};
-use render_lessons::shapes::{Aabb, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
+use render_lessons::shapes::{Aabb, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
 use render_lessons::transform::Transform;
 
 /// The camera distances of the issue: 10, 300, 1e4 and 1e6 radii.
@@ -53,23 +53,55 @@ fn re_hits(
         let Some(hit) = shape.hit(&ray, 0.0, f32::INFINITY) else {
             continue;
         };
-        let point = if raw_point { ray.at(hit.t) } else { hit.point };
-        for _ in 0..spawned {
-            let w = uniform_sphere(rng.next_vec2());
-            let side = if w.dot(hit.normal) >= 0.0 {
-                hit.normal
-            } else if solid {
-                continue;
-            } else {
-                -hit.normal
-            };
-            let (start, t_min) = offset.start(point, hit.error, side);
-            let Ok(out) = Ray::new(start, w) else {
-                continue;
-            };
-            total += 1;
-            wrong += u32::from(shape.hit(&out, t_min, f32::INFINITY).is_some());
-        }
+        let (w, t) = spawn(
+            shape,
+            &ray,
+            &hit,
+            How {
+                solid,
+                offset,
+                raw_point,
+            },
+            spawned,
+            &mut rng,
+        );
+        (wrong, total) = (wrong + w, total + t);
+    }
+    (wrong, total)
+}
+
+/// How rays leave a hit: see [`re_hits`].
+#[derive(Clone, Copy)]
+struct How {
+    solid: bool,
+    offset: Offset,
+    raw_point: bool,
+}
+
+/// Re-hits of `shape` among `spawned` rays leaving `hit` (of `ray`) in directions
+/// uniform on the sphere, started as `how` says; and how many rays were spawned.
+fn spawn(shape: &Shape, ray: &Ray, hit: &Hit, how: How, spawned: u32, rng: &mut Rng) -> (u32, u32) {
+    let point = if how.raw_point {
+        ray.at(hit.t)
+    } else {
+        hit.point
+    };
+    let (mut wrong, mut total) = (0, 0);
+    for _ in 0..spawned {
+        let w = uniform_sphere(rng.next_vec2());
+        let side = if w.dot(hit.normal) >= 0.0 {
+            hit.normal
+        } else if how.solid {
+            continue;
+        } else {
+            -hit.normal
+        };
+        let (start, t_min) = how.offset.start(point, hit.error, side);
+        let Ok(out) = Ray::new(start, w) else {
+            continue;
+        };
+        total += 1;
+        wrong += u32::from(shape.hit(&out, t_min, f32::INFINITY).is_some());
     }
     (wrong, total)
 }
@@ -259,21 +291,13 @@ fn triangle_re_hits(offset: Offset, raw_point: bool) -> (u32, u32) {
         let Some(hit) = tri.hit(&ray, 0.0, f32::INFINITY) else {
             continue;
         };
-        let p = if raw_point { ray.at(hit.t) } else { hit.point };
-        for _ in 0..16 {
-            let w = uniform_sphere(rng.next_vec2());
-            let side = if w.dot(hit.normal) >= 0.0 {
-                hit.normal
-            } else {
-                -hit.normal
-            };
-            let (start, t_min) = offset.start(p, hit.error, side);
-            let Ok(out) = Ray::new(start, w) else {
-                continue;
-            };
-            total += 1;
-            wrong += u32::from(tri.hit(&out, t_min, f32::INFINITY).is_some());
-        }
+        let how = How {
+            solid: false,
+            offset,
+            raw_point,
+        };
+        let (w, t) = spawn(&Shape::Triangle(tri), &ray, &hit, how, 16, &mut rng);
+        (wrong, total) = (wrong + w, total + t);
     }
     (wrong, total)
 }

@@ -2,6 +2,7 @@
 //! S5, S13, S14, S15). No timing is checked: only what numerics say must hold, and
 //! that every chart can be written.
 
+use render_lessons::course::measure::offsets::Placement;
 use render_lessons::course::measure::{Measured, Quality, offsets, precision, sphere, triangle};
 use render_lessons::offset::Offset;
 
@@ -78,10 +79,16 @@ fn triangle_moller_trumbore_leaks_watertight_does_not() {
 #[test]
 fn offsets_fixed_epsilon_self_hits_far_away_scaled_never() {
     let rates = offsets::data(Quality::Quick).unwrap();
-    let index = |o: Offset| offsets::METHODS.iter().position(|m| m.1 == o).unwrap();
-    let fixed = &rates[index(Offset::Fixed(1e-4))];
-    let none = &rates[index(Offset::Fixed(0.0))];
-    let scaled = &rates[index(Offset::Scaled)];
+    let series = |placement: Placement, o: Offset| {
+        let method = offsets::METHODS.iter().position(|m| m.1 == o).unwrap();
+        let i = offsets::SERIES
+            .iter()
+            .position(|s| *s == (placement, method));
+        &rates[i.unwrap()]
+    };
+    let far = Placement::SphereFar;
+    let fixed = series(far, Offset::Fixed(1e-4));
+    let none = series(far, Offset::Fixed(0.0));
     eprintln!("fixed 1e-4 at 1e4: {}", at(fixed, 1e4));
     assert!(at(fixed, 1e4) > 0.1, "S13: fixed epsilon at 1e4");
     assert_eq!(at(fixed, 1.0), 0.0, "near the origin 1e-4 is plenty");
@@ -89,12 +96,25 @@ fn offsets_fixed_epsilon_self_hits_far_away_scaled_never() {
         none.iter().all(|p| p.1 > 0.0),
         "no offset self-hits everywhere"
     );
-    for &(x, r) in scaled {
-        assert_eq!(r, 0.0, "scaled offset at |p| = {x}");
+    for &(x, r) in series(far, Offset::Scaled) {
+        assert_eq!(r, 0.0, "scaled offset, sphere far, at {x}");
+    }
+    // From o + t d seen from far away, the scaled offset fails too; the error bound
+    // holds at every distance of the chart in both placements.
+    let camera = Placement::CameraFar;
+    assert!(
+        at(series(camera, Offset::Scaled), 1e3) > 0.1,
+        "scaled, camera far"
+    );
+    for placement in Placement::ALL {
+        for &(x, r) in series(placement, Offset::ErrorBound) {
+            assert_eq!(r, 0.0, "error bound, {placement:?}, at {x}");
+        }
     }
     // S14: the scaled offset must not jump over a thin gap; a fixed 1e-4 does.
     assert!(!offsets::contact_shadow_blocked(Offset::Fixed(1e-4)).unwrap());
     assert!(offsets::contact_shadow_blocked(Offset::Scaled).unwrap());
+    assert!(offsets::contact_shadow_blocked(Offset::ErrorBound).unwrap());
     let (small, large) = (
         offsets::scaled_offset_size(1.0).unwrap(),
         offsets::scaled_offset_size(1e5).unwrap(),

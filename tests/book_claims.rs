@@ -1,0 +1,156 @@
+//! A claim quantified over measurements is checked by a test (issue 20, part 5c).
+//!
+//! The rule: a paragraph of a chapter (outside code blocks) that quantifies over a
+//! measured table or chart with one of the phrases in [`QUANTIFIERS`] ("at every
+//! distance", "to the bit", "within the noise", ...) must name the test that checks
+//! it: either a marker `<!-- checked: tests/FILE.rs::test_name -->` in the paragraph,
+//! or, as the "How we know" lists do, the test's name in backticks. Either way the
+//! test function must exist in that file (for a bare name: in some file of `tests/`).
+//! A sentence that cannot name its test is reworded.
+//!
+//! Standard library only.
+
+use std::fs;
+use std::path::Path;
+
+/// Phrases that claim something of every row of a measurement (matched in lower case).
+const QUANTIFIERS: &[&str] = &[
+    "at every distance",
+    "at any distance",
+    "every size",
+    "at every $",
+    "at any $",
+    "to the bit",
+    "within the noise",
+    "is noise",
+    "the noise of the timing",
+];
+
+/// True if `file` (a test file's text) defines `fn name`.
+fn defines(file: &str, name: &str) -> bool {
+    file.contains(&format!("fn {name}("))
+}
+
+/// The problems of one page: `tests` gives a test file's text by its path
+/// (`tests/x.rs`), and `all_tests` is the text of every test file, joined.
+fn check_page(
+    page: &str,
+    text: &str,
+    tests: &dyn Fn(&str) -> Option<String>,
+    all_tests: &str,
+) -> Vec<String> {
+    let mut problems = Vec::new();
+    let mut in_code = false;
+    let mut paragraph = String::new();
+    let mut first_line = 0;
+    for (i, line) in text.lines().chain(std::iter::once("")).enumerate() {
+        if line.trim_start().starts_with("```") {
+            in_code = !in_code;
+            continue;
+        }
+        if in_code {
+            continue;
+        }
+        if !line.trim().is_empty() {
+            if paragraph.is_empty() {
+                first_line = i + 1;
+            }
+            paragraph.push_str(line);
+            paragraph.push('\n');
+            continue;
+        }
+        if let Some(problem) = check_paragraph(&paragraph, tests, all_tests) {
+            problems.push(format!("{page}:{first_line}: {problem}"));
+        }
+        paragraph.clear();
+    }
+    problems
+}
+
+/// `None` if the paragraph makes no quantified claim or names a test that exists.
+fn check_paragraph(
+    paragraph: &str,
+    tests: &dyn Fn(&str) -> Option<String>,
+    all_tests: &str,
+) -> Option<String> {
+    let low = paragraph.to_lowercase();
+    let phrase = QUANTIFIERS.iter().find(|q| low.contains(*q))?;
+    if let Some(rest) = paragraph.split("<!-- checked: ").nth(1) {
+        let target = rest.split(" -->").next().unwrap_or("").trim();
+        let Some((file, name)) = target.split_once("::") else {
+            return Some(format!("marker `{target}` is not tests/FILE.rs::test_name"));
+        };
+        return match tests(file) {
+            Some(code) if defines(&code, name) => None,
+            _ => Some(format!(
+                "`{phrase}`: the marker's test {target} does not exist"
+            )),
+        };
+    }
+    let names_a_test = paragraph
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .map(|span| span.rsplit("::").next().unwrap_or(span))
+        .any(|name| !name.is_empty() && defines(all_tests, name));
+    if names_a_test {
+        None
+    } else {
+        Some(format!(
+            "`{phrase}` claims something of every measurement, but no test is named \
+             (add <!-- checked: tests/FILE.rs::test_name -->, or reword)"
+        ))
+    }
+}
+
+#[test]
+fn every_quantified_claim_names_its_test() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let summary = fs::read_to_string(root.join("chapters/SUMMARY.md")).expect("SUMMARY.md");
+    let pages: Vec<&str> = summary
+        .split("](")
+        .skip(1)
+        .filter_map(|rest| rest.split(')').next())
+        .filter(|p| p.ends_with(".md"))
+        .collect();
+    let read = |file: &str| fs::read_to_string(root.join(file)).ok();
+    let mut all_tests = String::new();
+    for entry in fs::read_dir(root.join("tests")).expect("tests/").flatten() {
+        if entry.path().extension().is_some_and(|e| e == "rs") {
+            all_tests += &fs::read_to_string(entry.path()).unwrap_or_default();
+        }
+    }
+    let mut problems = Vec::new();
+    for page in pages {
+        let text = fs::read_to_string(root.join("chapters").join(page)).expect("chapter");
+        problems.extend(check_page(page, &text, &read, &all_tests));
+    }
+    assert!(
+        problems.is_empty(),
+        "{} quantified claim(s) without a test:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn the_claim_checker_can_fail() {
+    let tests = "#[test]\nfn holds_everywhere() {}\n";
+    let read = |file: &str| (file == "tests/x.rs").then(|| tests.to_string());
+    let check = |text: &str| check_page("p.md", text, &read, tests);
+    // Checked by a marker, by a named test, or no quantifier at all: fine.
+    assert!(
+        check("Zero at every distance.\n<!-- checked: tests/x.rs::holds_everywhere -->\n")
+            .is_empty()
+    );
+    assert!(check("- `holds_everywhere`: zero at every distance.\n").is_empty());
+    assert!(check("Zero at the distances measured.\n").is_empty());
+    assert!(check("```text\nat every distance\n```\n").is_empty());
+    // An unchecked claim, and a marker naming a test that does not exist.
+    let found = check("First.\n\nThe tree is faster at every size.\n");
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].starts_with("p.md:3: `every size`"), "{found:?}");
+    let found = check("Equal to the bit.\n<!-- checked: tests/x.rs::no_such_test -->\n");
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("does not exist"), "{found:?}");
+}

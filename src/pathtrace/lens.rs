@@ -108,7 +108,7 @@ impl LensCamera {
     /// In camera space the pinhole ray goes from the eye through the screen point
     /// **s** = (x, y, -s), s the screen distance; it meets the plane in focus, at
     /// distance z_f in front of the eye, at p_f = **s** z_f / s. The lens ray starts
-    /// at a uniform point l of the lens disc (z = 0) and goes towards p_f.
+    /// at a uniform point o' (`lens`) of the lens disc (z = 0) and goes towards p_f.
     pub fn ray(&self, pixel: Vec2, u: Vec2) -> Ray {
         let s = screen_point(self.pinhole.film(), pixel).extend(-self.pinhole.screen_distance());
         let (origin, direction) = if self.aperture == 0.0 {

@@ -459,6 +459,9 @@ fn s19_direct_lighting_estimators_are_unbiased() {
         table += &format!("| {label} | {small:.4} | {large:.4} |\n");
     }
     insta::assert_snapshot!("s19_sigmas", table);
+    // Step 6 says MIS is not always the best: at R = 0.5 the cone alone has a smaller
+    // sigma than MIS with the cone (rows 3 and 5).
+    assert!(sigma[3][1] < sigma[5][1], "{sigma:?}");
     // The page's prose divides the table's numbers: R = 0.1, cosine and uniform
     // against light area (rows 1, 0 and 2).
     let page = "10_5_next_event.md";

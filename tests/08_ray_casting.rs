@@ -189,9 +189,12 @@ fn s13_fixed_epsilon_self_intersects_far_from_the_origin_scaled_offset_never() {
     let (near, total) = self_hits(1.0, Offset::Fixed(1e-4));
     assert_eq!(near, 0, "near the origin 1e-4 is plenty");
     let (far, _) = self_hits(1e4, Offset::Fixed(1e-4));
+    assert_eq!(total, 64 * 256, "16 384 bounce rays");
+    // The count 08_1_light_and_shadows.md prints, 2704 (16.5 %), measured on x86-64;
+    // another libm's sin and cos may move a few bounce directions, hence 1 % slack.
     assert!(
-        far * 20 > total,
-        "at 1e4, more than 5% of bounces hit their own sphere: {far}/{total}"
+        far.abs_diff(2704) <= 27,
+        "at 1e4, 2704 of 16 384 bounces hit their own sphere: {far}/{total}"
     );
     for x in [1.0, 1e2, 1e3, 1e4, 1e5] {
         assert_eq!(self_hits(x, Offset::Scaled).0, 0, "scaled offset at {x}");

@@ -559,6 +559,7 @@ mod checks {
             Some((index, hit.t))
         };
         assert_eq!(check_closest(reference), Outcome::Pass);
+        assert_eq!(check_closest(closest_solution), Outcome::Pass);
         // Every hit, then the smallest t: no shrinking of t_max.
         let min_of_all = |ray: &Ray, shapes: &[Shape], t_min, t_max| {
             shapes

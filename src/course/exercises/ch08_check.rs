@@ -20,6 +20,28 @@ pub const CLOSEST: Exercise = Exercise {
 
 type ClosestArgs = (Ray, Vec<Shape>, f32, f32);
 
+// ANCHOR: solution
+/// A worked solution of exercise 8.1, written as lesson 08 teaches it: ask every
+/// shape for its nearest crossing in `(t_min, t_max)`, and let each hit shrink
+/// `t_max`, so that a later shape counts only if it is nearer.
+pub fn closest_solution(
+    ray: &Ray,
+    shapes: &[Shape],
+    t_min: f32,
+    t_max: f32,
+) -> Option<(usize, f32)> {
+    let mut closest = None;
+    let mut t_max = t_max;
+    for (i, shape) in shapes.iter().enumerate() {
+        if let Some(hit) = shape.hit(ray, t_min, t_max) {
+            t_max = hit.t;
+            closest = Some((i, hit.t));
+        }
+    }
+    closest
+}
+// ANCHOR_END: solution
+
 /// Checks `closest(ray, shapes, t_min, t_max)`: the index and `t` of the closest hit
 /// with `t_min < t < t_max` over all `shapes`, or `None`.
 pub fn check_closest(f: impl Fn(&Ray, &[Shape], f32, f32) -> Option<(usize, f32)>) -> Outcome {

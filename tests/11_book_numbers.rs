@@ -195,3 +195,15 @@ fn a_fragment_is_markdown_between_anchors() {
     );
     assert!(anchored(&text, "missing").is_none());
 }
+
+/// Chart 5's light, as `11_speed_vs_accuracy.md` states it: radius R = 0.25 at height
+/// 1 above the shading point, so sin^2 of the cone's half-angle, and the exact answer
+/// every estimator estimates, is R^2 = 0.0625.
+#[test]
+fn chart_5_light_has_the_radius_and_exact_answer_the_page_states() {
+    use render_lessons::course::measure::monte_carlo;
+    let (radius, height) = (0.25, 1.0);
+    assert_eq!(f64::from(monte_carlo::RADIUS), radius);
+    assert_eq!(monte_carlo::exact(), (radius / height) * (radius / height));
+    assert_eq!(monte_carlo::exact(), 0.0625);
+}

@@ -169,3 +169,24 @@ fn figure_draws() {
     let coloured = rgba.chunks(4).filter(|p| p[0] != p[2]).count();
     assert!(coloured > 1000, "the two moved houses are drawn in colour");
 }
+
+/// The numbers `01_transforms.md` and `01_1_rotation_y.md` work out by hand, computed
+/// again with the crate's matrices.
+#[test]
+fn lesson_01_worked_numbers() {
+    let a = 30f32.to_radians();
+    let p = Vec3::new(1.0, 2.0, 3.0);
+    // R_z p = (0.866 - 1, 0.5 + 1.732, 3): the 1.732 is 2 cos 30°.
+    let rz = Transform::rotation_z(a).unwrap().point(p);
+    assert!(close(
+        rz,
+        Vec3::new(a.cos() - 1.0, 0.5 + 2.0 * a.cos(), 3.0)
+    ));
+    assert_eq!(format!("{:.3}", 2.0 * a.cos()), "1.732");
+    // 30.0 handed to a function that takes radians turns by about 1719°.
+    assert_eq!(format!("{:.0}", 30f32.to_degrees()), "1719");
+    // R_y with the sines' signs swapped is the rotation by -30°: (-0.634, 2, 3.098).
+    let wrong = Transform::rotation_y(-a).unwrap().point(p);
+    let shown = format!("{:.3} {:.3} {:.3}", wrong.x, wrong.y, wrong.z);
+    assert_eq!(shown, "-0.634 2.000 3.098");
+}

@@ -89,3 +89,19 @@ fn figure_draws() {
     let rgba = lesson::ray_figure(&book_ray()).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 500, "the ray is drawn in blue");
 }
+
+/// The numbers `02_ray_model.md` works out by hand, computed again with `Ray`.
+#[test]
+fn lesson_02_worked_numbers() {
+    let ray = Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(0.8, 0.6, 0.0)).unwrap();
+    // r(2.5) - o = (2, 1.5, 0), of length 2.5.
+    let offset = ray.at(2.5) - ray.origin();
+    assert!((offset - Vec3::new(2.0, 1.5, 0.0)).length() < 1e-6);
+    // The reversed ray: r(2.5) = (1 - 2, 1 - 1.5, 0).
+    let reversed = Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(-0.8, -0.6, 0.0)).unwrap();
+    assert!((reversed.at(2.5) - Vec3::new(-1.0, -0.5, 0.0)).length() < 1e-6);
+    // The x axis is crossed at t = -5/3, at x = -1/3.
+    let crossing = ray.at(-5.0 / 3.0);
+    assert!(crossing.y.abs() < 1e-6);
+    assert_eq!(format!("{:.3}", crossing.x), "-0.333");
+}

@@ -150,3 +150,14 @@ fn figures_draw() {
         assert!(common::red_pixels(&d.rgba()) > 200);
     }
 }
+
+/// The numbers `03_ortho_camera.md` works out by hand: on a 3 x 3 film over
+/// [-8, 8] x [-6, 6] the middle pixel's centre, 1.5 pixels in, is the plane's centre,
+/// and its neighbours are 16/3 apart in x.
+#[test]
+fn lesson_03_worked_numbers() {
+    let (x, y) = (1.5f64 / 3.0 * 16.0 - 8.0, 1.5f64 / 3.0 * 12.0 - 6.0);
+    assert_eq!((x, y), (0.0, 0.0));
+    assert_eq!(format!("{:.3}", 16.0f64 / 3.0), "5.333");
+    assert_eq!(MAX_RESOLUTION, 16384, "the largest width or height");
+}

@@ -126,6 +126,8 @@ fn s12_frisvad_breaks_near_minus_z_and_duff_does_not() {
         "Frisvad's basis is far from orthonormal: {frisvad}"
     );
     assert!(duff < 1e-6, "Duff et al.'s stays orthonormal: {duff}");
+    // What where_methods_fail_cameras.md prints.
+    assert_eq!(format!("{frisvad:.2} {duff}"), "0.61 0");
     assert!(Basis::around(n).is_right_handed());
 }
 
@@ -138,4 +140,39 @@ proptest! {
         prop_assert!(b.is_right_handed());
         prop_assert_eq!(b.w(), n);
     }
+}
+
+/// The numbers `04_basis_change.md` works out by hand, computed again with `Basis`.
+#[test]
+fn lesson_04_worked_numbers() {
+    let a = 30f32.to_radians();
+    let basis = Basis::new(
+        Vec3::new(a.cos(), a.sin(), 0.0),
+        Vec3::new(-a.sin(), a.cos(), 0.0),
+        Vec3::Z,
+    )
+    .unwrap();
+    let show = |v: Vec3, digits: usize| format!("{:.digits$} {:.digits$}", v.x, v.y);
+    // b = (2, 1, 0): a = 2u + v = (1.7321 - 0.5, 1 + 0.8660, 0).
+    assert_eq!(format!("{:.4}", 2.0 * basis.u().x), "1.7321");
+    assert_eq!(
+        show(basis.to_world(Vec3::new(2.0, 1.0, 0.0)), 4),
+        "1.2321 1.8660"
+    );
+    // Exercise 2: a = (3, 4, 0) has b = (4.598, 1.964, 0), of length 5.
+    let b = basis.to_local(Vec3::new(3.0, 4.0, 0.0));
+    assert_eq!(show(b, 3), "4.598 1.964");
+    assert!((b.length() - 5.0).abs() < 1e-5);
+    // Exercise 3: the 45° basis, b = (1, 1, 0) gives a = (0, 1.4142, 0).
+    let q = 45f32.to_radians();
+    let turned = Basis::new(
+        Vec3::new(q.cos(), q.sin(), 0.0),
+        Vec3::new(-q.sin(), q.cos(), 0.0),
+        Vec3::Z,
+    )
+    .unwrap();
+    assert_eq!(
+        show(turned.to_world(Vec3::new(1.0, 1.0, 0.0)), 4),
+        "0.0000 1.4142"
+    );
 }

@@ -114,6 +114,7 @@ fn worst_error(angle: f32, build: fn(Vec3, Vec3) -> render_lessons::Result<Basis
 
 #[test]
 fn s10_nearly_parallel_up_keeps_the_basis_orthonormal() {
+    let mut printed = Vec::new();
     for angle in [3e-6f32, 1e-5] {
         let naive = worst_error(angle, camera_basis_as_on_slide);
         let ours = worst_error(angle, camera_basis);
@@ -126,7 +127,11 @@ fn s10_nearly_parallel_up_keeps_the_basis_orthonormal() {
             "one Gram-Schmidt step keeps it at {angle} rad: {ours}"
         );
         eprintln!("S10 at {angle:e} rad: slide basis error {naive:.1e}, ours {ours:.1e}");
+        printed.push(format!("{naive:.1e} {ours:.1e}"));
     }
+    // The numbers where_methods_fail_cameras.md prints (cross products and square
+    // roots only: the same on every machine).
+    assert_eq!(printed, ["1.9e-3 4.8e-7", "6.8e-4 4.8e-7"]);
 }
 
 #[test]

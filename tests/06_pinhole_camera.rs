@@ -175,3 +175,33 @@ fn figure_draws() {
     let rgba = lesson::fan_figure(&example(&[]).2).unwrap().rgba();
     assert!(common::blue_pixels(&rgba) > 300);
 }
+
+/// The numbers `06_pinhole_camera.md` and `06_1_placed_pinhole.md` work out by hand:
+/// lesson 03's film [-8, 8] x [-6, 6] at 4 x 3 pixels and screen distance 8.
+#[test]
+fn lesson_06_worked_numbers() {
+    let degrees = |x: f64| x.to_degrees();
+    // Pixel (0, 0): u = 0.5/4, v = 2.5/3 of the film, the screen point (-6, 4, -8).
+    let (u, v) = (0.5f64 / 4.0, 2.5f64 / 3.0);
+    assert_eq!(format!("{u:.3} {v:.4}"), "0.125 0.8333");
+    assert_eq!(-8.0 + u * 16.0, -6.0);
+    assert!((-6.0 + v * 12.0 - 4.0).abs() < 1e-12);
+    // The field of view at screen distance 8, and at 4.
+    assert_eq!(
+        format!("{:.1}", degrees(2.0 * (6.0f64 / 8.0).atan())),
+        "73.7"
+    );
+    assert_eq!(
+        format!("{:.1}", degrees(2.0 * (6.0f64 / 4.0).atan())),
+        "112.6"
+    );
+    // Exercise: (1.5, -1) on the orthographic film, in pixel units.
+    assert_eq!((1.5 + 8.0) / 16.0 * 4.0, 2.375);
+    assert_eq!((-1.0 + 6.0) / 12.0 * 3.0, 1.25);
+    // 06_1: the placed camera looks down at atan(1/2), and the top row is atan(4/8) up.
+    assert_eq!(format!("{:.1}", degrees(0.5f64.atan())), "26.6");
+    assert_eq!(format!("{:.2}", degrees((4.0f64 / 8.0).atan())), "26.57");
+    // 06_1: vfov 60° on 4 x 3 pixels reaches tan 30° up and 4/3 of that across.
+    let up = 30f64.to_radians().tan();
+    assert_eq!(format!("{up:.4} {:.4}", up * 4.0 / 3.0), "0.5774 0.7698");
+}

@@ -249,6 +249,9 @@ fn s16_interior_furnace_cosine_depth_8_is_exact_with_zero_variance() {
     let (mean, sigma) = pixel_samples(&scene, &camera, &s, 4096, 1);
     assert!((mean - S16_DEPTH_8).abs() < 1e-6, "mean {mean}");
     assert!(sigma < 1e-6, "sigma {sigma}");
+    // The pages' value: rho (1 - rho^9) / (1 - rho) at rho = 0.5, exact in binary.
+    assert_eq!(S16_DEPTH_8, 0.5 * (1.0 - 0.5f64.powi(9)) / (1.0 - 0.5));
+    assert_eq!(format!("{S16_DEPTH_8}"), "0.998046875");
 }
 
 #[test]
@@ -364,7 +367,8 @@ fn log_log_slope(points: &[(f64, f64)]) -> f64 {
 }
 
 fn convergence(pixels: PixelSampling) -> Vec<(f64, f64)> {
-    let reference = edge_image(PixelSampling::Jittered, 96 * 96, 99);
+    // The reference: 9216 jittered samples per pixel, a 96 x 96 grid.
+    let reference = edge_image(PixelSampling::Jittered, 9216, 99);
     [4u32, 16, 64, 256]
         .iter()
         .map(|&spp| {
@@ -386,6 +390,8 @@ fn s18_rmse_slope_independent_is_minus_one_half_jittered_steeper() {
     eprintln!("S18 jittered {jittered:?} slope {b}");
     assert!((a + 0.5).abs() <= 0.05, "independent slope {a}");
     assert!(b < -0.55, "jittered slope {b}");
+    // "Close to" the N^(-3/4) of the theory: within 0.05 of -0.75.
+    assert!((b + 0.75).abs() < 0.05, "jittered slope {b}");
     let page = "10_path_tracing.md";
     assert_quotes(page, "**−0.487** for independent", a);
     assert_quotes(page, "**−0.764** for jittered", b);
@@ -1143,7 +1149,7 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 compared += 1;
             }
         }
-        assert_eq!(compared, 54 * 40);
+        assert_eq!(compared, 2160, "54 columns by 40 rows");
     }
 }
 
@@ -1796,5 +1802,96 @@ fn each_page_links_a_stability_case_where_it_first_names_it() {
         "a page names a stability case first without linking its section of \
          Where methods fail:\n{}",
         missing.join("\n")
+    );
+}
+
+/// The numbers lesson 10's pages work out by hand, computed again: each
+/// `assert_quotes` finds the phrase on the page and checks its number against the
+/// value to the digits the page prints.
+#[test]
+fn lesson_10_worked_numbers() {
+    use render_lessons::pathtrace::roulette::RR_MAX_SURVIVAL;
+    use std::f64::consts::PI;
+    // Step 2's convergence table: a 64-sample reference inflates the error.
+    let one = (1.0f64 + 1.0 / 64.0).sqrt();
+    let sixteen = (1.0f64 + 16.0 / 64.0).sqrt();
+    assert_quotes("10_path_tracing.md", r"\approx 1.008$ times", one);
+    assert_quotes(
+        "10_path_tracing.md",
+        "about 1.11 of the rise",
+        sixteen / one,
+    );
+    // 10_1's exercises: samples for an RMSE, and the quarter disc's sigma.
+    let sigma = 0.8928f64;
+    let spacing = 2f64.powi(-22);
+    assert_eq!(format!("{spacing:.1e}"), "2.4e-7");
+    assert_eq!(
+        ((sigma / 0.001).powi(2) / 1000.0).round() * 1000.0,
+        797_000.0
+    );
+    assert_eq!(format!("{:.1e}", (sigma / spacing).powi(2)), "1.4e13");
+    let variance = 4.0 * PI - PI * PI;
+    assert_quotes("10_1_monte_carlo.md", "= 2.697$ and", variance);
+    assert_quotes("10_1_monte_carlo.md", r"$\sigma = 1.642$", variance.sqrt());
+    assert_quotes(
+        "10_1_monte_carlo.md",
+        r"\approx 3.4$ times",
+        (1.642f64 / 0.893).powi(2),
+    );
+    // 10_2's exercise: the naive sample's sigma.
+    assert_quotes("10_2_naive.md", r"\approx 0.577\rho$", 1.0 / 3f64.sqrt());
+    assert_quotes(
+        "10_2_naive.md",
+        r"$\sigma \approx 0.289$",
+        0.5 / 3f64.sqrt(),
+    );
+    // 10_3: the interior furnace, 1 - 0.5^(d+1) at depth d.
+    let furnace = |d: i32| 1.0 - 0.5f64.powi(d + 1);
+    assert_eq!(format!("{}", furnace(8)), "0.998046875");
+    assert_eq!(format!("{}", furnace(3)), "0.9375");
+    assert_eq!(format!("{}", furnace(9)), "0.9990234375");
+    assert_quotes("10_4_roulette.md", "$0.998$ where", furnace(8));
+    // 10_4: the cap, and the exercise's game with beta = (0.3, 0.2, 0.1).
+    assert_eq!(RR_MAX_SURVIVAL, 0.95);
+    let q = 0.3f64.min(f64::from(RR_MAX_SURVIVAL));
+    assert_quotes("10_4_roulette.md", "0.667, 0.333)$; with", 0.2 / q);
+    assert_quotes("10_4_roulette.md", "0.667, 0.333) = (0.3", 0.2 / q);
+    assert_quotes("10_4_roulette.md", "0.333)$; with", 0.1 / q);
+    // 10_5's exercise: the light's centre is 81.55 above the floor.
+    let h = 81.55f64;
+    assert_quotes("10_5_next_event.md", "= 6650.4/1017.6", h * h);
+    assert_eq!(
+        format!("{:.1}", 2.0 * h * h),
+        "13300.8",
+        "the page's 13 300.8"
+    );
+    assert_quotes("10_5_next_event.md", r"0.7071)", 0.5f64.sqrt());
+    // 10_6's exercise: the cosine density of the light sample's direction.
+    assert_quotes("10_6_mis.md", "= 0.3183/6.535", 1.0 / PI);
+    let ratio = (1.0 / PI) / 6.535;
+    assert_quotes("10_6_mis.md", "= 0.0487$, squared", ratio);
+    assert_quotes("10_6_mis.md", "squared $0.00237$", ratio * ratio);
+    // 10_7: the critical angle of glass, and the lamp that replaces smallpt's sphere.
+    assert_quotes(
+        "10_7_mirror_glass.md",
+        r"\approx 41.8°$",
+        (1.0f64 / 1.5).asin().to_degrees(),
+    );
+    let poke = 0.27f64;
+    let cap = PI * (2.0 * 600.0 * poke - poke * poke);
+    assert_quotes("10_7_mirror_glass.md", "= 1017.6$, so", cap);
+    let side = f64::from(render_lessons::pathtrace::scenes::CORNELL_LIGHT_SIDE);
+    assert_quotes("10_7_mirror_glass.md", "Its side, 31.9002, gives", side);
+    assert!(
+        (side * side - cap).abs() < 0.05,
+        "the lamp's area is the cap's"
+    );
+    // S19: one light-area sample is 1 with probability R^2, else 0.
+    let r2 = 0.1f64 * 0.1;
+    let page = "where_methods_fail_monte_carlo.md";
+    assert_quotes(
+        page,
+        r"\approx 0.0995$ for $R = 0.1$",
+        (r2 * (1.0 - r2)).sqrt(),
     );
 }

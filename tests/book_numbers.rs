@@ -623,6 +623,8 @@ struct Stated {
     line: usize,
     text: String,
     printed: Printed,
+    /// Printed with a `%`: a source may hold it as a fraction (20 % as 0.2).
+    percent: bool,
 }
 
 /// Is this number, printed as `digits` (sign left out), a stated result rather
@@ -756,6 +758,7 @@ fn stated_numbers(text: &str) -> Vec<Stated> {
                     line: line_number,
                     text: digits.trim().to_string(),
                     printed: p,
+                    percent,
                 });
             }
             i += digits.len().max(1);
@@ -807,7 +810,9 @@ fn function_body<'a>(code: &'a str, name: &str) -> Option<&'a str> {
 
 /// The functions a page names: `(None, name)` for a name in backticks (`a::b`
 /// counts as `b`), to be found in any test file, and `(Some(file), name)` for a
-/// `<!-- checked: FILE.rs::name -->` marker, found in that file (a test or a bench).
+/// `<!-- checked: FILE.rs::name -->` marker, found in that file (a test, a bench, or
+/// the source that defines a scene's numbers; `BENCHMARKS.md::anchor` names a table
+/// of the benchmarks).
 fn named_functions(text: &str) -> Vec<(Option<String>, String)> {
     let mut names = Vec::new();
     let mut in_code = false;
@@ -841,7 +846,7 @@ fn named_functions(text: &str) -> Vec<(Option<String>, String)> {
 
 /// What a page's numbers may come from in code: the body of each function it
 /// names (see [`named_functions`]) and the snapshots that body asserts. `code`
-/// holds (path, text) for every file under `tests/` and `benches/`; `snapshot`
+/// holds (path, text) for every Rust file of the project; `snapshot`
 /// reads `tests/snapshots/NAME.snap` by NAME.
 fn test_sources(
     text: &str,
@@ -855,10 +860,15 @@ fn test_sources(
                 Some(f) => f == path,
                 None => path.starts_with("tests/"),
             };
-            let Some(body) = function_body(source, &name).filter(|_| wanted) else {
+            let region = if path.ends_with(".md") {
+                anchored_lines(source, &name).map(|lines| lines.join("\n"))
+            } else {
+                function_body(source, &name).map(str::to_string)
+            };
+            let Some(body) = region.filter(|_| wanted) else {
                 continue;
             };
-            out.push_str(body);
+            out.push_str(&body);
             let stem = path.trim_start_matches("tests/").trim_end_matches(".rs");
             for call in body.split("assert_snapshot!(").skip(1) {
                 let quoted = call.trim_start().strip_prefix('"');
@@ -963,10 +973,34 @@ fn unsourced(page: &str, text: &str, sources: &str, quoted: &[Printed]) -> Vec<S
                 value: s.printed.value.abs(),
                 unit: s.printed.unit,
             };
-            !known.iter().any(|&k| supports(k, stated))
+            let fraction = Printed {
+                value: stated.value / 100.0,
+                unit: stated.unit / 100.0,
+            };
+            !known
+                .iter()
+                .any(|&k| supports(k, stated) || (s.percent && supports(k, fraction)))
         })
         .map(|s| format!("{page}:{}: `{}`", s.line, s.text))
         .collect()
+}
+
+/// Every `.rs` file under `root/dir`, as (path relative to `root`, text).
+fn rust_files(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
+    let Ok(entries) = fs::read_dir(root.join(dir)) else {
+        return;
+    };
+    let mut paths: Vec<_> = entries.flatten().map(|e| e.path()).collect();
+    paths.sort();
+    for path in paths {
+        let relative = dir.join(path.file_name().unwrap_or_default());
+        if path.is_dir() {
+            rust_files(root, &relative, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            let text = fs::read_to_string(&path).unwrap_or_default();
+            out.push((relative.to_string_lossy().replace('\\', "/"), text));
+        }
+    }
 }
 
 /// The numbers the book states that no source checks yet, one `page: number` a
@@ -1010,19 +1044,12 @@ fn every_number_the_book_states_comes_from_a_source() {
     let chapters = root.join("chapters");
     let read = |rel: &str| fs::read_to_string(chapters.join(rel)).ok();
     let mut code = Vec::new();
-    for dir in ["tests", "benches"] {
-        for entry in fs::read_dir(root.join(dir))
-            .expect("tests/, benches/")
-            .flatten()
-        {
-            let path = entry.path();
-            if path.extension().is_some_and(|e| e == "rs") {
-                let name = path.file_name().unwrap().to_string_lossy();
-                let text = fs::read_to_string(&path).unwrap_or_default();
-                code.push((format!("{dir}/{name}"), text));
-            }
-        }
+    for dir in ["tests", "benches", "src", "examples"] {
+        rust_files(root, Path::new(dir), &mut code);
     }
+    // The measurements of `cargo bench`, by their anchors.
+    let benchmarks = fs::read_to_string(root.join("BENCHMARKS.md")).unwrap_or_default();
+    code.push(("BENCHMARKS.md".to_string(), benchmarks));
     let snapshot =
         |name: &str| fs::read_to_string(root.join(format!("tests/snapshots/{name}.snap"))).ok();
     let summary = read("SUMMARY.md").expect("SUMMARY.md");
@@ -1092,6 +1119,8 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
         Vec::<String>::new()
     );
     assert_eq!(found("$r^2 = 13\\,300.8$"), vec!["13 300.8"]);
+    let percent = stated_numbers("within 20 % of it");
+    assert!(percent[0].percent && percent[0].printed.value == 20.0);
 
     // Sources: an included region, a named test's body and the snapshot it asserts.
     let fragment = "<!-- ANCHOR: a -->\nt = 2.1340\n<!-- ANCHOR_END: a -->\nt = 9.75\n";

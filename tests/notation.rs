@@ -843,3 +843,38 @@ fn snapshot_tables_in_the_early_chapters_fit_the_page() {
         );
     }
 }
+
+/// The unit roundoff of `f32` as the notation table, the glossary and "Where methods
+/// fail" state it: epsilon = 2^-24, about 6e-8, the largest relative error of one
+/// correctly rounded operation. 1 + epsilon is a tie and rounds to 1 (to even);
+/// anything above it rounds up to 1 + 2 epsilon, the next float.
+#[test]
+fn the_unit_roundoff_of_f32_is_2_to_the_minus_24() {
+    let epsilon = f32::EPSILON / 2.0;
+    assert_eq!(epsilon, 2f32.powi(-24));
+    assert_eq!(format!("{epsilon:.0e}"), "6e-8");
+    let one = std::hint::black_box(1.0f32);
+    assert_eq!(one + epsilon, 1.0);
+    assert_eq!(one + epsilon * 1.5, 1.0 + 2.0 * epsilon);
+}
+
+/// The glossary's sRGB: "a curve close to the power 1/2.2" that "spends more of the
+/// 256 codes on dark values". The crate's exact curve (`to_srgb8`) is within 8 codes
+/// of the plain power 1/2.2 everywhere, and gives the darker half of the linear
+/// range, [0, 0.5], far more than half the codes.
+#[test]
+fn srgb_is_close_to_the_power_one_over_2_2() {
+    use render_lessons::framebuffer::to_srgb8;
+    let mut worst = 0i32;
+    for i in 0..=1000 {
+        let linear = i as f32 / 1000.0;
+        let power = (linear.powf(1.0 / 2.2) * 255.0).round() as i32;
+        worst = worst.max((i32::from(to_srgb8(linear)) - power).abs());
+    }
+    assert!(worst <= 8, "{worst} codes apart");
+    assert!(
+        to_srgb8(0.5) > 180,
+        "{} of 256 codes below half",
+        to_srgb8(0.5)
+    );
+}

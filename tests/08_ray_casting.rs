@@ -301,3 +301,58 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
     assert!(message.contains("--features exercises"), "{message}");
     assert_eq!(message.lines().count(), 1, "{message}");
 }
+
+/// The numbers `08_ray_casting.md` and `08_1_light_and_shadows.md` work out by hand,
+/// and the acne counts the second quotes from runs with other flags.
+#[test]
+fn lesson_08_worked_numbers() {
+    // The image: 480 x 270 = 129 600 pixels.
+    assert_eq!(BOOK.0 * BOOK.1, 129_600);
+    // The S13 sphere of lesson 08 sits at (X, X/2, X/4): 1.15e4 from the origin at 1e4.
+    assert_eq!(
+        format!("{:.2e}", Vec3::new(1e4, 5e3, 2.5e3).length()),
+        "1.15e4"
+    );
+    // The cameras look down (0, -2.2, -9): 13.7° below the horizon; the pinhole's
+    // top row is 2.6 above that, at a distance of 9.27.
+    let down = 2.2f64.atan2(9.0).to_degrees();
+    let across = 2.2f64.hypot(9.0);
+    assert_eq!(format!("{down:.1} {across:.2}"), "13.7 9.26");
+    assert_eq!(format!("{:.1}", 2.6f64.atan2(across).to_degrees()), "15.7");
+    // The red sphere's pixel: its albedo (0.85, 0.2, 0.15) times k_a + I cos / d^2.
+    let red = Vec3::new(0.7348, 0.1729, 0.1297);
+    let factor = red / Vec3::new(0.85, 0.2, 0.15);
+    assert_eq!(format!("{:.4}", factor.x), "0.8645");
+    assert!(
+        factor.max_element() - factor.min_element() < 2e-4,
+        "{factor}"
+    );
+    let direct = 0.8645 - 0.1;
+    assert_eq!(format!("{direct:.4}"), "0.7645");
+    // Exercise 3: twice the distance, a quarter of the direct term.
+    let farther = 0.7645 / 4.0;
+    let pixel = (0.1 + farther) * Vec3::new(0.85, 0.2, 0.15);
+    assert_eq!(
+        format!("{farther:.4} {:.4}", 0.1 + farther),
+        "0.1911 0.2911"
+    );
+    assert_eq!(
+        format!("{:.3} {:.3} {:.3}", pixel.x, pixel.y, pixel.z),
+        "0.247 0.058 0.044"
+    );
+    // Float spacing: 2^(13-23) near 1e4; the S14 offset moves y by 1/65536.
+    assert_eq!(format!("{:.1e}", 2f64.powi(13 - 23)), "9.8e-4");
+    assert_eq!(format!("{:.1e}", 1.0 / 65536.0), "1.5e-5");
+    // The acne table for a smaller epsilon, and the scene moved to 1e5.
+    let acne = |epsilon: f32, far: Vec3| {
+        let images = lesson::images(BOOK, epsilon, far, None).unwrap();
+        lesson::numbers(BOOK, epsilon, far, &images).unwrap()
+    };
+    let small = acne(1e-6, FAR);
+    assert!(small.contains("  6672    5.15%"), "{small}");
+    assert!(small.contains("scaled offset     8       0.01%"), "{small}");
+    let larger = acne(1e-2, FAR);
+    assert!(larger.contains("  10      0.01%"), "{larger}");
+    let far = acne(EPSILON, Vec3::new(1e5, 0.0, 0.0));
+    assert!(far.contains("scaled offset     1306    1.01%"), "{far}");
+}

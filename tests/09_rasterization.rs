@@ -936,3 +936,45 @@ fn images_side_by_side() {
         "below the shorter image: white"
     );
 }
+
+/// The numbers lesson 09's pages work out by hand: depth with n = 0.5 and f = 50
+/// (`09_1`), the guard band (`09_2`), a perspective-correct weight (`09_3`) and a
+/// light 100 above a 4 x 4 square (`09_4`).
+#[test]
+fn lesson_09_worked_numbers() {
+    let (n, f) = (0.5f64, 50.0f64);
+    let (a, b) = ((f + n) / (f - n), 2.0 * f * n / (f - n));
+    assert_eq!(format!("{a:.4} {b:.4}"), "1.0202 1.0101");
+    let z = |d: f64| a - b / d;
+    let depth = |d: f64| (z(d) + 1.0) / 2.0;
+    assert_eq!(format!("{:.4}", z(6.6321)), "0.8679");
+    assert_eq!(format!("{:.4} {:.3}", z(1.0), depth(1.0)), "0.0101 0.505");
+    assert_eq!(format!("{:.4} {:.3}", z(5.0), depth(5.0)), "0.8182 0.909");
+    assert_eq!(format!("{:.0}", 100.0 * depth(5.0)), "91");
+    assert!(depth(0.5).abs() < 1e-12 && (depth(50.0) - 1.0).abs() < 1e-12);
+    // Exercise 2: film [-1.6, 1.6] x [-0.9, 0.9] at s = 1.5, 16 x 9 pixels, the
+    // point (0.8, 0.45, -3).
+    let s = 1.5;
+    let (xs, ys) = (s * 0.8 / 3.0, s * 0.45 / 3.0);
+    assert_eq!(format!("{xs:.1} {ys:.3}"), "0.4 0.225");
+    assert_eq!(
+        (16.0 * (xs + 1.6) / 3.2, 9.0 * (0.9 - ys) / 1.8),
+        (10.0, 3.375)
+    );
+    assert_eq!(
+        format!("{:.4} {:.4}", 2.0 * s / 3.2, 2.0 * s / 1.8),
+        "0.9375 1.6667"
+    );
+    assert_eq!((8.0 * (0.25 + 1.0), 4.5 * (1.0 - 0.25)), (10.0, 3.375));
+    // 09_2: |x| <= 64 w in NDC, 2 units per image width.
+    assert_eq!((64.0 - 1.0) / 2.0, 31.5);
+    // 09_3: the far vertex's weight at the screen midpoint.
+    let (near, far) = (0.5 * 1.0, 0.5 * 0.25);
+    assert_eq!((far, near + far, far / (near + far)), (0.125, 0.625, 0.2));
+    // 09_4: a light 100 above the centre of a 4 x 4 square.
+    let d2 = 2.0f64 * 2.0 + 100.0 * 100.0 + 2.0 * 2.0;
+    assert_eq!(d2, 10_008.0);
+    let cos = 100.0 / d2.sqrt();
+    assert_eq!(format!("{cos:.4} {:.4e}", cos / d2), "0.9996 9.9880e-5");
+    assert_eq!(format!("{:.2}", 100.0 * (1.0 - cos / d2 / 1e-4)), "0.12");
+}

@@ -207,3 +207,26 @@ fn chart_5_light_has_the_radius_and_exact_answer_the_page_states() {
     assert_eq!(monte_carlo::exact(), (radius / height) * (radius / height));
     assert_eq!(monte_carlo::exact(), 0.0625);
 }
+
+/// `11_speed_vs_accuracy.md`'s exercise on chart 5: at equal error, cosine sampling
+/// needs the ratio of the two variances in the committed fragment, about 1.7e5,
+/// more samples than the light cone.
+#[test]
+fn chart_5_exercise_ratio_follows_the_fragment() {
+    let fragment = committed("11_5_monte_carlo");
+    let variance = |row: &str| -> f64 {
+        let line = fragment
+            .lines()
+            .find(|l| l.starts_with(&format!("| {row} |")))
+            .unwrap_or_else(|| panic!("no row {row}"));
+        line.trim_end_matches('|')
+            .rsplit('|')
+            .next()
+            .unwrap()
+            .trim()
+            .parse()
+            .unwrap()
+    };
+    let ratio = variance("cosine") / variance("light cone");
+    assert_eq!(format!("{ratio:.1e}"), "1.7e5");
+}

@@ -259,16 +259,20 @@ fn printed(text: &str) -> Option<(Printed, &str)> {
     let exp_text = if let Some(r) = rest.strip_prefix('e') {
         Some((r, ""))
     } else {
-        rest.strip_prefix("\\cdot 10^{")
-            .or_else(|| rest.strip_prefix("\\cdot10^{"))
-            .map(|r| (r, "}"))
+        let power = rest
+            .strip_prefix("\\cdot 10^")
+            .or_else(|| rest.strip_prefix("\\cdot10^"));
+        // `10^{-5}`, or `10^8` with a single digit.
+        power.map(|r| r.strip_prefix('{').map_or((r, "\u{0}"), |r| (r, "}")))
     };
     let mut rest = rest;
     if let Some((r, close)) = exp_text {
+        let single = close == "\u{0}";
         let end = r
             .char_indices()
-            .find(|&(k, c)| !(c.is_ascii_digit() || (k == 0 && c == '-')))
+            .find(|&(k, c)| !(c.is_ascii_digit() || (k == 0 && c == '-')) || (single && k == 1))
             .map_or(r.len(), |(k, _)| k);
+        let close = if single { "" } else { close };
         if let Ok(e) = r[..end].parse::<i32>()
             && r[end..].starts_with(close)
         {
@@ -436,6 +440,7 @@ fn the_quote_checker_reads_numbers_as_printed_and_can_fail() {
     let sci = p("3.7\\cdot 10^{-5}$").unwrap();
     assert!((sci.value - 3.7e-5).abs() < 1e-12 && (sci.unit - 1e-6).abs() < 1e-15);
     assert!((p("3.76e-5").unwrap().value - 3.76e-5).abs() < 1e-12);
+    assert_eq!(p("1.3\\cdot 10^8$").map(|x| x.value), Some(1.3e8));
     assert_eq!(
         numbers("12 (4.96%)")
             .iter()
@@ -1061,10 +1066,15 @@ fn every_number_the_book_states_comes_from_a_source() {
         .filter(|p| p.ends_with(".md"))
     {
         let text = read(page).expect("a page SUMMARY.md lists");
+        // A quote's value, and the row it is read from (the `3e3` of "at
+        // $3\cdot 10^3$, 1.7 %").
         let quoted: Vec<Printed> = QUOTES
             .iter()
             .filter(|q| q.chapter == page)
-            .filter_map(|q| source(q, &read(q.fragment)?).ok())
+            .flat_map(|q| {
+                let value = read(q.fragment).and_then(|f| source(q, &f).ok());
+                value.into_iter().chain(numbers(q.cell.0))
+            })
             .collect();
         let includes = included(&text, &read);
         let tests = test_sources(&text, &code, &snapshot);

@@ -705,6 +705,10 @@ fn chapter_09_quotes_its_comparison_table() {
         ),
     );
     assert!((129_600.0 * (mesh_t + 1) as f64 / 1.3e8 - 1.0).abs() < 0.05);
+    assert_eq!(
+        (mesh_t + 1, floor_v + mesh_v, floor_t + mesh_t),
+        (1025, 3076, 1026)
+    );
 
     // The agreements quoted in the text and the README.
     let agree = |name: &str| cell(&table, name, 4).to_string();

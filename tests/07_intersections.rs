@@ -902,3 +902,99 @@ fn s8_a_ray_along_any_face_hits_for_either_sign_of_zero() {
         }
     }
 }
+
+/// The numbers lesson 07's pages work out by hand for the lesson's five rays, and its
+/// exercises' answers, computed again (in `f64` where the page's steps are exact).
+#[test]
+fn lesson_07_worked_numbers() {
+    let f3 = |v: DVec3| format!("{:.4} {:.4} {:.4}", v.x, v.y, v.z);
+    // The sphere: o = (-3, 0.5, 0), d = (1, 0, 0), a unit sphere at the origin.
+    let o = DVec3::new(-3.0, 0.5, 0.0);
+    let (b, c) = (2.0 * o.x, o.length_squared() - 1.0);
+    assert_eq!(
+        (0.5f64 * 0.5, b, c, b * b - 4.0 * c),
+        (0.25, -6.0, 8.25, 3.0)
+    );
+    let sphere = Sphere::new(Vec3::ZERO, 1.0).unwrap();
+    let ray = Ray::new(Vec3::new(-3.0, 0.5, 0.0), Vec3::X).unwrap();
+    let (t0, t1) = sphere.roots_stable(&ray).unwrap();
+    assert_eq!(
+        format!("{t0:.3} {t1:.3} {:.3}", 0.75f64.sqrt()),
+        "2.134 3.866 0.866"
+    );
+    // The plane: (p0 - o) . n and d . n with n = (1, 2, 0)/sqrt 5, d = (1, -1, 0)/sqrt 2.
+    let n = DVec3::new(1.0, 2.0, 0.0).normalize();
+    let d = DVec3::new(1.0, -1.0, 0.0).normalize();
+    let along = DVec3::new(2.0, -2.5, 0.0).dot(n);
+    assert!((along + 3.0 / 5f64.sqrt()).abs() < 1e-12);
+    assert_eq!(
+        format!("{:.3} {:.4}", d.dot(n), along / d.dot(n)),
+        "-0.316 4.2426"
+    );
+    // The box [-1, 1]^3: o = (-3, -0.5, 0), d = (2, 1, 0)/sqrt 5.
+    let d = DVec3::new(2.0, 1.0, 0.0).normalize();
+    assert_eq!(format!("{:.3} {:.3}", d.x, d.y), "0.894 0.447");
+    let x_slab = format!("{:.3} {:.3}", 2.0 / d.x, 4.0 / d.x);
+    let y_slab = format!("{:.3} {:.3}", -0.5 / d.y, 1.5 / d.y);
+    assert_eq!(
+        (x_slab.as_str(), y_slab.as_str()),
+        ("2.236 4.472", "-1.118 3.354")
+    );
+    // The triangle, Moller and Trumbore's steps: v0 = (1, -1, -1), v1 = (1, 1.5, 0),
+    // v2 = (1, -1, 1), o = (-2, 0.2, 0), d = (1, 0.1, 0)/sqrt 1.01.
+    let (v0, v1, v2) = (
+        DVec3::new(1.0, -1.0, -1.0),
+        DVec3::new(1.0, 1.5, 0.0),
+        DVec3::new(1.0, -1.0, 1.0),
+    );
+    let (e1, e2) = (v1 - v0, v2 - v0);
+    assert_eq!(
+        (e1, e2, e1.cross(e2)),
+        (DVec3::new(0.0, 2.5, 1.0), 2.0 * DVec3::Z, 5.0 * DVec3::X)
+    );
+    let d = DVec3::new(1.0, 0.1, 0.0).normalize();
+    assert_eq!(f3(d), "0.9950 0.0995 0.0000");
+    assert_eq!(format!("{:.5} {:.5}", d.x, d.y), "0.99504 0.09950");
+    let p = d.cross(e2);
+    let det = e1.dot(p);
+    assert_eq!(f3(p), "0.1990 -1.9901 0.0000");
+    assert_eq!(format!("{det:.4}"), "-4.9752");
+    let t_vec = DVec3::new(-2.0, 0.2, 0.0) - v0;
+    let q = t_vec.cross(e1);
+    assert_eq!(f3(t_vec), "-3.0000 1.2000 1.0000");
+    assert_eq!(f3(q), "-1.3000 3.0000 -7.5000");
+    let parts = format!("{:.4} {:.4}", t_vec.x * p.x, t_vec.y * p.y);
+    assert_eq!(parts, "-0.5970 -2.3881");
+    let parts = format!("{:.4} {:.4}", d.x * q.x, d.y * q.y);
+    assert_eq!(parts, "-1.2935 0.2985");
+    let (b1, b2, t) = (t_vec.dot(p) / det, d.dot(q) / det, e2.dot(q) / det);
+    assert_eq!(
+        format!("{b1:.4} {b2:.4} {t:.3} {:.3}", 3.0 / d.x),
+        "0.6000 0.2000 3.015 3.015"
+    );
+    // Triangle exercise 2: b1 = 0.75 and b2 = 0.5 sum to 1.25.
+    assert_eq!(0.75 + 0.5, 1.25);
+    // The paraboloid's gradient (2x, 2y, -1) at x = -1.618.
+    let x = -(1.0 + 5f64.sqrt()) / 2.0;
+    assert_eq!(format!("{x:.3} {:.3}", 2.0 * x), "-1.618 -3.236");
+    // S9's paraboloid ray from (0.3, 0.2, 5): o_x^2 + o_y^2 = 0.13.
+    assert_eq!(format!("{:.2}", 0.3f64 * 0.3 + 0.2 * 0.2), "0.13");
+    // Exercise 7.2's far case, as its check builds it: a unit sphere 1e4 away along
+    // (0.3, 0.2, -1), the ray aimed at its centre. The roots are 9999 and 10001; the
+    // school formula in f32 rounds b^2 - 4ac to 0 and gives a double root at 10000.001.
+    let aim = Vec3::new(0.3, 0.2, -1.0).normalize();
+    let centre = 1e4 * aim;
+    let f = -centre;
+    let (a, b, c) = (aim.dot(aim), 2.0 * f.dot(aim), f.dot(f) - 1.0);
+    let school = |sign: f32| (-b + sign * (b * b - 4.0 * a * c).max(0.0).sqrt()) / (2.0 * a);
+    assert_eq!(b * b - 4.0 * a * c, 0.0);
+    assert_eq!(
+        format!("{:.3} {:.3}", school(-1.0), school(1.0)),
+        "10000.001 10000.001"
+    );
+    let far = Sphere::new(centre, 1.0).unwrap();
+    let (t0, t1) = far
+        .roots_stable(&Ray::new(Vec3::ZERO, aim).unwrap())
+        .unwrap();
+    assert_eq!(format!("{t0:.0} {t1:.0}"), "9999 10001");
+}

@@ -342,6 +342,9 @@ fn hit_points_on_surface_and_normals_are_gradients() {
         &format!("within {} of the scale", sci(worst_distance)),
     );
     assert_page_says(page, &format!("within {} of the true", sci(worst_normal)));
+    // The three numbers as the page prints them.
+    let printed = format!("{hits} {worst_distance:.1e} {worst_normal:.1e}");
+    assert_eq!(printed, "288 1.7e-8 1.5e-7");
 }
 
 // ---------------------------------------------------------------- bad input
@@ -477,6 +480,9 @@ fn instance_normal_is_the_inverse_transpose_one() {
         &format!("\\boldsymbol{{\\tau}} = {}", &sci(along)[1..]),
     );
     assert_page_says(page, &format!("${:.3}$, far from", naive.dot(tangent)));
+    // The two numbers as the page prints them (no sine or cosine: the same everywhere).
+    let printed = format!("{along:.1e} {:.3}", naive.dot(tangent));
+    assert_eq!(printed, "3.0e-8 -0.545");
     // Finite-difference check against the world-space implicit function.
     let f = |p: DVec3| p.x * p.x / 4.0 + p.y * p.y + p.z * p.z - 1.0;
     let g = gradient_fd(f, p64(h.point)).normalize();

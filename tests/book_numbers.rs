@@ -753,7 +753,23 @@ fn stated_numbers(text: &str) -> Vec<Stated> {
                 continue;
             };
             let digits = &rest[..rest.len() - after.len()];
-            let named = NAMING_WORDS.iter().any(|w| lower[..i].ends_with(w));
+            // "exercises 7.1 to 7.3": a naming word before a run of numbers names them all.
+            let mut before = lower[..i].trim_end();
+            while let Some(rest) = ["to", "and", "or", ","]
+                .iter()
+                .find_map(|c| before.strip_suffix(c))
+            {
+                let rest = rest.trim_end();
+                let number = rest.trim_end_matches(|c: char| c.is_ascii_digit() || c == '.');
+                if number.len() == rest.len() {
+                    break;
+                }
+                before = number.trim_end();
+            }
+            let before = format!("{before} ");
+            let named = NAMING_WORDS
+                .iter()
+                .any(|w| lower[..i].ends_with(w) || before.ends_with(w));
             let version =
                 after.starts_with('.') && after[1..].starts_with(|c: char| c.is_ascii_digit());
             let percent = after.trim_start().starts_with('%') || after.starts_with("\\%");
@@ -789,11 +805,12 @@ fn source_numbers(text: &str) -> Vec<Printed> {
     numbers(&joined)
 }
 
-/// The body of `fn name(` in a Rust file, braces matched, or the line of a
-/// `const name` (a bench's image size), or `None`.
+/// The body of `fn name(` in a Rust file, braces matched, or a `const name` up to
+/// its `;` (a bench's image size, a chart's distances), or `None`.
 fn function_body<'a>(code: &'a str, name: &str) -> Option<&'a str> {
     if let Some(at) = code.find(&format!("const {name}: ")) {
-        return code[at..].lines().next();
+        let end = code[at..].find(';').map_or(code.len(), |e| at + e + 1);
+        return Some(&code[at..end]);
     }
     let start = code.find(&format!("fn {name}("))?;
     let open = start + code[start..].find('{')?;
@@ -1120,7 +1137,7 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
         vec!["2.134", "28", "16 384", "1.2\\cdot 10^{-7}", "1e-4"]
     );
     assert_eq!(
-        found("Radius 0.5, 64 rays, Pharr (2016), exercise 7.2, S13, pbrt-v4 6.8.4, `0.866`."),
+        found("Radius 0.5, Pharr (2016), exercises 7.1 to 7.3, S13, pbrt-v4 6.8.4, `0.866`."),
         Vec::<String>::new(),
         "parameters, years, names, versions and code are no stated results"
     );

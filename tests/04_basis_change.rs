@@ -128,6 +128,22 @@ fn s12_frisvad_breaks_near_minus_z_and_duff_does_not() {
     assert!(duff < 1e-6, "Duff et al.'s stays orthonormal: {duff}");
     // What where_methods_fail_cameras.md prints.
     assert_eq!(format!("{frisvad:.2} {duff}"), "0.61 0");
+    // The page's explanation and exercise: |u|^2 - 1 = n_x^2 (|n|^2 - 1) / (1 + n_z)^2,
+    // with |n|^2 - 1 computed in f64 from the f32 components.
+    let (nx2, len2) = (
+        f64::from(n.x).powi(2),
+        f64::from(n.x).powi(2) + f64::from(n.y).powi(2) + f64::from(n.z).powi(2) - 1.0,
+    );
+    let one_plus_nz = 1.0 + f64::from(n.z);
+    assert_eq!(one_plus_nz, 2f64.powi(-23));
+    let shown = format!("{nx2:.3e} {len2:.2e} {:.2e}", one_plus_nz * one_plus_nz);
+    assert_eq!(shown, "1.484e-7 5.79e-8 1.42e-14");
+    let shown = format!("{nx2:.1e} {len2:.1e} {one_plus_nz:.2e}");
+    assert_eq!(shown, "1.5e-7 5.8e-8 1.19e-7");
+    let predicted = nx2 * len2 / (one_plus_nz * one_plus_nz);
+    assert_eq!(format!("{predicted:.3}"), "0.605");
+    // Duff's denominator (1 + |n_z|)^2 is about 4.
+    assert_eq!(format!("{:.0e}", nx2 * len2 / 4.0), "2e-15");
     assert!(Basis::around(n).is_right_handed());
 }
 

@@ -132,6 +132,14 @@ fn s10_nearly_parallel_up_keeps_the_basis_orthonormal() {
     // The numbers where_methods_fail_cameras.md prints (cross products and square
     // roots only: the same on every machine).
     assert_eq!(printed, ["1.9e-3 4.8e-7", "6.8e-4 4.8e-7"]);
+    // Both are about 6e-9 / theta (the page's fit of epsilon / sin theta).
+    for (error, theta) in [(1.9e-3f64, 3e-6), (6.8e-4, 1e-5)] {
+        assert!(
+            (error * theta / 6e-9 - 1.0).abs() < 0.15,
+            "{}",
+            error * theta
+        );
+    }
 }
 
 #[test]

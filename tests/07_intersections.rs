@@ -555,6 +555,18 @@ fn s7_barycentric_point_stays_on_the_plane() {
     // plane, then the barycentric point's (no sine or cosine: the same everywhere).
     let printed = format!("{ray_med:.1e} {ray_max:.1e} {bary_med:.1e} {bary_max:.1e}");
     assert_eq!(printed, "2.8e-4 2.0e-3 1.1e-8 5.1e-8");
+    // "About 25 000 times closer": the ratio of the two medians, to two digits.
+    let ratio = format!("{:.1e}", ray_med / bary_med);
+    assert!(ratio == "2.5e4" || ratio == "2.6e4", "{ratio}");
+    let printed_ratio = 2.8e-4 / 1.1e-8;
+    assert_eq!((printed_ratio / 1000.0f64).round() * 1000.0, 25_000.0);
+    // The exercise on S6's conservative slab: gamma_3, the factor 1 + 2 gamma_3, and
+    // how far it moves a t_far of 100.
+    let g3 = render_lessons::shapes::aabb::gamma(3);
+    assert_eq!(
+        format!("{g3:.2e} {:.1e} {:.1e}", 2.0 * g3, 200.0 * g3),
+        "1.79e-7 3.6e-7 3.6e-5"
+    );
 }
 
 #[test]
@@ -979,6 +991,27 @@ fn lesson_07_worked_numbers() {
     assert_eq!(format!("{x:.3} {:.3}", 2.0 * x), "-1.618 -3.236");
     // S9's paraboloid ray from (0.3, 0.2, 5): o_x^2 + o_y^2 = 0.13.
     assert_eq!(format!("{:.2}", 0.3f64 * 0.3 + 0.2 * 0.2), "0.13");
+    // S9 at theta = 1e-4 in f32 (where_methods_fail_roots.md): a = sin^2 theta,
+    // b = 2 o_x sin theta + cos theta, c = -4.87. The exact numerator -2ac/b is
+    // 9.74e-8, below the spacing 2^-23 = 1.1920929e-7 of floats near 1, to which the
+    // difference rounds; divided by 2a, the textbook's 5.960465.
+    let theta = 1e-4f32;
+    let a = theta.sin() * theta.sin();
+    let b = 2.0 * 0.3 * theta.sin() + theta.cos();
+    let exact = -2.0 * f64::from(a) * -4.87 / f64::from(b);
+    assert_eq!(
+        format!("{a:e} {b:.5} {exact:.2e} {:.1e}", 2.0 * a),
+        "9.999999e-9 1.00006 9.74e-8 2.0e-8"
+    );
+    let spacing = 2f32.powi(-23);
+    assert_eq!(
+        format!("{spacing:.7e} {:.7e}", 2.0 * a),
+        "1.1920929e-7 1.9999998e-8"
+    );
+    assert_eq!(format!("{:.6}", spacing / (2.0 * a)), "5.960465");
+    assert_eq!(format!("{:.1e}", exact), "9.7e-8");
+    // S3: f . f of about 1e10 lies between 2^33 and 2^34, where floats are 2^10 apart.
+    assert_eq!(2f64.powi(33 - 23), 1024.0);
     // Exercise 7.2's far case, as its check builds it: a unit sphere 1e4 away along
     // (0.3, 0.2, -1), the ray aimed at its centre. The roots are 9999 and 10001; the
     // school formula in f32 rounds b^2 - 4ac to 0 and gives a double root at 10000.001.

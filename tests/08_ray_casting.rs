@@ -308,6 +308,8 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
 fn lesson_08_worked_numbers() {
     // The image: 480 x 270 = 129 600 pixels.
     assert_eq!(BOOK.0 * BOOK.1, 129_600);
+    // The float spacing at 1e6 (where_methods_fail_offsets.md): 2^(19 - 23).
+    assert_eq!(2f64.powi(19 - 23), 0.0625);
     // The S13 sphere of lesson 08 sits at (X, X/2, X/4): 1.15e4 from the origin at 1e4.
     assert_eq!(
         format!("{:.2e}", Vec3::new(1e4, 5e3, 2.5e3).length()),

@@ -9,8 +9,14 @@
 //!   [`is_a_result`]) must agree, to the digits it prints, with a number of what the
 //!   page includes, of a test the page names (in backticks or in a
 //!   `<!-- checked: tests/F.rs::name -->` marker), or of a snapshot such a test
-//!   asserts. A number typed from a run or worked out by hand is thereby checked
-//!   against its source, and a stale one fails.
+//!   asserts. A marker may also name a bench, a source file's function or
+//!   constant (a scene's numbers), or an anchored table of `BENCHMARKS.md`. The Rust
+//!   comments a page includes are prose too, checked against the code beside them.
+//!
+//! A number measured by a run is pinned by the test that measures it; a number a
+//! page works out by hand is computed again by its lesson's `lesson_NN_worked_numbers`
+//! test. A stale number then fails. The check is necessary, not sufficient: a wrong
+//! number that happens to equal another number of the same sources passes.
 //!
 //! Standard library only.
 
@@ -1025,41 +1031,6 @@ fn rust_files(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
     }
 }
 
-/// The numbers the book states that no source checks yet, one `page: number` a
-/// line (`#` starts a comment). The list can only shrink: a number missing from it
-/// fails [`every_number_the_book_states_comes_from_a_source`], and so does a line
-/// whose number is now checked or gone. Most are steps of a worked example, which
-/// a test of the lesson should compute and name.
-const PENDING: &str = include_str!("book_numbers_pending.txt");
-
-/// The problems (`page:line: \`number\``) that `pending` does not list, and the
-/// lines of `pending` that no problem needs any more.
-fn against_pending(problems: &[String], pending: &str) -> (Vec<String>, Vec<String>) {
-    let key = |problem: &str| -> String {
-        let (page, rest) = problem.split_once(':').unwrap_or((problem, ""));
-        let number = rest.split_once(": ").map_or(rest, |(_, n)| n);
-        format!("{page}: {}", number.trim_matches('`'))
-    };
-    let listed: Vec<&str> = pending
-        .lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty() && !l.starts_with('#'))
-        .collect();
-    let keys: Vec<String> = problems.iter().map(|p| key(p)).collect();
-    let new = problems
-        .iter()
-        .zip(&keys)
-        .filter(|(_, k)| !listed.contains(&k.as_str()))
-        .map(|(p, _)| p.clone())
-        .collect();
-    let stale = listed
-        .iter()
-        .filter(|l| !keys.iter().any(|k| k == *l))
-        .map(|l| l.to_string())
-        .collect();
-    (new, stale)
-}
-
 #[test]
 fn every_number_the_book_states_comes_from_a_source() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -1110,20 +1081,13 @@ fn every_number_the_book_states_comes_from_a_source() {
             problems.extend(unsourced(&label, &include.comments, &sources, &quoted));
         }
     }
-    let (new, stale) = against_pending(&problems, PENDING);
     assert!(
-        new.is_empty(),
+        problems.is_empty(),
         "{} number(s) stated in the book agree with nothing the page includes, no test \
          it names and no quote of QUOTES: include the number, name the test that checks \
          it (in backticks or <!-- checked: tests/F.rs::name -->), or correct it:\n  {}",
-        new.len(),
-        new.join("\n  ")
-    );
-    assert!(
-        stale.is_empty(),
-        "now checked, or gone from the page: take these lines out of \
-         tests/book_numbers_pending.txt:\n  {}",
-        stale.join("\n  ")
+        problems.len(),
+        problems.join("\n  ")
     );
 }
 
@@ -1184,11 +1148,4 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
         unsourced("p.md", marker, &sources, &[]),
         vec!["p.md:1: `5008`"]
     );
-
-    // The pending list: a listed number passes, an unlisted one fails, and a line
-    // that nothing needs any more is reported.
-    let problems = vec!["p.md:3: `2.135`".to_string(), "p.md:9: `9.75`".to_string()];
-    let (new, stale) = against_pending(&problems, "# comment\np.md: 2.135\nq.md: 1.5\n");
-    assert_eq!(new, vec!["p.md:9: `9.75`"]);
-    assert_eq!(stale, vec!["q.md: 1.5"]);
 }

@@ -11,10 +11,15 @@
 //! All problems are collected and reported together, as `file:line: message`.
 //! Standard library only.
 
+#[path = "book/markdown.rs"]
+mod markdown;
+
 use std::collections::HashMap;
 use std::fmt;
 use std::fs;
 use std::path::{Component, Path, PathBuf};
+
+use markdown::fence;
 
 /// Where the checker reads files from: the real disk, or a map in the self-test.
 trait Files {
@@ -261,17 +266,6 @@ fn image_targets(line: &str) -> Vec<String> {
         from = tag_end;
     }
     found
-}
-
-/// An opening or closing code fence: (fence char, run length, info string).
-fn fence(line: &str) -> Option<(char, usize, &str)> {
-    let trimmed = line.trim_start();
-    let c = trimmed.chars().next()?;
-    if c != '`' && c != '~' {
-        return None;
-    }
-    let len = trimmed.chars().take_while(|&x| x == c).count();
-    (len >= 3).then(|| (c, len, trimmed[len..].trim()))
 }
 
 fn is_rust_info(info: &str) -> bool {

@@ -20,19 +20,12 @@
 //!
 //! Standard library only.
 
+#[path = "book/markdown.rs"]
+mod markdown;
+
+use markdown::fence;
 use std::fs;
 use std::path::Path;
-
-/// A fence line: its character, its length, and its info string.
-fn fence(line: &str) -> Option<(char, usize, &str)> {
-    let trimmed = line.trim_start();
-    let c = trimmed.chars().next()?;
-    if c != '`' && c != '~' {
-        return None;
-    }
-    let len = trimmed.chars().take_while(|&x| x == c).count();
-    (len >= 3).then(|| (c, len, trimmed[len..].trim()))
-}
 
 /// A number a chapter prints inside a sentence, and the fragment that holds it:
 /// lesson 11 writes the numbers the book quotes to `chapters/figures/11_N_name.md`

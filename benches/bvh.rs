@@ -26,7 +26,7 @@ use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleav
 use render_lessons::course::measure::scaling;
 use render_lessons::ray::Ray;
 use render_lessons::raycast::shadowless;
-use render_lessons::scene::Scene;
+use render_lessons::scene::{Intersect, Scene};
 
 /// A UV sphere of radius 1 at the origin, n x n segments, as a scene of triangles
 /// (the scenes of lesson 11's chart 7).
@@ -50,13 +50,6 @@ fn rays(camera: &Camera) -> Vec<Ray> {
         .flat_map(|y| (0..w).map(move |x| (x, y)))
         .map(|(x, y)| camera.ray(x, y))
         .collect()
-}
-
-fn shade(scene: &BvhScene, ray: &Ray) -> Vec3 {
-    match scene.closest_hit(ray, 0.0, f32::INFINITY) {
-        Some((_, object)) => object.colour(),
-        None => scene.scene().background(),
-    }
 }
 
 /// The scene's triangles for obvhs.
@@ -92,7 +85,7 @@ fn big_mesh(c: &mut Criterion) {
     let rays = rays(&camera(1920, 1080, 3.03));
     group.throughput(Throughput::Elements(rays.len() as u64));
     group.bench_function("closest hit, 1920x1080 rays, 1 thread", |b| {
-        b.iter(|| rays.iter().map(|r| shade(&bvh, r)).sum::<Vec3>())
+        b.iter(|| rays.iter().map(|r| shadowless(&bvh, r)).sum::<Vec3>())
     });
     group.finish();
 }
@@ -115,7 +108,7 @@ fn crossover(c: &mut Criterion) {
         });
         let bvh = BvhScene::new(scene);
         group.bench_function(format!("bvh, {count} triangles"), |b| {
-            b.iter(|| rays.iter().map(|r| shade(&bvh, r)).sum::<Vec3>())
+            b.iter(|| rays.iter().map(|r| shadowless(&bvh, r)).sum::<Vec3>())
         });
     }
     group.finish();

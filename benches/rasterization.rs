@@ -15,7 +15,6 @@ use glam::Vec3;
 use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::measure::machine::CpuWatch;
-use render_lessons::lighting::lambert;
 use render_lessons::raster::{Cull, Mesh, Model, RasterSettings, rasterize};
 use render_lessons::raycast::lit_unshadowed;
 use render_lessons::render::render;
@@ -116,21 +115,7 @@ fn bvh_ray_cast(c: &mut Criterion) {
     group.sample_size(10);
     group.throughput(Throughput::Elements(u64::from(WIDTH) * u64::from(HEIGHT)));
     group.bench_function("uv sphere, 99904 triangles", |b| {
-        b.iter(|| {
-            render(&camera, Some(1), |r| {
-                match tree.closest_hit(r, 0.0, f32::INFINITY) {
-                    Some((hit, object)) => {
-                        let n = if hit.front_face {
-                            hit.normal
-                        } else {
-                            -hit.normal
-                        };
-                        lambert(hit.point, n, object.colour(), &LIGHT, || true)
-                    }
-                    None => Vec3::ZERO,
-                }
-            })
-        })
+        b.iter(|| render(&camera, Some(1), |r| lit_unshadowed(&tree, r)))
     });
     group.finish();
 }

@@ -5,12 +5,12 @@ use glam::Vec3;
 use crate::lighting;
 use crate::offset::Offset;
 use crate::ray::Ray;
-use crate::scene::Scene;
+use crate::scene::Intersect;
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive
 /// with the closest intersection, or the background colour.
-pub fn shadowless(scene: &Scene, ray: &Ray) -> Vec3 {
+pub fn shadowless(scene: &impl Intersect, ray: &Ray) -> Vec3 {
     match scene.closest_hit(ray, 0.0, f32::INFINITY) {
         Some((_, object)) => object.colour(),
         None => scene.background(),
@@ -22,11 +22,11 @@ pub fn shadowless(scene: &Scene, ray: &Ray) -> Vec3 {
 /// One step past the slides: Lambert's cosine law from the scene's point light
 /// ([`lighting::at_hit`]), with a shadow ray towards the light deciding whether it
 /// is visible.
-pub fn lit(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
+pub fn lit(scene: &impl Intersect, ray: &Ray, offset: Offset) -> Vec3 {
     let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
         return scene.background();
     };
-    lighting::at_hit(scene, &hit, object, |light| {
+    lighting::at_hit(scene.scene(), &hit, object, |light| {
         let (origin, t_min) = offset.start(hit.point, hit.error, hit.facing());
         let distance = (light.position - hit.point).length();
         Ray::new(origin, light.position - origin)
@@ -39,9 +39,9 @@ pub fn lit(scene: &Scene, ray: &Ray, offset: Offset) -> Vec3 {
 /// The same light with no shadow ray: every surface facing the light is lit. This is
 /// what a rasterizer computes without a shadow trick, and the reference lesson 09
 /// compares its images against.
-pub fn lit_unshadowed(scene: &Scene, ray: &Ray) -> Vec3 {
+pub fn lit_unshadowed(scene: &impl Intersect, ray: &Ray) -> Vec3 {
     match scene.closest_hit(ray, 0.0, f32::INFINITY) {
-        Some((hit, object)) => lighting::at_hit(scene, &hit, object, |_| true),
+        Some((hit, object)) => lighting::at_hit(scene.scene(), &hit, object, |_| true),
         None => scene.background(),
     }
 }

@@ -210,17 +210,72 @@ impl Scene {
     }
     // ANCHOR_END: closest_hit
 
-    /// [`Scene::closest`] with the object itself instead of its index.
-    pub fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, &Object)> {
-        let (hit, i) = self.closest(ray, t_min, t_max)?;
-        Some((hit, &self.objects[i]))
-    }
-
     /// True if anything lies on the ray with `t_min < t < t_max` (a shadow ray's question).
     pub fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
         let prepared = PreparedRay::new(ray);
         self.objects
             .iter()
             .any(|o| o.shape.candidate(&prepared, t_min, t_max).is_some())
+    }
+}
+
+// ANCHOR: intersect
+/// What every renderer asks of a scene (pbrt's `Intersect` and `IntersectP`): the
+/// closest hit on a ray, and whether anything lies on it. The plain list,
+/// [`Scene`], answers by testing every object; lesson 11's tree (`BvhScene`) gives
+/// the same answers, faster once the scene is big. The ray caster, the path tracer
+/// and the rasterizer's reference take either.
+pub trait Intersect: Sync {
+    /// The scene: its objects, lights and background.
+    fn scene(&self) -> &Scene;
+
+    /// The closest hit with `t_min < t < t_max`, and the index of its object; on a
+    /// tie (equal `t`), the object listed first.
+    fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)>;
+
+    /// True if anything lies on the ray with `t_min < t < t_max` (a shadow ray's
+    /// question).
+    fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool;
+
+    /// [`Intersect::closest`] with the object itself instead of its index.
+    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, &Object)> {
+        let (hit, i) = self.closest(ray, t_min, t_max)?;
+        Some((hit, &self.scene().objects()[i]))
+    }
+
+    /// The scene's primitives ([`Scene::objects`]).
+    fn objects(&self) -> &[Object] {
+        self.scene().objects()
+    }
+
+    /// The emitters' indices ([`Scene::lights`]).
+    fn lights(&self) -> &[usize] {
+        self.scene().lights()
+    }
+
+    /// What rays that hit nothing see ([`Scene::background`]).
+    fn background(&self) -> Vec3 {
+        self.scene().background()
+    }
+
+    /// The point light, if any ([`Scene::light`]).
+    fn light(&self) -> Option<PointLight> {
+        self.scene().light()
+    }
+}
+// ANCHOR_END: intersect
+
+/// The plain list: every object tested for every ray.
+impl Intersect for Scene {
+    fn scene(&self) -> &Scene {
+        self
+    }
+
+    fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
+        Scene::closest(self, ray, t_min, t_max)
+    }
+
+    fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+        Scene::occluded(self, ray, t_min, t_max)
     }
 }

@@ -14,7 +14,7 @@ use render_lessons::ray::Ray;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
 use render_lessons::sampling::{cosine_hemisphere, grid};
-use render_lessons::scene::{Object, PointLight, Scene};
+use render_lessons::scene::{Intersect, Object, PointLight, Scene};
 use render_lessons::scenes::{lesson08, lesson08_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
 

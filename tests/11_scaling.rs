@@ -3,6 +3,7 @@
 //! same, and that the chart has what the chapter says it has.
 
 use render_lessons::course::measure::scaling::{fan_scene, rows, sphere_scene};
+use render_lessons::scene::Intersect;
 
 #[test]
 fn list_and_bvh_hit_the_same_rays_at_every_size() {

@@ -17,7 +17,7 @@
 use glam::{Vec3, Vec3A, Vec4};
 
 use crate::ray::Ray;
-use crate::scene::{Object, Scene};
+use crate::scene::{Intersect, Scene};
 use crate::shapes::{Aabb, Hit, Shape};
 
 pub mod build;
@@ -156,19 +156,22 @@ impl BvhScene {
     pub fn bvh(&self) -> &Bvh {
         &self.bvh
     }
+}
 
-    /// What [`Scene::closest_hit`] returns, found through the tree: the nearest hit
-    /// with `t_min < t < t_max`, and on a tie (equal `t`) the object that comes
-    /// first in the scene's list, as the plain list does.
-    pub fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, &Object)> {
-        let objects = self.scene.objects();
-        let (hit, i) = self.bvh.closest_hit(objects, ray, t_min, t_max)?;
-        Some((hit, &objects[i]))
+/// The tree answers what the list answers ([`Scene::closest`], [`Scene::occluded`]):
+/// the nearest hit with `t_min < t < t_max`, on a tie (equal `t`) the object that
+/// comes first in the scene's list; and whether anything lies on the ray.
+impl Intersect for BvhScene {
+    fn scene(&self) -> &Scene {
+        &self.scene
     }
 
-    /// What [`Scene::occluded`] returns: true if anything lies on the ray with
-    /// `t_min < t < t_max`.
-    pub fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+    fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
+        self.bvh
+            .closest_hit(self.scene.objects(), ray, t_min, t_max)
+    }
+
+    fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
         self.bvh.occluded(self.scene.objects(), ray, t_min, t_max)
     }
 }

@@ -7,7 +7,7 @@ use crate::framebuffer::Framebuffer;
 use crate::pathtrace::lens::PathCamera;
 use crate::pathtrace::progressive::{Pass, Passes, PixelSampling, render_progressive};
 use crate::pathtrace::settings::{Sampling, Settings};
-use crate::scene::Scene;
+use crate::scene::Intersect;
 
 /// What a study renders.
 #[derive(Clone, Debug, PartialEq)]
@@ -96,7 +96,7 @@ impl Study {
     /// every rung is rendered afresh. `watch` sees every pass, and of which image.
     pub fn render(
         &self,
-        scene: &Scene,
+        scene: &impl Intersect,
         camera: &impl PathCamera,
         mut watch: impl FnMut(Part, &Pass) -> Result<()>,
     ) -> Result<Renders> {

@@ -32,7 +32,7 @@ use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
-use crate::scene::Scene;
+use crate::scene::Intersect;
 use crate::shapes::Hit;
 
 /// How the emission found at the next vertex is weighted, decided by the bounce
@@ -50,14 +50,14 @@ enum Previous {
 
 // ANCHOR: radiance
 /// One sample of the radiance arriving along `ray`: a path, traced iteratively.
-pub fn radiance(scene: &Scene, ray: Ray, rng: &mut Rng, settings: &Settings) -> Vec3 {
+pub fn radiance(scene: &impl Intersect, ray: Ray, rng: &mut Rng, settings: &Settings) -> Vec3 {
     radiance_observed(scene, ray, rng, settings, &mut ())
 }
 
 /// [`radiance`], telling `observer` every vertex of the path as it is traced. The
 /// observer only watches: the random numbers and the sample are the same.
 pub fn radiance_observed(
-    scene: &Scene,
+    scene: &impl Intersect,
     ray: Ray,
     rng: &mut Rng,
     settings: &Settings,
@@ -135,7 +135,7 @@ struct Bounce {
 /// The light sample (if any) and the next ray at `hit`, by the material there.
 /// `None` only if a specular material had no direction to give.
 fn scatter(
-    scene: &Scene,
+    scene: &impl Intersect,
     material: Material,
     ray: &Ray,
     hit: &Hit,
@@ -177,7 +177,7 @@ fn scatter(
 
 /// The weight of emission found at `hit` (object `index`), given the bounce before.
 fn emission_weight(
-    scene: &Scene,
+    scene: &impl Intersect,
     index: usize,
     hit: &Hit,
     previous: Previous,

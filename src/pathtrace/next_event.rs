@@ -12,7 +12,7 @@ use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
-use crate::scene::Scene;
+use crate::scene::Intersect;
 
 /// Where the rays leaving a diffuse vertex start (the hit point moved off the
 /// surface by the offset) and the t they must exceed. Light samples are drawn from
@@ -39,7 +39,7 @@ impl Start {
 /// Next event estimation at a Lambertian vertex: one light chosen uniformly, one
 /// point on it, one shadow ray. Returns f_r L_e cos / pdf (times the MIS weight).
 pub(super) fn direct_light(
-    scene: &Scene,
+    scene: &impl Intersect,
     from: Start,
     n: Vec3,
     albedo: Vec3,
@@ -82,7 +82,7 @@ pub(super) fn direct_light(
 /// and no object lies between: a shadow ray from `from` to y moved off the light
 /// towards it by `offset`, the same rule at both ends.
 fn unoccluded(
-    scene: &Scene,
+    scene: &impl Intersect,
     from: Start,
     n: Vec3,
     light: &light::LightPoint,

@@ -20,7 +20,7 @@ use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
 use crate::ray::Ray;
 use crate::render::in_pool;
-use crate::scene::Scene;
+use crate::scene::Intersect;
 
 /// Where in its pixel each sample's camera ray passes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,7 +87,7 @@ impl Accumulator {
     /// (`None`: all cores), and returns the mean image so far.
     pub fn render_pass(
         &mut self,
-        scene: &Scene,
+        scene: &impl Intersect,
         camera: &impl PathCamera,
         settings: &Settings,
         pixels: PixelSampling,
@@ -241,7 +241,7 @@ pub struct Pass {
 /// samples per pixel (increasing), `each` called after every pass. Returns the
 /// number of samples dropped as NaN or infinite.
 pub fn render_progressive(
-    scene: &Scene,
+    scene: &impl Intersect,
     camera: &impl PathCamera,
     settings: &Settings,
     passes: Passes,

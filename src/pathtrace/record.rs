@@ -8,7 +8,7 @@ use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::progressive::{PixelSampling, pixel_ray};
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
-use crate::scene::Scene;
+use crate::scene::Intersect;
 
 /// One vertex of a recorded path: where it is, which object it is on, and, at a
 /// diffuse vertex with next event estimation, the point aimed at on a light and
@@ -62,7 +62,7 @@ impl PathObserver for RecordedPath {
 /// and streams seeded from `seed` ([`Accumulator`](crate::pathtrace::Accumulator)),
 /// traced by the estimator itself and recorded.
 pub fn record_path(
-    scene: &Scene,
+    scene: &impl Intersect,
     camera: &impl PathCamera,
     settings: &Settings,
     seed: u64,

@@ -10,7 +10,7 @@ use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 use crate::lighting;
 use crate::render::{in_pool, progress_bar};
-use crate::scene::Scene;
+use crate::scene::Intersect;
 
 /// Colours more than this apart (linear RGB, in some channel) count as different:
 /// about one step of an 8-bit image.
@@ -32,7 +32,11 @@ pub struct Reference {
 /// sees differs from the one seen at one of its 8 neighbours. There the tessellated
 /// outline and the true one may fall on different sides of a pixel centre, so the
 /// comparison leaves these pixels out.
-pub fn reference(scene: &Scene, camera: &Camera, threads: Option<usize>) -> Result<Reference> {
+pub fn reference(
+    scene: &impl Intersect,
+    camera: &Camera,
+    threads: Option<usize>,
+) -> Result<Reference> {
     let (w, h) = (camera.film().width(), camera.film().height());
     let background = scene.objects().len();
     // Each pixel's colour and the number of the object it sees (background: one more).
@@ -49,7 +53,7 @@ pub fn reference(scene: &Scene, camera: &Camera, threads: Option<usize>) -> Resu
                     let ray = camera.ray(x as u32, y as u32);
                     *pixel = match scene.closest(&ray, 0.0, f32::INFINITY) {
                         Some((hit, i)) => (
-                            lighting::at_hit(scene, &hit, &scene.objects()[i], |_| true),
+                            lighting::at_hit(scene.scene(), &hit, &scene.objects()[i], |_| true),
                             i,
                         ),
                         None => (scene.background(), background),

@@ -16,7 +16,7 @@ use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::raster::Mesh;
 use crate::ray::Ray;
-use crate::scene::{Object, PointLight, Scene};
+use crate::scene::{Intersect, Object, PointLight, Scene};
 use crate::shapes::{Shape, Triangle};
 
 /// A uv sphere of radius 1 with `n` x `n` segments (2 n (n - 1) triangles), as a

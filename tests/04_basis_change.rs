@@ -179,6 +179,10 @@ fn lesson_04_worked_numbers() {
     let b = basis.to_local(Vec3::new(3.0, 4.0, 0.0));
     assert_eq!(show(b, 3), "4.598 1.964");
     assert!((b.length() - 5.0).abs() < 1e-5);
+    // ... and `--b 4.598,1.964,0` takes it back to (3.0000, 3.9999, 0): the input's
+    // three decimals, not the basis, lose the last digit.
+    let typed = basis.to_world(Vec3::new(4.598, 1.964, 0.0));
+    assert_eq!(show(typed, 4), "3.0000 3.9999");
     // Exercise 3: the 45° basis, b = (1, 1, 0) gives a = (0, 1.4142, 0).
     let q = 45f32.to_radians();
     let turned = Basis::new(

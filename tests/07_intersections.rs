@@ -1036,6 +1036,9 @@ fn lesson_07_worked_numbers() {
     assert_eq!(format!("{:.1e}", exact), "9.7e-8");
     // S3: f . f of about 1e10 lies between 2^33 and 2^34, where floats are 2^10 apart.
     assert_eq!(2f64.powi(33 - 23), 1024.0);
+    // ... and the hit distance inherits about eps R = 2^-24 1e5, sixty times 1e-4.
+    let eps_r = f64::from(f32::EPSILON) / 2.0 * 1e5;
+    assert_eq!(format!("{eps_r:.0e} {:.0}", eps_r / 1e-4), "6e-3 60");
     // Exercise 7.2's far case, as its check builds it: a unit sphere 1e4 away along
     // (0.3, 0.2, -1), the ray aimed at its centre. The roots are 9999 and 10001; the
     // school formula in f32 rounds b^2 - 4ac to 0 and gives a double root at 10000.001.

@@ -310,13 +310,15 @@ fn lesson_08_worked_numbers() {
     assert_eq!(BOOK.0 * BOOK.1, 129_600);
     // The float spacing at 1e6 (where_methods_fail_offsets.md): 2^(19 - 23).
     assert_eq!(2f64.powi(19 - 23), 0.0625);
+    // ... and at 1e3 (exercise 8.2's answer): 2^(9 - 23), close to 1e-4.
+    assert_eq!(format!("{:.0e}", 2f64.powi(9 - 23)), "6e-5");
     // The S13 sphere of lesson 08 sits at (X, X/2, X/4): 1.15e4 from the origin at 1e4.
     assert_eq!(
         format!("{:.2e}", Vec3::new(1e4, 5e3, 2.5e3).length()),
         "1.15e4"
     );
     // The cameras look down (0, -2.2, -9): 13.7° below the horizon; the pinhole's
-    // top row is 2.6 above that, at a distance of 9.27.
+    // top row is 2.6 above that, at a distance of 9.26.
     let down = 2.2f64.atan2(9.0).to_degrees();
     let across = 2.2f64.hypot(9.0);
     assert_eq!(format!("{down:.1} {across:.2}"), "13.7 9.26");

@@ -363,12 +363,6 @@ fn source(quote: &Quote, fragment: &str) -> Result<Printed, String> {
         .ok_or_else(|| format!("no number {} in `{cell}`", quote.index))
 }
 
-/// Does the chapter's number agree with the fragment's, each rounded as printed?
-fn agrees(chapter: Printed, fragment: Printed) -> bool {
-    let slack = 0.5 * chapter.unit + 0.5 * fragment.unit;
-    (chapter.value - fragment.value).abs() <= slack * (1.0 + 1e-9)
-}
-
 /// The problems of `quotes` with the chapters and fragments that `read` returns.
 fn check_quotes(read: &dyn Fn(&str) -> Option<String>, quotes: &[Quote]) -> Vec<String> {
     let mut problems = Vec::new();
@@ -399,7 +393,7 @@ fn check_quotes(read: &dyn Fn(&str) -> Option<String>, quotes: &[Quote]) -> Vec<
         };
         match source(q, &fragment) {
             Err(e) => problems.push(format!("{here}: {}: {e}", q.fragment)),
-            Ok(source) if !agrees(number, source) => problems.push(format!(
+            Ok(source) if !supports(source, number) => problems.push(format!(
                 "{here}: the chapter prints {}, {} holds {} (`{}` {:?})",
                 number.value, q.fragment, source.value, q.anchor, q.cell
             )),
@@ -452,16 +446,25 @@ fn the_quote_checker_reads_numbers_as_printed_and_can_fail() {
         vec![],
         "digits inside a word are no number"
     );
-    assert!(agrees(p("5.0").unwrap(), p("4.96").unwrap()));
-    assert!(!agrees(p("5.1").unwrap(), p("4.96").unwrap()));
-    assert!(agrees(
-        p("3.8\\cdot 10^{-5}").unwrap(),
-        p("3.76e-5").unwrap()
+    // supports(source, stated)
+    assert!(supports(p("4.96").unwrap(), p("5.0").unwrap()));
+    assert!(!supports(p("4.96").unwrap(), p("5.1").unwrap()));
+    assert!(supports(
+        p("3.76e-5").unwrap(),
+        p("3.8\\cdot 10^{-5}").unwrap()
     ));
-    assert!(!agrees(
-        p("3.7\\cdot 10^{-5}").unwrap(),
-        p("3.76e-5").unwrap()
+    assert!(!supports(
+        p("3.76e-5").unwrap(),
+        p("3.7\\cdot 10^{-5}").unwrap()
     ));
+    // The same digits must be equal: a count off by one, or a last digit off by one.
+    assert!(!supports(p("2797").unwrap(), p("2798").unwrap()));
+    assert!(!supports(
+        p("2.0e-2").unwrap(),
+        p("1.9\\cdot 10^{-2}").unwrap()
+    ));
+    // A coarser source supports nothing finer.
+    assert!(!supports(p("1e4").unwrap(), p("10000.5").unwrap()));
 
     let fragment = "\
 <!-- ANCHOR: t -->
@@ -971,8 +974,17 @@ fn included_text(text: &str, read: &dyn Fn(&str) -> Option<String>) -> String {
 /// Does a source's number support a stated one? They agree, each rounded as
 /// printed, and the source is printed at least as finely as the statement: `1e4`
 /// in code does not support a stated 5008.
+///
+/// Printed to the same digits, they must be equal: 2797 does not support 2798. A
+/// finer source may itself be rounded from the value the page rounds, so it gets
+/// half its own unit more (a snapshot's 2.165 of 2.1649 supports a stated 2.16).
 fn supports(source: Printed, stated: Printed) -> bool {
-    let slack = 0.5 * stated.unit + 0.5 * source.unit.min(stated.unit);
+    let finer = if source.unit < stated.unit {
+        0.5 * source.unit
+    } else {
+        0.0
+    };
+    let slack = 0.5 * stated.unit + finer;
     (source.value - stated.value).abs() <= slack * (1.0 + 1e-9)
 }
 

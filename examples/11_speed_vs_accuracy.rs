@@ -39,8 +39,9 @@ pub struct Args {
     #[arg(long)]
     pub full: bool,
     /// Measure only the charts whose name starts with this (e.g. 11_5); each chart is
-    /// written to --out as SVG, CSV and Markdown.
-    #[arg(long)]
+    /// written to --out as SVG, CSV and Markdown. An empty name is refused: it would
+    /// match every chart.
+    #[arg(long, value_parser = clap::builder::NonEmptyStringValueParser::new())]
     pub only: Option<String>,
     #[command(flatten)]
     pub output: Output,

@@ -24,7 +24,7 @@ use render_lessons::bvh::{Bvh, BvhScene};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::scaling;
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
 use render_lessons::scene::{Intersect, Scene};
 
@@ -170,7 +170,7 @@ fn one_run() {
                 &mut || {
                     h0 = rays
                         .iter()
-                        .filter(|r| ours.closest_hit(r, 0.0, f32::INFINITY).is_some())
+                        .filter(|r| ours.closest(r, Interval::AHEAD).is_some())
                         .count()
                 },
                 &mut || {

@@ -7,7 +7,7 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group};
 use glam::Vec3;
 use render_lessons::course::measure::machine::CpuWatch;
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Aabb, Plane, Quadric, Sphere, Triangle};
 
 /// 1024 rays from around (0, 0, 5) towards the unit cube, some hitting, some missing.
@@ -55,29 +55,41 @@ fn bench(c: &mut Criterion) {
     case!("sphere stable (Hearn-Baker)", |r: &Ray| sphere
         .roots_stable(r)
         .is_some());
-    case!("sphere hit", |r: &Ray| sphere.hit(r, 0.0, n).is_some());
-    case!("plane hit", |r: &Ray| plane.hit(r, 0.0, n).is_some());
-    case!("box slab", |r: &Ray| aabb.slab(r, 0.0, n).is_some());
-    case!("box slab conservative", |r: &Ray| aabb
-        .slab_conservative(r, 0.0, n)
+    case!("sphere hit", |r: &Ray| sphere
+        .hit(r, Interval::new(0.0, n))
         .is_some());
-    case!("box hit", |r: &Ray| aabb.hit(r, 0.0, n).is_some());
+    case!("plane hit", |r: &Ray| plane
+        .hit(r, Interval::new(0.0, n))
+        .is_some());
+    case!("box slab", |r: &Ray| aabb
+        .slab(r, Interval::new(0.0, n))
+        .is_some());
+    case!("box slab conservative", |r: &Ray| aabb
+        .slab_conservative(r, Interval::new(0.0, n))
+        .is_some());
+    case!("box hit", |r: &Ray| aabb
+        .hit(r, Interval::new(0.0, n))
+        .is_some());
     case!("triangle Moller-Trumbore", |r: &Ray| triangle
-        .moller_trumbore(r, 0.0, n)
+        .moller_trumbore(r, Interval::new(0.0, n))
         .is_some());
     case!("triangle watertight", |r: &Ray| triangle
-        .watertight(r, 0.0, n)
+        .watertight(r, Interval::new(0.0, n))
         .is_some());
-    case!("triangle hit", |r: &Ray| triangle.hit(r, 0.0, n).is_some());
+    case!("triangle hit", |r: &Ray| triangle
+        .hit(r, Interval::new(0.0, n))
+        .is_some());
     case!("quadric textbook", |r: &Ray| quadric
         .roots_textbook(r)
-        .first_in(0.0, n)
+        .first_in(Interval::new(0.0, n))
         .is_some());
     case!("quadric stable", |r: &Ray| quadric
         .roots_stable(r)
-        .first_in(0.0, n)
+        .first_in(Interval::new(0.0, n))
         .is_some());
-    case!("quadric hit", |r: &Ray| quadric.hit(r, 0.0, n).is_some());
+    case!("quadric hit", |r: &Ray| quadric
+        .hit(r, Interval::new(0.0, n))
+        .is_some());
     group.finish();
 }
 

@@ -15,7 +15,7 @@ use render_lessons::Result;
 use render_lessons::course::diagram::{Diagram, Place, palette};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::report::{Table, num, nums, vec3};
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Aabb, Plane, Quadric, Shape, Sphere, Triangle};
 
 /// The lesson's parameters.
@@ -76,7 +76,7 @@ pub fn numbers(cases: &[Case]) -> String {
     for Case { name, shape, ray } in cases {
         let mut row = vec![name.to_string(), vec3(ray.origin(), 2)];
         row.extend([vec3(ray.direction(), 4), nums(&shape.crossings(ray), 4)]);
-        row.extend(match shape.hit(ray, 0.0, f32::INFINITY) {
+        row.extend(match shape.hit(ray, Interval::AHEAD) {
             Some(h) => [vec3(h.point, 4), vec3(h.normal, 4), face(h.front_face)],
             None => ["miss", "-", "-"].map(String::from),
         });
@@ -128,7 +128,7 @@ pub fn figure(case: &Case) -> Result<Diagram> {
     for t in ts.iter() {
         d.dot(view(ray.at(*t)), 5.0, palette::HIT);
     }
-    let normal = shape.hit(ray, 0.0, f32::INFINITY).map(|hit| {
+    let normal = shape.hit(ray, Interval::AHEAD).map(|hit| {
         let (p, tip) = (view(hit.point), view(hit.point) + view(hit.normal) * 0.8);
         d.arrow(p, tip, palette::NORMAL, 2.5);
         tip

@@ -9,6 +9,7 @@
 //!     cargo run --release --example 08_ray_casting
 //!     cargo run --release --example 08_ray_casting -- --width 1920 --height 1080 --threads 1
 
+use render_lessons::ray::Interval;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -94,8 +95,8 @@ pub fn my_shadowless_image(
     let [_, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
     let shapes: Vec<_> = scene.objects().iter().map(|o| o.shape.clone()).collect();
     render(&pinhole, threads, |r| {
-        match mine(r, &shapes, 0.0, f32::INFINITY) {
-            Some((i, _)) => scene.objects()[i].colour(),
+        match mine(r, &shapes, Interval::AHEAD) {
+            Some(found) => scene.object(&found).colour(),
             None => scene.background(),
         }
     })
@@ -106,8 +107,8 @@ fn coverage(scene: &Scene, camera: &Camera) -> Vec<u32> {
     let (w, h) = (camera.film().width(), camera.film().height());
     let mut counts = vec![0u32; scene.objects().len() + 1];
     for (x, y) in (0..h).flat_map(|y| (0..w).map(move |x| (x, y))) {
-        let hit = scene.closest(&camera.ray(x, y), 0.0, f32::INFINITY);
-        counts[hit.map_or(scene.objects().len(), |(_, i)| i)] += 1;
+        let hit = scene.closest(&camera.ray(x, y), Interval::AHEAD);
+        counts[hit.map_or(scene.objects().len(), |found| found.object)] += 1;
     }
     counts
 }

@@ -55,3 +55,51 @@ impl Ray {
         (p - self.origin).dot(self.direction)
     }
 }
+
+// ANCHOR: interval
+/// The ray parameters a query accepts: `min < t < max`, both ends open, as in Ray
+/// Tracing in One Weekend's `interval` (pbrt keeps only `t_max`, with 0 below).
+///
+/// A closest-hit loop shrinks `max` to each hit it finds, so that later primitives
+/// count only if nearer; a shadow ray to a light at distance `s` asks (0, s).
+///
+/// ```
+/// use render_lessons::ray::Interval;
+///
+/// assert!(Interval::AHEAD.contains(3.0));
+/// assert!(!Interval::AHEAD.contains(0.0)); // open: the origin itself is not ahead
+/// assert!(!Interval::AHEAD.contains(f32::NAN));
+/// let nearer = Interval::AHEAD.up_to(2.0);
+/// assert!(nearer.contains(1.5) && !nearer.contains(2.0));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    /// The open lower end.
+    pub min: f32,
+    /// The open upper end.
+    pub max: f32,
+}
+
+impl Interval {
+    /// Every `t` ahead of the origin: 0 < t < infinity.
+    pub const AHEAD: Interval = Interval::new(0.0, f32::INFINITY);
+
+    /// The whole line, behind the origin too: -infinity < t < infinity.
+    pub const EVERYWHERE: Interval = Interval::new(f32::NEG_INFINITY, f32::INFINITY);
+
+    /// `min < t < max`.
+    pub const fn new(min: f32, max: f32) -> Interval {
+        Interval { min, max }
+    }
+
+    /// `min < t < max`, and `false` for NaN.
+    pub fn contains(&self, t: f32) -> bool {
+        t > self.min && t < self.max
+    }
+
+    /// The same interval, its upper end moved to `max`.
+    pub fn up_to(self, max: f32) -> Interval {
+        Interval { max, ..self }
+    }
+}
+// ANCHOR_END: interval

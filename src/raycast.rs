@@ -4,15 +4,15 @@ use glam::Vec3;
 
 use crate::lighting;
 use crate::offset::Offset;
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::scene::Intersect;
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive
 /// with the closest intersection, or the background colour.
 pub fn shadowless(scene: &impl Intersect, ray: &Ray) -> Vec3 {
-    match scene.closest_hit(ray, 0.0, f32::INFINITY) {
-        Some((_, object)) => object.colour(),
+    match scene.closest(ray, Interval::AHEAD) {
+        Some(found) => scene.object(&found).colour(),
         None => scene.background(),
     }
 }
@@ -23,14 +23,15 @@ pub fn shadowless(scene: &impl Intersect, ray: &Ray) -> Vec3 {
 /// ([`lighting::at_hit`]), with a shadow ray towards the light deciding whether it
 /// is visible.
 pub fn lit(scene: &impl Intersect, ray: &Ray, offset: Offset) -> Vec3 {
-    let Some((hit, object)) = scene.closest_hit(ray, 0.0, f32::INFINITY) else {
+    let Some(found) = scene.closest(ray, Interval::AHEAD) else {
         return scene.background();
     };
-    lighting::at_hit(scene.scene(), &hit, object, |light| {
+    let hit = found.hit;
+    lighting::at_hit(scene.scene(), &hit, scene.object(&found), |light| {
         let (origin, t_min) = offset.start(hit.point, hit.error, hit.facing());
         let distance = (light.position - hit.point).length();
         Ray::new(origin, light.position - origin)
-            .is_ok_and(|r| !scene.occluded(&r, t_min, distance))
+            .is_ok_and(|r| !scene.occluded(&r, Interval::new(t_min, distance)))
     })
 }
 // ANCHOR_END: lambert
@@ -40,8 +41,8 @@ pub fn lit(scene: &impl Intersect, ray: &Ray, offset: Offset) -> Vec3 {
 /// what a rasterizer computes without a shadow trick, and the reference lesson 09
 /// compares its images against.
 pub fn lit_unshadowed(scene: &impl Intersect, ray: &Ray) -> Vec3 {
-    match scene.closest_hit(ray, 0.0, f32::INFINITY) {
-        Some((hit, object)) => lighting::at_hit(scene.scene(), &hit, object, |_| true),
+    match scene.closest(ray, Interval::AHEAD) {
+        Some(found) => lighting::at_hit(scene.scene(), &found.hit, scene.object(&found), |_| true),
         None => scene.background(),
     }
 }

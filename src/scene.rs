@@ -12,7 +12,7 @@ use glam::Vec3;
 
 use crate::error::{Error, Result, finite3};
 use crate::material::Material;
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::{Candidate, Hit, PreparedRay, Shape};
 
 /// One primitive with its material and the radiance L_e it emits.
@@ -91,6 +91,30 @@ impl Object {
     pub fn is_emissive(&self) -> bool {
         self.emission != Vec3::ZERO
     }
+}
+
+/// The closest hit in a scene: where the ray crosses a surface, and which object
+/// that surface belongs to.
+///
+/// ```
+/// use glam::Vec3;
+/// use render_lessons::ray::{Interval, Ray};
+/// use render_lessons::scene::{Object, Scene};
+/// use render_lessons::shapes::Sphere;
+///
+/// let ball = Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0)?;
+/// let scene = Scene::new(vec![Object::diffuse(ball.into(), Vec3::ONE)], Vec3::ZERO)?;
+/// let ray = Ray::new(Vec3::ZERO, Vec3::NEG_Z)?;
+/// let found = scene.closest(&ray, Interval::AHEAD).expect("the ray meets the ball");
+/// assert_eq!((found.object, found.hit.t), (0, 4.0));
+/// # Ok::<(), render_lessons::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneHit {
+    /// Where the ray crosses the surface.
+    pub hit: Hit,
+    /// The object hit: its index into [`Scene::objects`].
+    pub object: usize,
 }
 
 /// A point light (lessons 08 and 09).
@@ -172,6 +196,11 @@ impl Scene {
         &self.objects
     }
 
+    /// The object a hit found: [`SceneHit::object`] looked up in [`Scene::objects`].
+    pub fn object(&self, found: &SceneHit) -> &Object {
+        &self.objects[found.object]
+    }
+
     /// The indices (into [`Scene::objects`]) of the emissive objects.
     pub fn lights(&self) -> &[usize] {
         &self.lights
@@ -188,34 +217,35 @@ impl Scene {
     }
 
     // ANCHOR: closest_hit
-    /// The closest crossing with `t_min < t < t_max` over every primitive, and the
-    /// index of the object it belongs to: the inner loop of the lecture's ray
-    /// casting algorithm, shared by every renderer. Each hit found shrinks `t_max`,
-    /// so later primitives only count if nearer; on a tie the first object wins.
+    /// The closest crossing in `range` over every primitive, and the object it
+    /// belongs to: the inner loop of the lecture's ray casting algorithm, shared by
+    /// every renderer. Each hit found shrinks `range.max`, so later primitives only
+    /// count if nearer; on a tie the first object wins.
     ///
     /// The loop asks each primitive only for its [`Candidate`] (`t` and a few
     /// numbers); the point and normal are computed once, for the winner.
-    pub fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
+    pub fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
         let prepared = PreparedRay::new(ray);
         let mut closest: Option<(Candidate, usize)> = None;
-        let mut t_max = t_max;
+        let mut range = range;
         for (i, object) in self.objects.iter().enumerate() {
-            if let Some(candidate) = object.shape.candidate(&prepared, t_min, t_max) {
-                t_max = candidate.t;
+            if let Some(candidate) = object.shape.candidate(&prepared, range) {
+                range.max = candidate.t;
                 closest = Some((candidate, i));
             }
         }
-        let (candidate, i) = closest?;
-        Some((self.objects[i].shape.record(&prepared, candidate), i))
+        let (candidate, object) = closest?;
+        let hit = self.objects[object].shape.record(&prepared, candidate);
+        Some(SceneHit { hit, object })
     }
     // ANCHOR_END: closest_hit
 
-    /// True if anything lies on the ray with `t_min < t < t_max` (a shadow ray's question).
-    pub fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+    /// True if anything lies on the ray within `range` (a shadow ray's question).
+    pub fn occluded(&self, ray: &Ray, range: Interval) -> bool {
         let prepared = PreparedRay::new(ray);
         self.objects
             .iter()
-            .any(|o| o.shape.candidate(&prepared, t_min, t_max).is_some())
+            .any(|o| o.shape.candidate(&prepared, range).is_some())
     }
 }
 
@@ -229,18 +259,16 @@ pub trait Intersect: Sync {
     /// The scene: its objects, lights and background.
     fn scene(&self) -> &Scene;
 
-    /// The closest hit with `t_min < t < t_max`, and the index of its object; on a
-    /// tie (equal `t`), the object listed first.
-    fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)>;
+    /// The closest hit within `range`, and its object; on a tie (equal `t`), the
+    /// object listed first.
+    fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit>;
 
-    /// True if anything lies on the ray with `t_min < t < t_max` (a shadow ray's
-    /// question).
-    fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool;
+    /// True if anything lies on the ray within `range` (a shadow ray's question).
+    fn occluded(&self, ray: &Ray, range: Interval) -> bool;
 
-    /// [`Intersect::closest`] with the object itself instead of its index.
-    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, &Object)> {
-        let (hit, i) = self.closest(ray, t_min, t_max)?;
-        Some((hit, &self.scene().objects()[i]))
+    /// The object a hit found ([`Scene::object`]).
+    fn object(&self, found: &SceneHit) -> &Object {
+        self.scene().object(found)
     }
 
     /// The scene's primitives ([`Scene::objects`]).
@@ -271,11 +299,11 @@ impl Intersect for Scene {
         self
     }
 
-    fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
-        Scene::closest(self, ray, t_min, t_max)
+    fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
+        Scene::closest(self, ray, range)
     }
 
-    fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
-        Scene::occluded(self, ray, t_min, t_max)
+    fn occluded(&self, ray: &Ray, range: Interval) -> bool {
+        Scene::occluded(self, ray, range)
     }
 }

@@ -13,7 +13,7 @@ mod lesson;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::quadric::Roots;
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 
@@ -26,7 +26,7 @@ fn unit_sphere() -> Sphere {
 }
 
 /// A pair of roots, or the entry and exit of a slab interval; `None` for a miss.
-type Interval = Option<(f32, f32)>;
+type Pair = Option<(f32, f32)>;
 
 fn close(a: (f32, f32), b: (f32, f32), tol: f32) -> bool {
     (a.0 - b.0).abs() <= tol && (a.1 - b.1).abs() <= tol
@@ -37,7 +37,7 @@ fn close(a: (f32, f32), b: (f32, f32), tol: f32) -> bool {
 #[test]
 fn sphere_known_answers_both_root_finders() {
     let s = unit_sphere();
-    let cases: [([f32; 3], Interval); 4] = [
+    let cases: [([f32; 3], Pair); 4] = [
         // Straight through: |z| = 1 at z = -5 + t, so t = 4 and 6.
         ([0.0, 0.0, -5.0], Some((4.0, 6.0))),
         // Tangent at (0, 1, 0): a double root at t = 5.
@@ -66,7 +66,7 @@ fn sphere_known_answers_both_root_finders() {
 fn sphere_hit_nearest_in_range_and_normal() {
     let s = unit_sphere();
     let h = s
-        .hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+        .hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
         .unwrap();
     assert_eq!(h.t, 4.0);
     assert_eq!(h.point, Vec3::new(0.0, 0.0, -1.0));
@@ -74,15 +74,21 @@ fn sphere_hit_nearest_in_range_and_normal() {
     assert!(h.front_face);
     // With t_min past the first root, the exit is the nearest crossing; seen from inside.
     let h = s
-        .hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), 4.5, 100.0)
+        .hit(
+            &ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]),
+            Interval::new(4.5, 100.0),
+        )
         .unwrap();
     assert_eq!(h.t, 6.0);
     assert_eq!(h.normal, Vec3::new(0.0, 0.0, 1.0));
     assert!(!h.front_face);
     // t_max before the sphere: no hit.
     assert!(
-        s.hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), 0.0, 3.0)
-            .is_none()
+        s.hit(
+            &ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]),
+            Interval::new(0.0, 3.0)
+        )
+        .is_none()
     );
 }
 
@@ -92,8 +98,8 @@ fn sphere_behind_the_ray_is_not_hit() {
     let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]);
     let (t0, t1) = s.roots_stable(&r).unwrap();
     assert!(close((t0, t1), (-6.0, -4.0), 1e-6));
-    assert!(s.hit(&r, 0.0, f32::INFINITY).is_none());
-    assert!(Shape::Sphere(s).hit(&r, 0.0, f32::INFINITY).is_none());
+    assert!(s.hit(&r, Interval::AHEAD).is_none());
+    assert!(Shape::Sphere(s).hit(&r, Interval::AHEAD).is_none());
 }
 
 /// Hit/miss disagreements with the f64 reference, for both root finders, and the
@@ -215,13 +221,13 @@ fn plane_known_answers() {
     let p = Plane::new(Vec3::ONE, Vec3::ONE).unwrap();
     // Along +x: x = 3 at t = 3.
     let h = p
-        .hit(&ray([0.0; 3], [1.0, 0.0, 0.0]), 0.0, f32::INFINITY)
+        .hit(&ray([0.0; 3], [1.0, 0.0, 0.0]), Interval::AHEAD)
         .unwrap();
     assert!((h.t - 3.0).abs() < 1e-6);
     assert!((h.point - Vec3::new(3.0, 0.0, 0.0)).length() < 1e-6);
     // Along (1, 1, 0)/sqrt 2: x = y = 1.5, at t = 1.5 sqrt 2 = 3 / sqrt 2.
     let h = p
-        .hit(&ray([0.0; 3], [1.0, 1.0, 0.0]), 0.0, f32::INFINITY)
+        .hit(&ray([0.0; 3], [1.0, 1.0, 0.0]), Interval::AHEAD)
         .unwrap();
     assert!((h.t - 3.0 / 2f32.sqrt()).abs() < 1e-6);
     assert!((h.point - Vec3::new(1.5, 1.5, 0.0)).length() < 1e-6);
@@ -229,9 +235,7 @@ fn plane_known_answers() {
     assert!(!h.front_face);
     assert!((h.normal - Vec3::ONE.normalize()).length() < 1e-6);
     // From the front side.
-    let h = p
-        .hit(&ray([5.0; 3], [-1.0; 3]), 0.0, f32::INFINITY)
-        .unwrap();
+    let h = p.hit(&ray([5.0; 3], [-1.0; 3]), Interval::AHEAD).unwrap();
     assert!(h.front_face);
     assert!((h.t - 12.0 / 3f32.sqrt()).abs() < 1e-5); // (15 - 3) / sqrt 3
 }
@@ -242,12 +246,12 @@ fn plane_parallel_ray_misses_without_nan() {
     for o in [[0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [3.0, -2.0, 1.0]] {
         let r = ray(o, [1.0, 0.0, 1.0]);
         assert_eq!(p.t(&r), None);
-        assert!(p.hit(&r, f32::NEG_INFINITY, f32::INFINITY).is_none());
+        assert!(p.hit(&r, Interval::EVERYWHERE).is_none());
     }
     // Behind the origin: t = -2, outside (0, inf).
     let r = ray([0.0, 2.0, 0.0], [0.0, 1.0, 0.0]);
     assert_eq!(p.t(&r), Some(-2.0));
-    assert!(Shape::Plane(p).hit(&r, 0.0, f32::INFINITY).is_none());
+    assert!(Shape::Plane(p).hit(&r, Interval::AHEAD).is_none());
 }
 
 // ---------------------------------------------------------------- box (S8)
@@ -258,8 +262,8 @@ fn cube() -> Aabb {
 
 /// A slab test written the naive way round: `t0 = if t0 > t_near { t0 } else { t_near }`
 /// lets a NaN from 0 * inf replace the interval (kept to show the failure).
-fn naive_slab(b: &Aabb, r: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
-    let (mut t0, mut t1) = (t_min, t_max);
+fn naive_slab(b: &Aabb, r: &Ray, range: Interval) -> Option<(f32, f32)> {
+    let (mut t0, mut t1) = (range.min, range.max);
     for i in 0..3 {
         let inv = 1.0 / r.direction()[i];
         let a = (b.min()[i] - r.origin()[i]) * inv;
@@ -277,10 +281,9 @@ fn naive_slab(b: &Aabb, r: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
 #[test]
 fn s8_slab_truth_table() {
     let b = cube();
-    let inf = f32::INFINITY;
     // (box, origin, direction, expected interval clipped to [0, inf))
     let flat = Aabb::new(Vec3::new(-1.0, 0.0, -1.0), Vec3::new(1.0, 0.0, 1.0)).unwrap();
-    let table: [(Aabb, [f32; 3], [f32; 3], Interval); 10] = [
+    let table: [(Aabb, [f32; 3], [f32; 3], Pair); 10] = [
         // In the top face's plane but outside in x: miss.
         (b, [3.0, 1.0, -5.0], [0.0, 0.0, 1.0], None),
         // In the plane z = 3, outside: miss.
@@ -304,9 +307,9 @@ fn s8_slab_truth_table() {
     ];
     for (bx, o, d, expected) in table {
         let r = ray(o, d);
-        let got = bx.slab(&r, 0.0, inf);
+        let got = bx.slab(&r, Interval::AHEAD);
         assert_eq!(got, expected, "o = {o:?}, d = {d:?}");
-        let wide = bx.slab_conservative(&r, 0.0, inf);
+        let wide = bx.slab_conservative(&r, Interval::AHEAD);
         assert_eq!(
             wide.is_some(),
             expected.is_some(),
@@ -317,15 +320,15 @@ fn s8_slab_truth_table() {
     // (0 * inf) replaces t0, no later comparison can reject it, and the miss becomes
     // a hit.
     let r = ray([-5.0, 1.0, 3.0], [1.0, 0.0, 0.0]);
-    assert!(naive_slab(&b, &r, 0.0, inf).is_some());
-    assert!(b.slab(&r, 0.0, inf).is_none());
+    assert!(naive_slab(&b, &r, Interval::AHEAD).is_some());
+    assert!(b.slab(&r, Interval::AHEAD).is_none());
 }
 
 #[test]
 fn box_hit_normal_is_the_face_axis() {
     let b = cube();
     let h = b
-        .hit(&ray([0.2, 0.3, -5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+        .hit(&ray([0.2, 0.3, -5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
         .unwrap();
     assert_eq!(
         (h.t, h.normal, h.front_face),
@@ -334,7 +337,7 @@ fn box_hit_normal_is_the_face_axis() {
     assert_eq!(h.point, Vec3::new(0.2, 0.3, -1.0));
     // From inside: the exit face, seen from the back.
     let h = b
-        .hit(&ray([0.0; 3], [-1.0, 0.1, 0.0]), 0.0, f32::INFINITY)
+        .hit(&ray([0.0; 3], [-1.0, 0.1, 0.0]), Interval::AHEAD)
         .unwrap();
     assert_eq!(h.normal, Vec3::new(-1.0, 0.0, 0.0));
     assert!(!h.front_face);
@@ -342,7 +345,7 @@ fn box_hit_normal_is_the_face_axis() {
     // Behind: none.
     assert!(
         Shape::Aabb(b)
-            .hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+            .hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
             .is_none()
     );
 }
@@ -371,12 +374,12 @@ fn leaks(tris: &[Triangle], targets: &[Vec3]) -> (usize, usize) {
         mt += usize::from(
             !tris
                 .iter()
-                .any(|t| t.moller_trumbore(&r, 0.0, f32::INFINITY).is_some()),
+                .any(|t| t.moller_trumbore(&r, Interval::AHEAD).is_some()),
         );
         wt += usize::from(
             !tris
                 .iter()
-                .any(|t| t.watertight(&r, 0.0, f32::INFINITY).is_some()),
+                .any(|t| t.watertight(&r, Interval::AHEAD).is_some()),
         );
     }
     (mt, wt)
@@ -462,14 +465,14 @@ fn triangle_known_answers() {
     let r = ray([0.25, 0.5, 5.0], [0.0, 0.0, -1.0]);
     // b1 = x = 0.25, b2 = y = 0.5, b0 = 0.25, t = 5.
     assert_eq!(
-        t.moller_trumbore(&r, 0.0, f32::INFINITY),
+        t.moller_trumbore(&r, Interval::AHEAD),
         Some((5.0, 0.25, 0.5))
     );
     assert_eq!(
-        t.watertight(&r, 0.0, f32::INFINITY),
+        t.watertight(&r, Interval::AHEAD),
         Some((5.0, 0.25, 0.25, 0.5))
     );
-    let h = t.hit(&r, 0.0, f32::INFINITY).unwrap();
+    let h = t.hit(&r, Interval::AHEAD).unwrap();
     assert_eq!(h.point, Vec3::new(0.25, 0.5, 0.0));
     assert_eq!(h.normal, Vec3::Z);
     assert!(h.front_face);
@@ -478,13 +481,13 @@ fn triangle_known_answers() {
     let behind = ray([0.25, 0.5, 5.0], [0.0, 0.0, 1.0]);
     let parallel = ray([0.25, 0.25, 0.0], [1.0, 0.0, 0.0]);
     for r in [outside, behind, parallel] {
-        assert!(t.moller_trumbore(&r, 0.0, f32::INFINITY).is_none());
-        assert!(t.watertight(&r, 0.0, f32::INFINITY).is_none());
-        assert!(Shape::Triangle(t).hit(&r, 0.0, f32::INFINITY).is_none());
+        assert!(t.moller_trumbore(&r, Interval::AHEAD).is_none());
+        assert!(t.watertight(&r, Interval::AHEAD).is_none());
+        assert!(Shape::Triangle(t).hit(&r, Interval::AHEAD).is_none());
     }
     // From below: back face, normal still +z.
     let h = t
-        .hit(&ray([0.25, 0.5, -5.0], [0.0, 0.0, 1.0]), 0.0, f32::INFINITY)
+        .hit(&ray([0.25, 0.5, -5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
         .unwrap();
     assert!(!h.front_face);
     assert_eq!(h.normal, Vec3::Z);
@@ -520,7 +523,7 @@ fn s7_barycentric_point_stays_on_the_plane() {
         let dir = Vec3::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, 0.0) + Vec3::ONE;
         let o = aim + 1e4 * dir.normalize();
         let r = Ray::new(o, aim - o).unwrap();
-        if let Some(h) = t.hit(&r, 0.0, f32::INFINITY) {
+        if let Some(h) = t.hit(&r, Interval::AHEAD) {
             bary.push(off_plane(h.point));
             ray_point.push(off_plane(r.at(h.t)));
         }
@@ -582,14 +585,13 @@ fn s6_conservative_box_never_rejects_its_own_triangle() {
         let o = 20.0 * p();
         let [v0, v1, v2] = t.vertices();
         let Ok(r) = Ray::new(o, v0 - o) else { continue };
-        if t.watertight(&r, 0.0, f32::INFINITY).is_none() {
+        if t.watertight(&r, Interval::AHEAD).is_none() {
             continue;
         }
         let bounds = Aabb::new(v0.min(v1).min(v2), v0.max(v1).max(v2)).unwrap();
         tested += 1;
-        naive_miss += usize::from(bounds.slab(&r, 0.0, f32::INFINITY).is_none());
-        conservative_miss +=
-            usize::from(bounds.slab_conservative(&r, 0.0, f32::INFINITY).is_none());
+        naive_miss += usize::from(bounds.slab(&r, Interval::AHEAD).is_none());
+        conservative_miss += usize::from(bounds.slab_conservative(&r, Interval::AHEAD).is_none());
     }
     eprintln!(
         "S6: {tested} vertex hits; plain slab rejects {naive_miss}, conservative {conservative_miss}"
@@ -707,35 +709,35 @@ proptest! {
         for (t0, t1) in [sphere.roots_stable(&r), sphere.roots_textbook(&r)].into_iter().flatten() {
             prop_assert!(t0.is_finite() && t1.is_finite() && t0 <= t1);
         }
-        if let Some(h) = sphere.hit(&r, 0.0, f32::INFINITY) {
+        if let Some(h) = sphere.hit(&r, Interval::AHEAD) {
             prop_assert!(no_nan(&h));
             prop_assert!(((h.point - c).length() - radius).abs() < tol(h.t), "sphere {:?}", h);
             prop_assert!((h.normal.length() - 1.0).abs() < 1e-5);
         }
         if let Ok(plane) = Plane::new(c, n)
-            && let Some(h) = plane.hit(&r, 0.0, f32::INFINITY)
+            && let Some(h) = plane.hit(&r, Interval::AHEAD)
         {
             prop_assert!(no_nan(&h));
             prop_assert!((h.point - c).dot(plane.normal()).abs() < tol(h.t), "plane {:?}", h);
         }
         let (a, b, e) = corners;
         let bx = Aabb::new(a.min(b), a.max(b)).unwrap();
-        if let Some((t0, t1)) = bx.slab(&r, 0.0, f32::INFINITY) {
+        if let Some((t0, t1)) = bx.slab(&r, Interval::AHEAD) {
             prop_assert!(!t0.is_nan() && !t1.is_nan() && t0 <= t1);
         }
-        if let Some(h) = bx.hit(&r, 0.0, f32::INFINITY) {
+        if let Some(h) = bx.hit(&r, Interval::AHEAD) {
             prop_assert!(no_nan(&h));
             let inside = h.point.cmpge(bx.min() - tol(h.t)).all() && h.point.cmple(bx.max() + tol(h.t)).all();
             let on_face = (0..3).any(|i| h.point[i] == bx.min()[i] || h.point[i] == bx.max()[i]);
             prop_assert!(inside && on_face, "box {:?}", h);
         }
         if let Ok(tri) = Triangle::new(a, b, e) {
-            if let Some(h) = tri.hit(&r, 0.0, f32::INFINITY) {
+            if let Some(h) = tri.hit(&r, Interval::AHEAD) {
                 prop_assert!(no_nan(&h));
                 prop_assert!((h.point - a).dot(tri.normal()).abs() < tol(h.t), "triangle {:?}", h);
                 prop_assert!((h.point - r.at(h.t)).length() < tol(h.t));
             }
-            if let Some((t, b1, b2)) = tri.moller_trumbore(&r, 0.0, f32::INFINITY) {
+            if let Some((t, b1, b2)) = tri.moller_trumbore(&r, Interval::AHEAD) {
                 prop_assert!(t.is_finite() && b1.is_finite() && b2.is_finite());
             }
         }
@@ -785,10 +787,10 @@ fn lesson_crossings_are_each_shapes_own_roots() {
             Shape::Sphere(s) => s.roots_stable(ray).map_or(vec![], |(a, b)| vec![a, b]),
             Shape::Plane(p) => p.t(ray).into_iter().collect(),
             Shape::Aabb(b) => b
-                .slab(ray, all.0, all.1)
+                .slab(ray, Interval::new(all.0, all.1))
                 .map_or(vec![], |(a, b)| vec![a, b]),
             Shape::Triangle(t) => t
-                .watertight(ray, all.0, all.1)
+                .watertight(ray, Interval::new(all.0, all.1))
                 .map(|h| vec![h.0])
                 .unwrap_or_default(),
             Shape::Quadric(q) => match q.roots_stable(ray) {
@@ -832,7 +834,10 @@ fn s3_wall(wall: Shape) -> (u32, u32, Vec<Vec3>) {
     let (mut self_hits, mut total, mut points) = (0, 0, Vec::new());
     for aim in grid(16) {
         let target = Vec3::new(1.0, 10.0 + 60.0 * aim.x, 20.0 + 120.0 * aim.y);
-        let Some(hit) = wall.hit(&Ray::new(eye, target - eye).unwrap(), 1e-4, f32::INFINITY) else {
+        let Some(hit) = wall.hit(
+            &Ray::new(eye, target - eye).unwrap(),
+            Interval::new(1e-4, f32::INFINITY),
+        ) else {
             continue;
         };
         points.push(hit.point);
@@ -840,7 +845,10 @@ fn s3_wall(wall: Shape) -> (u32, u32, Vec<Vec3>) {
         for u in grid(8) {
             let bounce = Ray::new(hit.point, frame.to_world(cosine_hemisphere(u))).unwrap();
             total += 1;
-            self_hits += u32::from(wall.hit(&bounce, 1e-4, f32::INFINITY).is_some());
+            self_hits += u32::from(
+                wall.hit(&bounce, Interval::new(1e-4, f32::INFINITY))
+                    .is_some(),
+            );
         }
     }
     (self_hits, total, points)
@@ -926,13 +934,13 @@ fn s8_a_ray_along_any_face_hits_for_either_sign_of_zero() {
         for r in rays_along_faces(zero) {
             let (o, d) = (r.origin(), r.direction());
             assert_eq!(
-                b.slab(&r, 0.0, f32::INFINITY),
+                b.slab(&r, Interval::AHEAD),
                 Some((4.0, 6.0)),
                 "o {o}, d {d:?}"
             );
-            let wide = b.slab_conservative(&r, 0.0, f32::INFINITY);
+            let wide = b.slab_conservative(&r, Interval::AHEAD);
             assert!(wide.is_some(), "conservative, o {o}, d {d:?}");
-            let hit = Shape::Aabb(b).hit(&r, 0.0, f32::INFINITY);
+            let hit = Shape::Aabb(b).hit(&r, Interval::AHEAD);
             assert_eq!(hit.map(|h| h.t), Some(4.0), "hit, o {o}, d {d:?}");
             assert_eq!(b.crossings(&r).as_slice(), [4.0, 6.0], "crossings, o {o}");
         }

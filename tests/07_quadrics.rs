@@ -8,7 +8,7 @@
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
 use render_lessons::Error;
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::quadric::Roots;
 use render_lessons::shapes::{Instance, Quadric, Shape, Sphere};
 use render_lessons::transform::Transform;
@@ -18,7 +18,7 @@ fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
 }
 
 fn first(r: Roots) -> Option<f32> {
-    r.first_in(0.0, f32::INFINITY)
+    r.first_in(Interval::AHEAD)
 }
 
 fn rel(got: f32, want: f64) -> f64 {
@@ -155,7 +155,7 @@ fn s9_paraboloid_ray_parallel_to_axis() {
             );
         }
         // The hit itself uses the stable roots.
-        let h = Shape::Quadric(p).hit(&r, 0.0, f32::INFINITY).unwrap();
+        let h = Shape::Quadric(p).hit(&r, Interval::AHEAD).unwrap();
         assert!(rel(h.t, want) <= 1e-6);
     }
     insta::assert_snapshot!("s9_table", table);
@@ -166,7 +166,7 @@ fn s9_paraboloid_ray_parallel_to_axis() {
 /// `hit(ray).t` within `1e-6` relative of the hand-derived `want`.
 fn assert_t(q: &Quadric, r: &Ray, t_min: f32, want: f64) {
     let h = q
-        .hit(r, t_min, f32::INFINITY)
+        .hit(r, Interval::new(t_min, f32::INFINITY))
         .unwrap_or_else(|| panic!("{r:?} missed, expected t = {want}"));
     assert!(
         rel(h.t, want) <= 1e-6,
@@ -174,7 +174,10 @@ fn assert_t(q: &Quadric, r: &Ray, t_min: f32, want: f64) {
         h.t
     );
     // The textbook agrees wherever a is not small.
-    let tb = q.roots_textbook(r).first_in(t_min, f32::INFINITY).unwrap();
+    let tb = q
+        .roots_textbook(r)
+        .first_in(Interval::new(t_min, f32::INFINITY))
+        .unwrap();
     assert!(
         rel(tb, want) <= 1e-5,
         "textbook {r:?}: t = {tb}, expected {want}"
@@ -199,13 +202,13 @@ fn ellipsoid_known_answers() {
         (72.0_f64 / 13.0).sqrt(),
     );
     let h = e
-        .hit(&ray([-10.0, 0.0, 0.0], [1.0, 0.0, 0.0]), 0.0, f32::INFINITY)
+        .hit(&ray([-10.0, 0.0, 0.0], [1.0, 0.0, 0.0]), Interval::AHEAD)
         .unwrap();
     assert_eq!(h.normal, Vec3::new(-1.0, 0.0, 0.0));
     assert!(h.front_face);
     // Passing above the top (z = 1.5): misses.
     assert!(
-        e.hit(&ray([0.0, 0.0, 1.5], [1.0, 0.0, 0.0]), 0.0, f32::INFINITY)
+        e.hit(&ray([0.0, 0.0, 1.5], [1.0, 0.0, 0.0]), Interval::AHEAD)
             .is_none()
     );
 }
@@ -229,12 +232,15 @@ fn cylinder_known_answers() {
         let r = ray([x, 0.0, 0.0], [0.0, 0.0, 1.0]);
         assert_eq!(c.roots_stable(&r), Roots::None);
         assert_eq!(c.roots_textbook(&r), Roots::None);
-        assert!(c.hit(&r, 0.0, f32::INFINITY).is_none());
+        assert!(c.hit(&r, Interval::AHEAD).is_none());
     }
     // The normal is radial, outward: at (-2, 0, 7) it is -X, and from inside the
     // ray meets its back.
     let h = c
-        .hit(&ray([-5.0, 0.0, 7.0], [1.0, 0.0, 0.0]), 4.0, f32::INFINITY)
+        .hit(
+            &ray([-5.0, 0.0, 7.0], [1.0, 0.0, 0.0]),
+            Interval::new(4.0, f32::INFINITY),
+        )
         .unwrap();
     assert_eq!(h.normal, Vec3::X);
     assert!(!h.front_face);
@@ -259,7 +265,7 @@ fn cone_known_answers_and_generator_parallel_ray() {
         other => panic!("expected one root, got {other:?}"),
     }
     assert_eq!(k1.roots_textbook(&r), Roots::None, "the textbook loses it");
-    let h = k1.hit(&r, 0.0, f32::INFINITY).unwrap();
+    let h = k1.hit(&r, Interval::AHEAD).unwrap();
     assert!((h.point - Vec3::new(0.5, 0.0, 0.5)).length() < 1e-6);
 }
 
@@ -304,7 +310,7 @@ fn hit_points_on_surface_and_normals_are_gradients() {
                 let o = Vec3::new(-6.0 + 0.37 * fj, -4.0 + 0.61 * fi, 5.0 - 0.83 * fi);
                 let d = Vec3::new(1.0 + 0.1 * fi, 0.35 * fj - 1.9, 0.45 * fi - 2.0);
                 let r = Ray::new(o, d).unwrap();
-                let Some(h) = q.hit(&r, 0.0, f32::INFINITY) else {
+                let Some(h) = q.hit(&r, Interval::AHEAD) else {
                     continue;
                 };
                 assert!(h.t.is_finite() && h.point.is_finite() && h.normal.is_finite());
@@ -417,8 +423,8 @@ fn scaled_translated_sphere_is_the_ellipsoid() {
             let local = Ray::new(o, d).unwrap();
             let world = Ray::new(o + shift, d).unwrap();
             let (a, b) = (
-                inst.hit(&world, 0.0, f32::INFINITY),
-                e.hit(&local, 0.0, f32::INFINITY),
+                inst.hit(&world, Interval::AHEAD),
+                e.hit(&local, Interval::AHEAD),
             );
             match (a, b) {
                 (Some(a), Some(b)) => {
@@ -451,7 +457,7 @@ fn instance_normal_is_the_inverse_transpose_one() {
     let m = Transform::scale(2.0, 1.0, 1.0).unwrap();
     let inst = Instance::new(unit_sphere(), m).unwrap();
     let h = inst
-        .hit(&ray([1.0, 5.0, 0.0], [0.0, -1.0, 0.0]), 0.0, f32::INFINITY)
+        .hit(&ray([1.0, 5.0, 0.0], [0.0, -1.0, 0.0]), Interval::AHEAD)
         .unwrap();
     let y = 3.0_f32.sqrt() / 2.0;
     assert!((h.t - (5.0 - y)).abs() <= 1e-6, "{}", h.t);
@@ -509,7 +515,7 @@ fn instance_t_is_world_distance() {
     for i in 0..8 {
         let fi = i as f32;
         let r = ray([-10.0, 1.0 + 0.05 * fi, -2.5 + 0.2 * fi], [1.0, 0.0, 0.1]);
-        let Some(h) = inst.hit(&r, 0.0, f32::INFINITY) else {
+        let Some(h) = inst.hit(&r, Interval::AHEAD) else {
             continue;
         };
         hits += 1;
@@ -517,12 +523,14 @@ fn instance_t_is_world_distance() {
         assert!(((h.point - r.origin()).length() - h.t).abs() <= 1e-5 * h.t);
         assert!((r.at(h.t) - h.point).length() <= 1e-5 * h.t);
         // The same placement of the quadric ellipsoid agrees (a rigid instance).
-        let h2 = ellipsoid.hit(&r, 0.0, f32::INFINITY).unwrap();
+        let h2 = ellipsoid.hit(&r, Interval::AHEAD).unwrap();
         assert!((h.t - h2.t).abs() <= 1e-5 * h.t, "{} vs {}", h.t, h2.t);
         // The range is in world units too: just short of t, nothing; past the entry,
         // the exit.
-        assert!(inst.hit(&r, 0.0, h.t * 0.999).is_none());
-        let exit = inst.hit(&r, h.t * 1.001, f32::INFINITY).unwrap();
+        assert!(inst.hit(&r, Interval::new(0.0, h.t * 0.999)).is_none());
+        let exit = inst
+            .hit(&r, Interval::new(h.t * 1.001, f32::INFINITY))
+            .unwrap();
         assert!(exit.t > h.t && !exit.front_face);
         assert!(((exit.point - r.origin()).length() - exit.t).abs() <= 1e-5 * exit.t);
     }

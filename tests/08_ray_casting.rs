@@ -10,11 +10,11 @@ use glam::Vec3;
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Camera, Film, OrthoCamera};
 use render_lessons::offset::{Offset, offset_ray_origin};
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
 use render_lessons::sampling::{cosine_hemisphere, grid};
-use render_lessons::scene::{Intersect, Object, PointLight, Scene};
+use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
 use render_lessons::scenes::{lesson08, lesson08_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
 
@@ -60,9 +60,9 @@ fn closest_hit_wins_whatever_the_list_order() {
         let scene = Scene::new(objects, Vec3::Z)
             .and_then(|s| s.with_light(light))
             .unwrap();
-        let (hit, object) = scene.closest_hit(&ray, 0.0, f32::INFINITY).unwrap();
-        assert_eq!(hit.t, 2.0);
-        assert_eq!(object.colour(), Vec3::X);
+        let found = scene.closest(&ray, Interval::AHEAD).unwrap();
+        assert_eq!(found.hit.t, 2.0);
+        assert_eq!(scene.object(&found).colour(), Vec3::X);
         assert_eq!(shadowless(&scene, &ray), Vec3::X);
     }
     // A ray that misses everything sees the background.
@@ -164,11 +164,8 @@ fn self_hits(x: f32, offset: Offset) -> (u32, u32) {
         // Primary rays from 5 units away, aimed at points spread over the visible cap.
         let target = centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
         let origin = centre + Vec3::new(0.3, -0.2, 5.0) + Vec3::splat(i as f32 * 1e-3);
-        let Some(hit) = sphere.hit(
-            &Ray::new(origin, target - origin).unwrap(),
-            0.0,
-            f32::INFINITY,
-        ) else {
+        let Some(hit) = sphere.hit(&Ray::new(origin, target - origin).unwrap(), Interval::AHEAD)
+        else {
             continue;
         };
         let frame = Basis::around(hit.normal);
@@ -176,7 +173,10 @@ fn self_hits(x: f32, offset: Offset) -> (u32, u32) {
             let (start, t_min) = offset.start(hit.point, hit.error, hit.normal);
             let bounce = Ray::new(start, frame.to_world(cosine_hemisphere(u))).unwrap();
             total += 1;
-            if sphere.hit(&bounce, t_min, f32::INFINITY).is_some() {
+            if sphere
+                .hit(&bounce, Interval::new(t_min, f32::INFINITY))
+                .is_some()
+            {
                 wrong += 1;
             }
         }
@@ -213,14 +213,15 @@ fn s14_a_thin_gap_still_casts_a_shadow() {
     let hit = floor
         .hit(
             &Ray::new(p - Vec3::new(0.0, -2.0, 0.0) + Vec3::Y, Vec3::NEG_Y).unwrap(),
-            0.0,
-            10.0,
+            Interval::new(0.0, 10.0),
         )
         .unwrap();
     let blocked = |offset: Offset| {
         let (start, t_min) = offset.start(hit.point, hit.error, Vec3::Y);
         let shadow_ray = Ray::new(start, Vec3::Y).unwrap();
-        occluder.hit(&shadow_ray, t_min, 10.0).is_some()
+        occluder
+            .hit(&shadow_ray, Interval::new(t_min, 10.0))
+            .is_some()
     };
     assert!(
         !blocked(Offset::Fixed(1e-4)),
@@ -279,13 +280,13 @@ fn a_point_in_shadow_gets_only_the_ambient_share() {
 fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
     // The crate's own closest-hit loop, in the shape of exercise 8.1, must draw
     // exactly the lesson's shadowless pinhole image.
-    fn reference(ray: &Ray, shapes: &[Shape], t_min: f32, t_max: f32) -> Option<(usize, f32)> {
+    fn reference(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
         let objects = shapes
             .iter()
             .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
             .collect();
         let scene = Scene::new(objects, Vec3::ZERO).unwrap();
-        scene.closest(ray, t_min, t_max).map(|(hit, i)| (i, hit.t))
+        scene.closest(ray, range)
     }
     let mine = lesson::my_shadowless_image(reference, SMALL, None).unwrap();
     let [_, pinhole, ..] = lesson::images(SMALL, EPSILON, FAR, None).unwrap();

@@ -13,7 +13,7 @@ use render_lessons::material::Material;
 use render_lessons::offset::Offset;
 use render_lessons::pathtrace::scenes::look_camera;
 use render_lessons::pathtrace::{Rng, Settings, radiance};
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::sampling::uniform_sphere;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::{Aabb, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
@@ -50,7 +50,7 @@ fn re_hits(
     for (i, &target) in targets.iter().enumerate() {
         let origin = camera + Vec3::splat(i as f32 * 1e-3);
         let ray = Ray::new(origin, target - origin).unwrap();
-        let Some(hit) = shape.hit(&ray, 0.0, f32::INFINITY) else {
+        let Some(hit) = shape.hit(&ray, Interval::AHEAD) else {
             continue;
         };
         let (w, t) = spawn(
@@ -101,7 +101,11 @@ fn spawn(shape: &Shape, ray: &Ray, hit: &Hit, how: How, spawned: u32, rng: &mut 
             continue;
         };
         total += 1;
-        wrong += u32::from(shape.hit(&out, t_min, f32::INFINITY).is_some());
+        wrong += u32::from(
+            shape
+                .hit(&out, Interval::new(t_min, f32::INFINITY))
+                .is_some(),
+        );
     }
     (wrong, total)
 }
@@ -155,13 +159,17 @@ fn far_sphere_is_never_re_hit_from_near_or_far() {
         for (i, target) in targets(centre, 0.9, 24).into_iter().enumerate() {
             let origin = camera(d) + Vec3::splat(i as f32 * 1e-3);
             let ray = Ray::new(origin, target - origin).unwrap();
-            let hit = sphere.hit(&ray, 0.0, f32::INFINITY).unwrap();
+            let hit = sphere.hit(&ray, Interval::AHEAD).unwrap();
             let (start, t_min) = Offset::ErrorBound.start(hit.point, hit.error, hit.normal);
             for k in 0..16 {
                 let w = uniform_sphere(Vec2::new((k as f32 + 0.5) / 16.0, 0.37));
                 let w = if w.dot(hit.normal) < 0.0 { -w } else { w };
                 let out = Ray::new(start, w).unwrap();
-                wrong += u32::from(sphere.hit(&out, t_min, f32::INFINITY).is_some());
+                wrong += u32::from(
+                    sphere
+                        .hit(&out, Interval::new(t_min, f32::INFINITY))
+                        .is_some(),
+                );
             }
         }
         assert_eq!(wrong, 0, "sphere at {centre} seen from {d}");
@@ -288,7 +296,7 @@ fn triangle_re_hits(offset: Offset, raw_point: bool) -> (u32, u32) {
         let Ok(ray) = Ray::new(origin, target - origin) else {
             continue;
         };
-        let Some(hit) = tri.hit(&ray, 0.0, f32::INFINITY) else {
+        let Some(hit) = tri.hit(&ray, Interval::AHEAD) else {
             continue;
         };
         let how = How {

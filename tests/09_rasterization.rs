@@ -5,6 +5,7 @@
 #[allow(dead_code)]
 mod lesson;
 
+use render_lessons::ray::Interval;
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::path::Path;
@@ -743,7 +744,9 @@ fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_object
     assert_eq!(one_pass.image, colours);
     let id = |x: i64, y: i64| {
         let ray = camera.ray(x.clamp(0, 95) as u32, y.clamp(0, 53) as u32);
-        scene.closest(&ray, 0.0, f32::INFINITY).map(|(_, i)| i)
+        scene
+            .closest(&ray, Interval::AHEAD)
+            .map(|found| found.object)
     };
     let mut flagged = 0;
     for y in 0..54i64 {

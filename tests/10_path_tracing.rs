@@ -30,7 +30,7 @@ use render_lessons::pathtrace::{
     Accumulator, LensCamera, PathCamera, PixelSampling, RecordedPath, Rng, Sampling, Settings,
     SphereSampling, radiance, radiance_observed, record_path,
 };
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
 
@@ -966,13 +966,13 @@ fn quad_hits_inside_and_misses_outside() {
     assert_eq!(q.normal(), -Vec3::Y);
     assert_eq!(q.area(), 6.0);
     let down = |x, z| Ray::new(Vec3::new(x, 1.0, z), -Vec3::Y).unwrap();
-    let h = q.hit(&down(1.0, 1.5), 0.0, f32::INFINITY).unwrap();
+    let h = q.hit(&down(1.0, 1.5), Interval::AHEAD).unwrap();
     assert_eq!(h.t, 1.0);
     assert!(!h.front_face);
-    assert!(q.hit(&down(2.1, 1.5), 0.0, f32::INFINITY).is_none());
-    assert!(q.hit(&down(1.0, -0.1), 0.0, f32::INFINITY).is_none());
+    assert!(q.hit(&down(2.1, 1.5), Interval::AHEAD).is_none());
+    assert!(q.hit(&down(1.0, -0.1), Interval::AHEAD).is_none());
     let edge_on = Ray::new(Vec3::new(-1.0, 0.0, 1.0), Vec3::X).unwrap();
-    assert!(q.hit(&edge_on, 0.0, f32::INFINITY).is_none());
+    assert!(q.hit(&edge_on, Interval::AHEAD).is_none());
 }
 
 #[test]

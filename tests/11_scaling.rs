@@ -3,7 +3,7 @@
 //! same, and that the chart has what the chapter says it has.
 
 use render_lessons::course::measure::scaling::{fan_scene, rows, sphere_scene};
-use render_lessons::scene::Intersect;
+use render_lessons::ray::Interval;
 
 #[test]
 fn list_and_bvh_hit_the_same_rays_at_every_size() {
@@ -36,7 +36,7 @@ fn fans_cover_the_share_of_the_frame_their_area_predicts() {
     let rays = rays(48, 27).unwrap();
     let hits = rays
         .iter()
-        .filter(|r| scene.closest_hit(r, 0.0, f32::INFINITY).is_some())
+        .filter(|r| scene.closest(r, Interval::AHEAD).is_some())
         .count();
     // The fan is a regular octagon inscribed in a circle of radius 0.9: area
     // 2 sqrt(2) 0.81 = 2.29. The eye is 3.03 units away and the film is 0.84 x 1.49

@@ -11,7 +11,7 @@ use glam::{Mat4, Vec3};
 use render_lessons::bvh::build::Strategy;
 use render_lessons::bvh::{Bvh, BvhScene, MAX_DEPTH, Node, NodeKind};
 use render_lessons::raster::mesh::Mesh;
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
 use render_lessons::shapes::{Aabb, Instance, Plane, Quadric, Shape, Sphere, Triangle};
 use render_lessons::transform::Transform;
@@ -65,15 +65,6 @@ fn mesh_objects(mesh: &Mesh) -> Vec<Object> {
         .collect()
 }
 
-/// The index of `o` in `scene`'s object list.
-fn index_of(scene: &Scene, o: &Object) -> usize {
-    scene
-        .objects()
-        .iter()
-        .position(|x| std::ptr::eq(x, o))
-        .unwrap()
-}
-
 /// Rays from random points in a cube of half-size `spread`, half of them aimed at
 /// random points of a cube of half-size `target` (so that many hit), half in random
 /// directions.
@@ -96,33 +87,30 @@ fn assert_same_answers(scene: &Scene, rays: &[Ray]) -> usize {
     let bvh = BvhScene::new(scene.clone());
     let mut hits = 0;
     for (k, ray) in rays.iter().enumerate() {
-        let list = scene.closest_hit(ray, 0.0, f32::INFINITY);
-        let tree = bvh.closest_hit(ray, 0.0, f32::INFINITY);
+        let list = scene.closest(ray, Interval::AHEAD);
+        let tree = bvh.closest(ray, Interval::AHEAD);
         match (list, tree) {
             (None, None) => {}
-            (Some((a, oa)), Some((b, ob))) => {
+            (Some(a), Some(b)) => {
                 hits += 1;
-                assert_eq!(a, b, "ray {k}: {ray:?}");
-                assert_eq!(
-                    index_of(scene, oa),
-                    index_of(bvh.scene(), ob),
-                    "ray {k}: {ray:?}"
-                );
+                assert_eq!(a.hit, b.hit, "ray {k}: {ray:?}");
+                assert_eq!(a.object, b.object, "ray {k}: {ray:?}");
             }
             (a, b) => panic!("ray {k}: {ray:?}: list {a:?}, tree {b:?}"),
         }
         // Shadow-ray questions over a few ranges, including one that ends just
         // before the closest hit.
-        let t_hit = list.map_or(10.0, |(h, _)| h.t);
+        let t_hit = list.map_or(10.0, |found| found.hit.t);
         for (t_min, t_max) in [
             (0.0, f32::INFINITY),
             (1e-3, t_hit * 0.999),
             (0.0, t_hit * 1.001),
             (t_hit * 0.5, 2.0 * t_hit),
         ] {
+            let range = Interval::new(t_min, t_max);
             assert_eq!(
-                scene.occluded(ray, t_min, t_max),
-                bvh.occluded(ray, t_min, t_max),
+                scene.occluded(ray, range),
+                bvh.occluded(ray, range),
                 "ray {k} occluded in ({t_min}, {t_max}): {ray:?}"
             );
         }
@@ -214,8 +202,8 @@ fn a_ray_along_any_face_of_a_box_hits_in_the_tree_as_in_the_list() {
                 let (mut o, mut d) = (Vec3::ZERO, Vec3::ZERO);
                 (o[axis], o[along], d[axis], d[across], d[along]) = (side, -5.0, zero, zero, 1.0);
                 let r = Ray::new(o, d).unwrap();
-                let list = scene.closest_hit(&r, 0.0, f32::INFINITY).map(|(h, _)| h.t);
-                let tree = bvh.closest_hit(&r, 0.0, f32::INFINITY).map(|(h, _)| h.t);
+                let list = scene.closest(&r, Interval::AHEAD).map(|f| f.hit.t);
+                let tree = bvh.closest(&r, Interval::AHEAD).map(|f| f.hit.t);
                 assert_eq!(list, Some(4.0), "list, o {o}, d {d:?}");
                 assert_eq!(tree, Some(4.0), "tree, o {o}, d {d:?}");
             }
@@ -291,11 +279,11 @@ fn watertight_through_the_tree_no_leaks_at_vertices_or_edges() {
             .collect();
         let leaks = rays
             .iter()
-            .filter(|r| bvh.closest_hit(r, 0.0, f32::INFINITY).is_none())
+            .filter(|r| bvh.closest(r, Interval::AHEAD).is_none())
             .count();
         let list_leaks = rays
             .iter()
-            .filter(|r| scene.closest_hit(r, 0.0, f32::INFINITY).is_none())
+            .filter(|r| scene.closest(r, Interval::AHEAD).is_none())
             .count();
         eprintln!(
             "{n}x{n} bumpy sphere, {} rays at vertices and edge midpoints: tree leaks {leaks}, list {list_leaks}",
@@ -340,8 +328,7 @@ fn degenerate_builds() {
     let bvh = BvhScene::new(same.clone());
     assert_eq!(bvh.bvh().nodes().len(), 1);
     let r = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z).unwrap();
-    let (_, o) = bvh.closest_hit(&r, 0.0, f32::INFINITY).unwrap();
-    assert_eq!(index_of(bvh.scene(), o), 0);
+    assert_eq!(bvh.closest(&r, Interval::AHEAD).unwrap().object, 0);
     assert_same_answers(&same, &rays);
 
     // Only planes: no tree at all, everything in the unbounded list.

@@ -19,8 +19,8 @@ use glam::{Mat4, Vec2, Vec3};
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Film, Frame, PinholeCamera, camera_basis, camera_basis_as_on_slide};
 use render_lessons::course::exercises::check::*;
-use render_lessons::ray::Ray;
-use render_lessons::scene::{Object, Scene};
+use render_lessons::ray::{Interval, Ray};
+use render_lessons::scene::{Object, Scene, SceneHit};
 use render_lessons::shapes::{Plane, Shape, Sphere};
 
 mod checks {
@@ -478,7 +478,7 @@ mod checks {
         let ray = |o, d| Ray::new(o, d).unwrap();
         assert_eq!(
             check_moller_trumbore(|o, d, v0, v1, v2| {
-                triangle(v0, v1, v2).moller_trumbore(&ray(o, d), 0.0, f32::INFINITY)
+                triangle(v0, v1, v2).moller_trumbore(&ray(o, d), Interval::AHEAD)
             }),
             Outcome::Pass
         );
@@ -490,7 +490,7 @@ mod checks {
         assert_eq!(
             check_moller_trumbore(|o, d, v0, v1, v2| {
                 triangle(v0, v1, v2)
-                    .watertight(&ray(o, d), 0.0, f32::INFINITY)
+                    .watertight(&ray(o, d), Interval::AHEAD)
                     .map(|(t, _, b1, b2)| (t, b1, b2))
             }),
             Outcome::Pass
@@ -547,26 +547,33 @@ mod checks {
 
     // Chapter 08.
 
+    /// Every shape's hit within `range`, in list order.
+    fn every_hit<'a>(
+        ray: &'a Ray,
+        shapes: &'a [Shape],
+        range: Interval,
+    ) -> impl DoubleEndedIterator<Item = SceneHit> + 'a {
+        shapes
+            .iter()
+            .enumerate()
+            .filter_map(move |(object, s)| s.hit(ray, range).map(|hit| SceneHit { hit, object }))
+    }
+
     #[test]
     fn closest_accepts_the_reference() {
-        let reference = |ray: &Ray, shapes: &[Shape], t_min, t_max| {
+        let reference = |ray: &Ray, shapes: &[Shape], range| {
             let objects = shapes
                 .iter()
                 .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
                 .collect();
             let scene = Scene::new(objects, Vec3::ZERO).unwrap();
-            let (hit, index) = scene.closest(ray, t_min, t_max)?;
-            Some((index, hit.t))
+            scene.closest(ray, range)
         };
         assert_eq!(check_closest(reference), Outcome::Pass);
         assert_eq!(check_closest(closest_solution), Outcome::Pass);
-        // Every hit, then the smallest t: no shrinking of t_max.
-        let min_of_all = |ray: &Ray, shapes: &[Shape], t_min, t_max| {
-            shapes
-                .iter()
-                .enumerate()
-                .filter_map(|(i, s)| s.hit(ray, t_min, t_max).map(|h| (i, h.t)))
-                .min_by(|a, b| a.1.total_cmp(&b.1))
+        // Every hit, then the smallest t: no shrinking of range.max.
+        let min_of_all = |ray: &Ray, shapes: &[Shape], range| {
+            every_hit(ray, shapes, range).min_by(|a, b| a.hit.t.total_cmp(&b.hit.t))
         };
         assert_eq!(check_closest(min_of_all), Outcome::Pass);
     }
@@ -574,23 +581,16 @@ mod checks {
     #[test]
     fn closest_rejects_mistakes() {
         fails_with(
-            check_closest(|ray: &Ray, shapes: &[Shape], t_min, t_max| {
-                shapes
-                    .iter()
-                    .enumerate()
-                    .find_map(|(i, s)| s.hit(ray, t_min, t_max).map(|h| (i, h.t)))
+            check_closest(|ray: &Ray, shapes: &[Shape], range| {
+                every_hit(ray, shapes, range).next()
             }),
             "first hit",
         );
         fails_with(
-            check_closest(|ray: &Ray, shapes: &[Shape], t_min, t_max| {
-                shapes
-                    .iter()
-                    .enumerate()
-                    .filter_map(|(i, s)| s.hit(ray, t_min, t_max).map(|h| (i, h.t)))
-                    .next_back()
+            check_closest(|ray: &Ray, shapes: &[Shape], range| {
+                every_hit(ray, shapes, range).next_back()
             }),
-            "shrink t_max",
+            "shrink range.max",
         );
     }
 
@@ -810,9 +810,9 @@ mod checks {
         by_min_max: bool,
         keep_nan: bool,
         closed: bool,
-    ) -> impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Option<(f32, f32)> {
-        move |o, inv_d, min, max, t_min, t_max| {
-            let (mut t0, mut t1) = (t_min, t_max);
+    ) -> impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> Option<(f32, f32)> {
+        move |o, inv_d, min, max, range: Interval| {
+            let (mut t0, mut t1) = (range.min, range.max);
             for i in 0..3 {
                 let a = (min[i] - o[i]) * inv_d[i];
                 let b = (max[i] - o[i]) * inv_d[i];
@@ -840,9 +840,9 @@ mod checks {
     #[test]
     fn slab_accepts_the_reference() {
         use render_lessons::shapes::Aabb;
-        let crate_slab = |o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, t_min, t_max| {
+        let crate_slab = |o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, range| {
             let ray = Ray::new(o, Vec3::ONE / inv_d).unwrap();
-            Aabb::new(min, max).unwrap().slab(&ray, t_min, t_max)
+            Aabb::new(min, max).unwrap().slab(&ray, range)
         };
         assert_eq!(check_slab(crate_slab), Outcome::Pass);
         assert_eq!(check_slab(slab_solution), Outcome::Pass);
@@ -871,18 +871,18 @@ mod checks {
             "takes t_near when it is NaN",
         );
         fails_with(
-            check_slab(|o, inv_d, min, max, _, _| {
-                slab_solution(o, inv_d, min, max, f32::NEG_INFINITY, f32::INFINITY)
+            check_slab(|o, inv_d, min, max, _| {
+                slab_solution(o, inv_d, min, max, Interval::EVERYWHERE)
             }),
-            "start the interval at [t_min, t_max]",
+            "start the interval at [range.min, range.max]",
         );
         fails_with(
-            check_slab(|o, inv_d, min, max, t_min, t_max| {
-                slab_solution(o, Vec3::ONE / inv_d, min, max, t_min, t_max)
+            check_slab(|o, inv_d, min, max, range| {
+                slab_solution(o, Vec3::ONE / inv_d, min, max, range)
             }),
             "multiply by it",
         );
-        assert_eq!(check_slab(|_, _, _, _, _, _| todo!()), Outcome::NotStarted);
+        assert_eq!(check_slab(|_, _, _, _, _| todo!()), Outcome::NotStarted);
     }
 
     // The machinery.
@@ -893,7 +893,7 @@ mod checks {
             check_pixel_to_plane(|_, _, _, _, _, _| todo!("Coding exercise 3.1")),
             Outcome::NotStarted
         );
-        assert_eq!(check_closest(|_, _, _, _| todo!()), Outcome::NotStarted);
+        assert_eq!(check_closest(|_, _, _| todo!()), Outcome::NotStarted);
         assert_eq!(check_covers(|_, _, _, _| todo!()), Outcome::NotStarted);
         match check_point_at(|_, _, _| panic!("oops")) {
             Outcome::Fail { got, .. } => assert!(got.contains("a panic: oops"), "{got}"),

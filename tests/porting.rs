@@ -26,7 +26,7 @@ use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 use glam::{Mat4, Vec3};
 use render_lessons::camera::{Frame, PinholeCamera};
 use render_lessons::raster::pipeline;
-use render_lessons::ray::Ray;
+use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Aabb, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
 use render_lessons::transform::{Transform, from_rows};
 
@@ -642,7 +642,7 @@ fn cylinder_along_x_two_ways() {
     let r = ray([0.0, 0.5, -5.0], [1.0, 0.1, 1.0]);
     for c in [&along, &placed] {
         crossings(c, &r, &[6.80798, 7.08872]);
-        let hit = c.hit(&r, 0.0, f32::INFINITY).unwrap();
+        let hit = c.hit(&r, Interval::AHEAD).unwrap();
         close(hit.t, 6.80798, RTC_EPSILON);
         // On the surface: y^2 + z^2 = 1, and the normal is (0, y, z).
         let p = hit.point;
@@ -817,7 +817,7 @@ fn every_shape_crossings_agree_with_hit_and_normal_at() {
             let xs = shape.crossings(&r);
             assert!(xs.windows(2).all(|w| w[0] <= w[1]), "{name}: {:?}", &xs[..]);
             let first_ahead = xs.iter().copied().find(|&t| t > 0.0);
-            let hit = shape.hit(&r, 0.0, f32::INFINITY);
+            let hit = shape.hit(&r, Interval::AHEAD);
             assert_eq!(first_ahead.is_some(), hit.is_some(), "{name} {i} {j}");
             let Some(hit) = hit else { continue };
             hits += 1;

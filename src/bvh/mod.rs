@@ -16,9 +16,9 @@
 
 use glam::{Vec3, Vec3A, Vec4};
 
-use crate::ray::Ray;
-use crate::scene::{Intersect, Scene};
-use crate::shapes::{Aabb, Hit, Shape};
+use crate::ray::{Interval, Ray};
+use crate::scene::{Intersect, Scene, SceneHit};
+use crate::shapes::{Aabb, Shape};
 
 pub mod build;
 pub mod traverse;
@@ -159,19 +159,18 @@ impl BvhScene {
 }
 
 /// The tree answers what the list answers ([`Scene::closest`], [`Scene::occluded`]):
-/// the nearest hit with `t_min < t < t_max`, on a tie (equal `t`) the object that
+/// the nearest hit within the range, on a tie (equal `t`) the object that
 /// comes first in the scene's list; and whether anything lies on the ray.
 impl Intersect for BvhScene {
     fn scene(&self) -> &Scene {
         &self.scene
     }
 
-    fn closest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(Hit, usize)> {
-        self.bvh
-            .closest_hit(self.scene.objects(), ray, t_min, t_max)
+    fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
+        self.bvh.closest(self.scene.objects(), ray, range)
     }
 
-    fn occluded(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
-        self.bvh.occluded(self.scene.objects(), ray, t_min, t_max)
+    fn occluded(&self, ray: &Ray, range: Interval) -> bool {
+        self.bvh.occluded(self.scene.objects(), ray, range)
     }
 }

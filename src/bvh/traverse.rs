@@ -17,10 +17,10 @@
 use glam::Vec3A;
 
 use crate::bvh::{Bvh, MAX_DEPTH, Node};
-use crate::ray::Ray;
-use crate::scene::Object;
+use crate::ray::{Interval, Ray};
+use crate::scene::{Object, SceneHit};
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Candidate, Hit, PreparedRay};
+use crate::shapes::{Candidate, PreparedRay};
 
 /// The relative margin added to the far end of the box tests: 4 gamma(3), about
 /// 7e-7 (a few ulps of `t`). See [`Nearest::box_limit`].
@@ -123,21 +123,21 @@ impl BoxRay {
 /// [`box_entry_careful`] replaces it so that the axis constrains nothing, as in
 /// [`Aabb::slab`](crate::shapes::Aabb::slab), on every CPU.
 #[inline(always)]
-fn box_entry(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
+fn box_entry(node: &Node, ray: &BoxRay, range: Interval) -> Option<f32> {
     if !ray.finite {
-        return box_entry_careful(node, ray, t_min, t_max);
+        return box_entry_careful(node, ray, range);
     }
     let (min, max) = node.corners();
     let lo = (min - ray.origin) * ray.inv_d;
     let hi = (max - ray.origin) * ray.inv_d;
     let (near, far) = (lo.min(hi), lo.max(hi));
-    enter(near.max_element(), far.min_element(), t_min, t_max)
+    enter(near.max_element(), far.min_element(), range)
 }
 
 /// [`box_entry`] for a ray with an infinite 1/d: each NaN becomes -inf (an entry)
 /// or +inf (an exit).
 #[inline(never)]
-fn box_entry_careful(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Option<f32> {
+fn box_entry_careful(node: &Node, ray: &BoxRay, range: Interval) -> Option<f32> {
     let (min, max) = node.corners();
     let lo = (min - ray.origin) * ray.inv_d;
     let hi = (max - ray.origin) * ray.inv_d;
@@ -146,45 +146,42 @@ fn box_entry_careful(node: &Node, ray: &BoxRay, t_min: f32, t_max: f32) -> Optio
     let far = Vec3A::select(negative, lo, hi);
     let near = Vec3A::select(near.is_nan_mask(), Vec3A::NEG_INFINITY, near);
     let far = Vec3A::select(far.is_nan_mask(), Vec3A::INFINITY, far);
-    enter(near.max_element(), far.min_element(), t_min, t_max)
+    enter(near.max_element(), far.min_element(), range)
 }
 
 /// The entry into the box whose slabs are entered by `near` and left by `far`
 /// (neither NaN), within `t_min..t_max`, with the exit widened.
 #[inline(always)]
-fn enter(near: f32, far: f32, t_min: f32, t_max: f32) -> Option<f32> {
+fn enter(near: f32, far: f32, range: Interval) -> Option<f32> {
     let far = far * if far > 0.0 { WIDEN } else { WIDEN_NEGATIVE };
-    let t0 = if near > t_min { near } else { t_min };
-    let t1 = if far < t_max { far } else { t_max };
+    let t0 = if near > range.min { near } else { range.min };
+    let t1 = if far < range.max { far } else { range.max };
     (t0 <= t1).then_some(t0)
 }
 // ANCHOR_END: box_entry
 
 impl Bvh {
-    /// The nearest hit with `t_min < t < t_max` among `objects` (the slice the tree
-    /// was built over) and its index: the unbounded objects first, then the tree,
+    /// The nearest hit within `range` among `objects` (the slice the tree was built
+    /// over) and its index: the unbounded objects first, then the tree,
     /// whose boxes are tested only up to the nearest hit so far.
-    pub fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        t_min: f32,
-        t_max: f32,
-    ) -> Option<(Hit, usize)> {
+    pub fn closest(&self, objects: &[Object], ray: &Ray, range: Interval) -> Option<SceneHit> {
         let prepared = PreparedRay::new(ray);
-        let mut nearest = Nearest { best: None, t_max };
+        let mut nearest = Nearest {
+            best: None,
+            t_max: range.max,
+        };
         for &i in &self.unbounded {
             if let Some(c) = objects[i]
                 .shape
-                .candidate(&prepared, t_min, nearest.limit())
+                .candidate(&prepared, range.up_to(nearest.limit()))
             {
                 nearest.offer(c, i);
             }
         }
-        self.walk(&prepared, t_min, nearest.box_limit(), |leaf| {
+        self.walk(&prepared, range.up_to(nearest.box_limit()), |leaf| {
             for p in leaf {
                 let shape = &self.shapes[p];
-                if let Some(c) = shape.candidate(&prepared, t_min, nearest.limit()) {
+                if let Some(c) = shape.candidate(&prepared, range.up_to(nearest.limit())) {
                     nearest.offer(c, self.primitives[p]);
                 }
             }
@@ -192,29 +189,25 @@ impl Bvh {
                 t_max: nearest.box_limit(),
             }
         });
-        let (candidate, i) = nearest.best?;
-        Some((objects[i].shape.record(&prepared, candidate), i))
+        let (candidate, object) = nearest.best?;
+        let hit = objects[object].shape.record(&prepared, candidate);
+        Some(SceneHit { hit, object })
     }
 
-    /// True if any of `objects` lies on the ray with `t_min < t < t_max`; stops at
+    /// True if any of `objects` lies on the ray within `range`; stops at
     /// the first one found.
-    pub fn occluded(&self, objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
+    pub fn occluded(&self, objects: &[Object], ray: &Ray, range: Interval) -> bool {
         let prepared = PreparedRay::new(ray);
-        let hits = |&i: &usize| {
-            objects[i]
-                .shape
-                .candidate(&prepared, t_min, t_max)
-                .is_some()
-        };
+        let hits = |&i: &usize| objects[i].shape.candidate(&prepared, range).is_some();
         if self.unbounded.iter().any(hits) {
             return true;
         }
         // The boxes get the same margin as in `closest_hit`: an object that hits just
-        // before `t_max` may have a box entered just after it.
-        let box_t_max = widened(t_max);
+        // before `range.max` may have a box entered just after it.
+        let box_t_max = widened(range.max);
         let mut found = false;
-        self.walk(&prepared, t_min, box_t_max, |leaf| {
-            let hit = |p: usize| self.shapes[p].candidate(&prepared, t_min, t_max).is_some();
+        self.walk(&prepared, range.up_to(box_t_max), |leaf| {
+            let hit = |p: usize| self.shapes[p].candidate(&prepared, range).is_some();
             if leaf.into_iter().any(hit) {
                 found = true;
                 Walk::Stop
@@ -237,16 +230,15 @@ impl Bvh {
     fn walk(
         &self,
         ray: &PreparedRay,
-        t_min: f32,
-        t_max: f32,
+        range: Interval,
         mut leaf: impl FnMut(std::ops::Range<usize>) -> Walk,
     ) {
         let Some(root) = self.nodes.first() else {
             return;
         };
         let box_ray = BoxRay::new(ray);
-        let mut t_max = t_max;
-        if box_entry(root, &box_ray, t_min, t_max).is_none() {
+        let mut range = range;
+        if box_entry(root, &box_ray, range).is_none() {
             return;
         }
         let mut stack = [(0u32, 0.0f32); MAX_DEPTH];
@@ -258,12 +250,12 @@ impl Bvh {
             if here.count() > 0 {
                 let first = here.first() as usize;
                 match leaf(first..first + here.count() as usize) {
-                    Walk::Continue { t_max: t } => t_max = t,
+                    Walk::Continue { t_max: t } => range.max = t,
                     Walk::Stop => return,
                 }
             } else {
                 let left = here.first() as usize;
-                let hit = |i: usize| box_entry(&self.nodes[i], &box_ray, t_min, t_max);
+                let hit = |i: usize| box_entry(&self.nodes[i], &box_ray, range);
                 next = match (hit(left), hit(left + 1)) {
                     (Some(a), Some(b)) => {
                         let (near, far, t_far) = if a <= b {
@@ -288,7 +280,7 @@ impl Bvh {
                     }
                     pending -= 1;
                     let (n, t_entry) = stack[pending];
-                    if t_entry <= t_max {
+                    if t_entry <= range.max {
                         break n as usize;
                     }
                 },

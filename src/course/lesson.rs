@@ -351,8 +351,12 @@ pub fn my_pixel_to_plane() -> Result<PixelToPlane> {
     })
 }
 
-/// The signature of coding exercise 8.1, `closest(ray, shapes, t_min, t_max)`.
-pub type Closest = fn(&crate::ray::Ray, &[crate::shapes::Shape], f32, f32) -> Option<(usize, f32)>;
+/// The signature of coding exercise 8.1, `closest(ray, shapes, range)`.
+pub type Closest = fn(
+    &crate::ray::Ray,
+    &[crate::shapes::Shape],
+    crate::ray::Interval,
+) -> Option<crate::scene::SceneHit>;
 
 /// The student's `closest` for lesson 08's `--mine`, once it passes its check
 /// (coding exercise 8.1); otherwise an error that says what to do: fix the exercise,

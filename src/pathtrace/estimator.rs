@@ -30,7 +30,7 @@ use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
 use crate::scene::Intersect;
 use crate::shapes::Hit;
@@ -65,19 +65,20 @@ pub fn radiance_observed(
 ) -> Vec3 {
     let mut sum = Vec3::ZERO;
     let mut beta = Vec3::ONE;
-    let (mut ray, mut t_min) = (ray, 0.0);
+    let (mut ray, mut range) = (ray, Interval::AHEAD);
     let mut previous = Previous::Full;
     let mut bounce = 0u32;
     // A diffuse vertex, then only specular ones since: light found now is a caustic
     // (told to the observer only; the sample is the same).
     let (mut diffuse_seen, mut caustic) = (false, false);
     loop {
-        let Some((hit, index)) = scene.closest(&ray, t_min, f32::INFINITY) else {
+        let Some(found) = scene.closest(&ray, range) else {
             sum += beta * scene.background();
             observer.light(beta * scene.background(), caustic);
             observer.escaped(ray.direction());
             break;
         };
+        let (hit, index) = (found.hit, found.object);
         observer.vertex(hit.point, index);
         let object = &scene.objects()[index];
         if object.is_emissive() {
@@ -108,7 +109,7 @@ pub fn radiance_observed(
             break;
         }
         ray = Ray::from_checked(next.start.point, next.direction);
-        t_min = next.start.t_min;
+        range.min = next.start.t_min;
         previous = next.previous;
     }
     sum

@@ -16,7 +16,7 @@ use std::f32::consts::{PI, TAU};
 use glam::{Vec2, Vec3};
 
 use crate::basis::Basis;
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::sampling::uniform_sphere;
 use crate::shapes::{Quad, Shape, Sphere};
 
@@ -95,7 +95,7 @@ pub fn sample(shape: &Shape, p: Vec3, u: Vec2, strategy: SphereSampling) -> Opti
         Shape::Sphere(s) => match (strategy, cone(p, s)) {
             (SphereSampling::Cone, Some((axis, omc))) => {
                 let ray = Ray::new(p, sample_cone(axis, omc, u)).ok()?;
-                let hit = s.hit(&ray, 0.0, f32::INFINITY)?;
+                let hit = s.hit(&ray, Interval::AHEAD)?;
                 let pdf = 1.0 / (TAU * omc);
                 pdf.is_finite().then_some(LightPoint {
                     point: hit.point,

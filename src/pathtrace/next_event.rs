@@ -11,7 +11,7 @@ use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::scene::Intersect;
 
 /// Where the rays leaving a diffuse vertex start (the hit point moved off the
@@ -103,5 +103,5 @@ fn unoccluded(
     let gap = to - from.point;
     let ray = Ray::new(from.point, gap).ok()?;
     let t_max = gap.length() - t_end;
-    (!scene.occluded(&ray, from.t_min, t_max)).then_some(cos)
+    (!scene.occluded(&ray, Interval::new(from.t_min, t_max))).then_some(cos)
 }

@@ -2,6 +2,7 @@
 //! its silhouettes from one ray per pixel, and how many pixels agree away from the
 //! silhouettes.
 
+use crate::ray::Interval;
 use glam::Vec3;
 use rayon::prelude::*;
 
@@ -51,10 +52,15 @@ pub fn reference(
             .for_each(|(y, row)| {
                 for (x, pixel) in row.iter_mut().enumerate() {
                     let ray = camera.ray(x as u32, y as u32);
-                    *pixel = match scene.closest(&ray, 0.0, f32::INFINITY) {
-                        Some((hit, i)) => (
-                            lighting::at_hit(scene.scene(), &hit, &scene.objects()[i], |_| true),
-                            i,
+                    *pixel = match scene.closest(&ray, Interval::AHEAD) {
+                        Some(found) => (
+                            lighting::at_hit(
+                                scene.scene(),
+                                &found.hit,
+                                scene.object(&found),
+                                |_| true,
+                            ),
+                            found.object,
                         ),
                         None => (scene.background(), background),
                     };

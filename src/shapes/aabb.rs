@@ -4,8 +4,8 @@
 use glam::Vec3;
 
 use crate::error::{Error, Result, finite3};
-use crate::ray::Ray;
-use crate::shapes::{Crossings, Hit, PreparedRay, in_open_range};
+use crate::ray::{Interval, Ray};
+use crate::shapes::{Crossings, Hit, PreparedRay};
 
 /// The box of points with `min <= p <= max` on every axis (a closed set).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,8 +128,8 @@ impl Aabb {
     /// depend on the sign of the zero; `slab_ends` turns it into -inf (an entry) or
     /// +inf (an exit), so the axis on whose boundary the ray runs constrains nothing,
     /// for either sign, as the closed box requires.
-    pub fn slab(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
-        let s = self.span(ray.origin(), ray.direction().recip(), t_min, t_max, 1.0)?;
+    pub fn slab(&self, ray: &Ray, range: Interval) -> Option<(f32, f32)> {
+        let s = self.span(ray.origin(), ray.direction().recip(), range, 1.0)?;
         Some((s.t0, s.t1))
     }
     // ANCHOR_END: slab
@@ -140,8 +140,8 @@ impl Aabb {
     /// instead, so that it too moves outwards), so that rounding in the three operations behind it
     /// cannot make the box miss a point that lies on it, such as a vertex of a
     /// triangle it bounds (STABILITY S6).
-    pub fn slab_conservative(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32)> {
-        self.slab_conservative_prepared(&PreparedRay::new(ray), t_min, t_max)
+    pub fn slab_conservative(&self, ray: &Ray, range: Interval) -> Option<(f32, f32)> {
+        self.slab_conservative_prepared(&PreparedRay::new(ray), range)
     }
     // ANCHOR_END: slab_conservative
 
@@ -151,11 +151,10 @@ impl Aabb {
     pub fn slab_conservative_prepared(
         &self,
         ray: &PreparedRay,
-        t_min: f32,
-        t_max: f32,
+        range: Interval,
     ) -> Option<(f32, f32)> {
         let o = ray.ray().origin();
-        let s = self.span(o, ray.inv_d, t_min, t_max, 1.0 + 2.0 * gamma(3))?;
+        let s = self.span(o, ray.inv_d, range, 1.0 + 2.0 * gamma(3))?;
         Some((s.t0, s.t1))
     }
 
@@ -163,11 +162,11 @@ impl Aabb {
     /// The slab loop shared by both tests, for a ray from `o` with 1/d = `inv_d`;
     /// `widen` scales each axis' t_far.
     #[inline]
-    fn span(&self, o: Vec3, inv_d: Vec3, t_min: f32, t_max: f32, widen: f32) -> Option<Span> {
+    fn span(&self, o: Vec3, inv_d: Vec3, range: Interval, widen: f32) -> Option<Span> {
         let mut s = Span {
-            t0: t_min,
+            t0: range.min,
             axis0: 0,
-            t1: t_max,
+            t1: range.max,
             axis1: 0,
         };
         for i in 0..3 {
@@ -193,17 +192,12 @@ impl Aabb {
     /// whose slab set that end of the interval and the sign of the face's outward
     /// normal along it.
     #[inline]
-    pub fn nearest_face(
-        &self,
-        ray: &PreparedRay,
-        t_min: f32,
-        t_max: f32,
-    ) -> Option<(f32, usize, f32)> {
+    pub fn nearest_face(&self, ray: &PreparedRay, range: Interval) -> Option<(f32, usize, f32)> {
         let (o, d) = (ray.ray().origin(), ray.ray().direction());
-        let s = self.span(o, ray.inv_d, f32::NEG_INFINITY, f32::INFINITY, 1.0)?;
-        if in_open_range(s.t0, t_min, t_max) {
+        let s = self.span(o, ray.inv_d, Interval::EVERYWHERE, 1.0)?;
+        if range.contains(s.t0) {
             Some((s.t0, s.axis0, -d[s.axis0].signum()))
-        } else if in_open_range(s.t1, t_min, t_max) {
+        } else if range.contains(s.t1) {
             Some((s.t1, s.axis1, d[s.axis1].signum()))
         } else {
             None
@@ -230,8 +224,8 @@ impl Aabb {
 
     /// The nearest crossing of the box surface with `t_min < t < t_max`:
     /// [`Aabb::nearest_face`], then [`Aabb::hit_at`].
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let (t, axis, outward) = self.nearest_face(&PreparedRay::new(ray), t_min, t_max)?;
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let (t, axis, outward) = self.nearest_face(&PreparedRay::new(ray), range)?;
         Some(self.hit_at(ray, t, axis, outward))
     }
     // ANCHOR_END: box_hit
@@ -241,7 +235,7 @@ impl Aabb {
     /// or a corner).
     pub fn crossings(&self, ray: &Ray) -> Crossings {
         let (o, inv_d) = (ray.origin(), ray.direction().recip());
-        self.span(o, inv_d, f32::NEG_INFINITY, f32::INFINITY, 1.0)
+        self.span(o, inv_d, Interval::EVERYWHERE, 1.0)
             .map_or(Crossings::NONE, |s| Crossings::two(s.t0, s.t1))
     }
 

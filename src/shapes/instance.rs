@@ -10,7 +10,7 @@
 use glam::{Mat3, Mat4, Vec3};
 
 use crate::error::{Error, Result};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::aabb::gamma;
 use crate::shapes::{Aabb, Crossings, Hit, Shape};
 use crate::transform::Transform;
@@ -98,7 +98,7 @@ impl Instance {
     /// under non-uniform scale (M n itself is not). Transforming the normal by
     /// (M^-1)^T also keeps the side it points to, so `front_face` is recomputed from
     /// the world ray and agrees with the object-space one.
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let origin = self.to_object.point(ray.origin());
         let direction = self.to_object.vector(ray.direction());
         let stretch = direction.length();
@@ -107,9 +107,10 @@ impl Instance {
             return None;
         }
         let object_ray = Ray::from_checked(origin, unit);
-        let local = self
-            .shape
-            .hit(&object_ray, t_min * stretch, t_max * stretch)?;
+        let local = self.shape.hit(
+            &object_ray,
+            Interval::new(range.min * stretch, range.max * stretch),
+        )?;
         let t = local.t / stretch;
         let point = self.to_world.point(local.point);
         let error = self.world_error(local.point, local.error, point);

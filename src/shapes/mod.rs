@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::aabb::gamma;
 
 pub mod aabb;
@@ -96,7 +96,7 @@ enum Detail {
     Face { axis: usize, outward: f32 },
     /// An instance: its test is run again, over the same range, for the winner
     /// only (instances are rare; this keeps the candidate small).
-    Instance { t_min: f32, t_max: f32 },
+    Instance { range: Interval },
 }
 // ANCHOR_END: candidate
 
@@ -207,14 +207,21 @@ pub(crate) fn on_ray_error(ray: &Ray, t: f32) -> Vec3 {
     gamma(2) * (ray.origin().abs() + (t * ray.direction()).abs())
 }
 
-/// `t_min < t < t_max`, and `false` for NaN.
-pub(crate) fn in_open_range(t: f32, t_min: f32, t_max: f32) -> bool {
-    t > t_min && t < t_max
-}
-
 /// One primitive of a scene.
 ///
-/// Not `Copy`: an [`Instance`] owns the shape it places, behind a `Box`.
+/// Not `Copy`: an [`Instance`] owns the shape it places, behind a `Box`. Each kind
+/// converts into it with `.into()` (or `Shape::from`), as the cameras do into
+/// [`crate::camera::Camera`]:
+///
+/// ```
+/// use glam::Vec3;
+/// use render_lessons::shapes::{Plane, Shape, Sphere};
+///
+/// let ball: Shape = Sphere::new(Vec3::ZERO, 1.0)?.into();
+/// let floor = Shape::from(Plane::new(Vec3::ZERO, Vec3::Y)?);
+/// assert!(matches!((ball, floor), (Shape::Sphere(_), Shape::Plane(_))));
+/// # Ok::<(), render_lessons::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     Sphere(Sphere),
@@ -226,12 +233,54 @@ pub enum Shape {
     Instance(Box<Instance>),
 }
 
+impl From<Sphere> for Shape {
+    fn from(shape: Sphere) -> Shape {
+        Shape::Sphere(shape)
+    }
+}
+
+impl From<Plane> for Shape {
+    fn from(shape: Plane) -> Shape {
+        Shape::Plane(shape)
+    }
+}
+
+impl From<Aabb> for Shape {
+    fn from(shape: Aabb) -> Shape {
+        Shape::Aabb(shape)
+    }
+}
+
+impl From<Triangle> for Shape {
+    fn from(shape: Triangle) -> Shape {
+        Shape::Triangle(shape)
+    }
+}
+
+impl From<Quadric> for Shape {
+    fn from(shape: Quadric) -> Shape {
+        Shape::Quadric(shape)
+    }
+}
+
+impl From<Quad> for Shape {
+    fn from(shape: Quad) -> Shape {
+        Shape::Quad(shape)
+    }
+}
+
+impl From<Instance> for Shape {
+    fn from(instance: Instance) -> Shape {
+        Shape::Instance(Box::new(instance))
+    }
+}
+
 impl Shape {
     /// The nearest crossing of `ray` with `t_min < t < t_max`, if any: the
     /// [`Shape::candidate`] test, then [`Shape::record`].
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let prepared = PreparedRay::new(ray);
-        let candidate = self.candidate(&prepared, t_min, t_max)?;
+        let candidate = self.candidate(&prepared, range)?;
         Some(self.record(&prepared, candidate))
     }
 
@@ -240,29 +289,29 @@ impl Shape {
     /// what the hit record needs, nothing more. The closest-hit loop calls this for
     /// every primitive, and [`Shape::record`] once, for the winner.
     #[inline(always)]
-    pub fn candidate(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<Candidate> {
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
         match self {
-            Shape::Sphere(s) => s.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
-            Shape::Plane(p) => p.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
-            Shape::Quad(q) => q.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
-            Shape::Quadric(q) => q.nearest(ray.ray(), t_min, t_max).map(Candidate::on_ray),
+            Shape::Sphere(s) => s.nearest(ray.ray(), range).map(Candidate::on_ray),
+            Shape::Plane(p) => p.nearest(ray.ray(), range).map(Candidate::on_ray),
+            Shape::Quad(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
+            Shape::Quadric(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
             Shape::Triangle(tri) => {
-                let (t, b0, b1, b2) = tri.watertight_prepared(ray, t_min, t_max)?;
+                let (t, b0, b1, b2) = tri.watertight_prepared(ray, range)?;
                 Some(Candidate {
                     t,
                     detail: Detail::Barycentric([b0, b1, b2]),
                 })
             }
             Shape::Aabb(b) => {
-                let (t, axis, outward) = b.nearest_face(ray, t_min, t_max)?;
+                let (t, axis, outward) = b.nearest_face(ray, range)?;
                 Some(Candidate {
                     t,
                     detail: Detail::Face { axis, outward },
                 })
             }
-            Shape::Instance(i) => i.hit(ray.ray(), t_min, t_max).map(|hit| Candidate {
+            Shape::Instance(i) => i.hit(ray.ray(), range).map(|hit| Candidate {
                 t: hit.t,
-                detail: Detail::Instance { t_min, t_max },
+                detail: Detail::Instance { range },
             }),
         }
     }
@@ -274,9 +323,9 @@ impl Shape {
     pub fn record(&self, ray: &PreparedRay, candidate: Candidate) -> Hit {
         let (ray, t) = (ray.ray(), candidate.t);
         match (self, candidate.detail) {
-            (Shape::Instance(i), Detail::Instance { t_min, t_max }) => i
-                .hit(ray, t_min, t_max)
-                .unwrap_or_else(|| fallback(self, ray, t)),
+            (Shape::Instance(i), Detail::Instance { range }) => {
+                i.hit(ray, range).unwrap_or_else(|| fallback(self, ray, t))
+            }
             (Shape::Triangle(tri), Detail::Barycentric(b)) => tri.hit_at(ray, t, b),
             (Shape::Aabb(b), Detail::Face { axis, outward }) => b.hit_at(ray, t, axis, outward),
             (Shape::Sphere(s), _) => s.hit_at(ray, t),

@@ -3,9 +3,9 @@
 use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Crossings, Hit, in_open_range};
+use crate::shapes::{Crossings, Hit};
 
 /// The infinite plane through `point` with unit `normal`; the normal's side is the
 /// front.
@@ -55,8 +55,8 @@ impl Plane {
     // ANCHOR: plane_hit
     /// [`Plane::t`] if it lies in `t_min < t < t_max`.
     #[inline]
-    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        self.t(ray).filter(|&t| in_open_range(t, t_min, t_max))
+    pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
+        self.t(ray).filter(|&t| range.contains(t))
     }
 
     /// The hit record at `t`: the point o + t d, the plane's normal.
@@ -66,8 +66,8 @@ impl Plane {
     }
 
     /// The crossing with `t_min < t < t_max`, if any.
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let t = self.nearest(ray, t_min, t_max)?;
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let t = self.nearest(ray, range)?;
         Some(self.hit_at(ray, t))
     }
     // ANCHOR_END: plane_hit

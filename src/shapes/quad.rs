@@ -4,9 +4,9 @@
 use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::plane::{onto_plane, plane_error};
-use crate::shapes::{Aabb, Crossings, Hit, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit};
 
 /// The parallelogram with corner `corner` and edges `a`, `b`; its normal is
 /// (a x b)/|a x b|.
@@ -74,13 +74,13 @@ impl Quad {
     /// first, then the hit's coordinates (u, v) in the edges, from the dual vectors
     /// w = n / |a x b| with u = w . (p' x b) and v = w . (a x p'), p' = p - q.
     #[inline]
-    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+    pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
         let denom = ray.direction().dot(self.normal);
         if denom == 0.0 {
             return None;
         }
         let t = (self.corner - ray.origin()).dot(self.normal) / denom;
-        if !in_open_range(t, t_min, t_max) {
+        if !range.contains(t) {
             return None;
         }
         let rel = ray.at(t) - self.corner;
@@ -103,9 +103,9 @@ impl Quad {
         plane_error(point, self.corner)
     }
 
-    /// The crossing with `t_min < t < t_max`, if any.
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let t = self.nearest(ray, t_min, t_max)?;
+    /// The crossing within `range`, if any.
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let t = self.nearest(ray, range)?;
         Some(self.hit_at(ray, t))
     }
     // ANCHOR_END: quad_hit
@@ -113,7 +113,7 @@ impl Quad {
     /// The crossing of the ray's line inside the parallelogram, if any:
     /// [`Quad::hit`] over the whole line, -inf < t < inf.
     pub fn crossings(&self, ray: &Ray) -> Crossings {
-        self.hit(ray, f32::NEG_INFINITY, f32::INFINITY)
+        self.hit(ray, Interval::EVERYWHERE)
             .map_or(Crossings::NONE, |h| Crossings::one(h.t))
     }
 

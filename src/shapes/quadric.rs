@@ -15,9 +15,9 @@
 use glam::{DVec3, Mat4, Vec3, Vec4};
 
 use crate::error::{Error, Result, positive, unit};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Crossings, Hit, in_open_range};
+use crate::shapes::{Crossings, Hit};
 
 /// Largest asymmetry |Q_ij - Q_ji| accepted, relative to the largest |Q_ij|: a few
 /// f32 roundings, so that a matrix computed as M^-T Q M^-1 still passes.
@@ -56,15 +56,13 @@ impl Roots {
     }
 
     /// The smallest root with `t_min < t < t_max`, if any.
-    pub fn first_in(&self, t_min: f32, t_max: f32) -> Option<f32> {
+    pub fn first_in(&self, range: Interval) -> Option<f32> {
         let (t0, t1) = match *self {
             Roots::None => return None,
             Roots::One(t) => (t, t),
             Roots::Two(t0, t1) => (t0, t1),
         };
-        [t0, t1]
-            .into_iter()
-            .find(|&t| in_open_range(t, t_min, t_max))
+        [t0, t1].into_iter().find(|&t| range.contains(t))
     }
 }
 
@@ -265,14 +263,14 @@ impl Quadric {
     /// The normal is the normalised gradient, the xyz part of 2 Q x: it points to
     /// where x^T Q x > 0 (outward for the named constructors). Where the gradient
     /// vanishes (a cone's apex) there is no normal; `-d` stands in for it.
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let t = self.nearest(ray, t_min, t_max)?;
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let t = self.nearest(ray, range)?;
         Some(self.hit_at(ray, t))
     }
 
     /// The smallest root with `t_min < t < t_max`, by [`Quadric::roots_stable`].
-    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        self.roots_stable(ray).first_in(t_min, t_max)
+    pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
+        self.roots_stable(ray).first_in(range)
     }
 
     /// The hit record at `t`: the point o + t d moved onto the surface

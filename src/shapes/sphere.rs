@@ -7,9 +7,9 @@
 use glam::Vec3;
 
 use crate::error::{Result, finite3, positive};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Aabb, Crossings, Hit, in_open_range, on_ray_error};
+use crate::shapes::{Aabb, Crossings, Hit, on_ray_error};
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -106,12 +106,12 @@ impl Sphere {
     /// The nearest root with `t_min < t < t_max`, by [`Sphere::roots_stable`]: all
     /// that the closest-hit loop asks of a sphere.
     #[inline]
-    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+    pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
         let (t0, t1) = self.roots_stable(ray)?;
-        if in_open_range(t0, t_min, t_max) {
+        if range.contains(t0) {
             Some(t0)
         } else {
-            in_open_range(t1, t_min, t_max).then_some(t1)
+            range.contains(t1).then_some(t1)
         }
     }
 
@@ -147,8 +147,8 @@ impl Sphere {
 
     /// The nearest crossing with `t_min < t < t_max`: [`Sphere::nearest`], then
     /// [`Sphere::hit_at`].
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let t = self.nearest(ray, t_min, t_max)?;
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let t = self.nearest(ray, range)?;
         Some(self.hit_at(ray, t))
     }
     // ANCHOR_END: sphere_hit

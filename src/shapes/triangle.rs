@@ -4,9 +4,9 @@
 use glam::{DVec3, Vec3};
 
 use crate::error::{Error, Result, finite3};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::aabb::gamma;
-use crate::shapes::{Aabb, Crossings, Hit, PreparedRay, in_open_range};
+use crate::shapes::{Aabb, Crossings, Hit, PreparedRay};
 
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
 /// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
@@ -69,7 +69,7 @@ impl Triangle {
     /// Returns `(t, b1, b2)` for a hit with `t_min < t < t_max`. Fast, but b1 and b2
     /// of two triangles sharing an edge are rounded separately, so a ray aimed exactly
     /// at the edge or a vertex can slip between them (STABILITY S4, S5).
-    pub fn moller_trumbore(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32, f32)> {
+    pub fn moller_trumbore(&self, ray: &Ray, range: Interval) -> Option<(f32, f32, f32)> {
         let (o, d) = (ray.origin(), ray.direction());
         let (e1, e2) = (self.v1 - self.v0, self.v2 - self.v0);
         let p = d.cross(e2);
@@ -89,13 +89,13 @@ impl Triangle {
             return None;
         }
         let t = e2.dot(q) * inv;
-        in_open_range(t, t_min, t_max).then_some((t, b1, b2))
+        range.contains(t).then_some((t, b1, b2))
     }
     // ANCHOR_END: moller_trumbore
 
     /// [`Triangle::watertight_prepared`] for a single ray: prepares it first.
-    pub fn watertight(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, f32, f32, f32)> {
-        self.watertight_prepared(&PreparedRay::new(ray), t_min, t_max)
+    pub fn watertight(&self, ray: &Ray, range: Interval) -> Option<(f32, f32, f32, f32)> {
+        self.watertight_prepared(&PreparedRay::new(ray), range)
     }
 
     // ANCHOR: watertight
@@ -116,8 +116,7 @@ impl Triangle {
     pub fn watertight_prepared(
         &self,
         ray: &PreparedRay,
-        t_min: f32,
-        t_max: f32,
+        range: Interval,
     ) -> Option<(f32, f32, f32, f32)> {
         let (o, shear) = (ray.ray().origin(), ray.shear);
         let [p0, p1, p2] = [self.v0, self.v1, self.v2].map(|v| sheared(ray.permute(v - o), shear));
@@ -133,16 +132,16 @@ impl Triangle {
         }
         let z = [p0.z, p1.z, p2.z].map(|z| z * shear.z);
         let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
-        if surely_outside(t_scaled, det, t_min, t_max) {
+        if surely_outside(t_scaled, det, range) {
             return None; // before the division, which most rejected candidates skip
         }
         let inv = 1.0 / det;
         let (t, b) = (t_scaled * inv, e.map(|x| x * inv));
         let finite = b.iter().all(|x| x.is_finite());
-        if t_min >= 0.0 && t <= t_error([p0, p1, p2], z, e, inv) {
+        if range.min >= 0.0 && t <= t_error([p0, p1, p2], z, e, inv) {
             return None; // t may be rounding above a crossing at or behind the origin
         }
-        (finite && in_open_range(t, t_min, t_max)).then_some((t, b[0], b[1], b[2]))
+        (finite && range.contains(t)).then_some((t, b[0], b[1], b[2]))
     }
     // ANCHOR_END: watertight
 
@@ -162,8 +161,8 @@ impl Triangle {
     }
 
     /// The crossing with `t_min < t < t_max`, by [`Triangle::watertight`].
-    pub fn hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let (t, b0, b1, b2) = self.watertight(ray, t_min, t_max)?;
+    pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let (t, b0, b1, b2) = self.watertight(ray, range)?;
         Some(self.hit_at(ray, t, [b0, b1, b2]))
     }
     // ANCHOR_END: triangle_hit
@@ -171,7 +170,7 @@ impl Triangle {
     /// The crossing of the ray's line with the triangle, if any:
     /// [`Triangle::watertight`] over the whole line, -inf < t < inf.
     pub fn crossings(&self, ray: &Ray) -> Crossings {
-        self.watertight(ray, f32::NEG_INFINITY, f32::INFINITY)
+        self.watertight(ray, Interval::EVERYWHERE)
             .map_or(Crossings::NONE, |(t, ..)| Crossings::one(t))
     }
 
@@ -188,14 +187,14 @@ impl Triangle {
 /// without dividing (pbrt-v4 does the same): behind the origin when `t_min >= 0`
 /// and the signs differ, or beyond `t_max` with a margin of 8 ulps, far more than
 /// the rounding of the quotient and of `t_max |det|`. A NaN decides nothing.
-fn surely_outside(t_scaled: f32, det: f32, t_min: f32, t_max: f32) -> bool {
+fn surely_outside(t_scaled: f32, det: f32, range: Interval) -> bool {
     const MARGIN: f32 = 1.0 + 8.0 * f32::EPSILON;
     let (t_abs, det_abs) = if det < 0.0 {
         (-t_scaled, -det)
     } else {
         (t_scaled, det)
     };
-    (t_min >= 0.0 && t_abs <= 0.0) || t_abs > t_max * det_abs * MARGIN
+    (range.min >= 0.0 && t_abs <= 0.0) || t_abs > range.max * det_abs * MARGIN
 }
 
 // ANCHOR: t_error

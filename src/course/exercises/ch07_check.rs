@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::{Plane, Sphere, Triangle};
 
 /// Coding exercise 7.1.
@@ -257,7 +257,7 @@ pub fn check_moller_trumbore(
     let reference = |&(o, d, v0, v1, v2): &TriangleArgs| {
         Triangle::new(v0, v1, v2)
             .expect("valid triangle")
-            .moller_trumbore(&Ray::new(o, d).expect("valid ray"), 0.0, f32::INFINITY)
+            .moller_trumbore(&Ray::new(o, d).expect("valid ray"), Interval::AHEAD)
     };
     let hits_inside = |a: &TriangleArgs| {
         reference(a).is_some_and(|(_, b1, b2)| b1 > 0.0 && b2 > 0.0 && b1 + b2 < 1.0)

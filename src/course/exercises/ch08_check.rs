@@ -5,8 +5,8 @@
 use glam::Vec3;
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
-use crate::ray::Ray;
-use crate::scene::{Object, Scene};
+use crate::ray::{Interval, Ray};
+use crate::scene::{Object, Scene, SceneHit};
 use crate::shapes::{Plane, Shape, Sphere};
 
 /// Coding exercise 8.1.
@@ -18,33 +18,51 @@ pub const CLOSEST: Exercise = Exercise {
     file: "src/course/exercises/ch08.rs",
 };
 
-type ClosestArgs = (Ray, Vec<Shape>, f32, f32);
+type ClosestArgs = (Ray, Vec<Shape>, Interval);
 
 // ANCHOR: solution
 /// A worked solution of exercise 8.1, written as lesson 08 teaches it: ask every
-/// shape for its nearest crossing in `(t_min, t_max)`, and let each hit shrink
-/// `t_max`, so that a later shape counts only if it is nearer.
-pub fn closest_solution(
-    ray: &Ray,
-    shapes: &[Shape],
-    t_min: f32,
-    t_max: f32,
-) -> Option<(usize, f32)> {
+/// shape for its nearest crossing in `range`, and let each hit shrink `range.max`,
+/// so that a later shape counts only if it is nearer.
+pub fn closest_solution(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
     let mut closest = None;
-    let mut t_max = t_max;
+    let mut range = range;
     for (i, shape) in shapes.iter().enumerate() {
-        if let Some(hit) = shape.hit(ray, t_min, t_max) {
-            t_max = hit.t;
-            closest = Some((i, hit.t));
+        if let Some(hit) = shape.hit(ray, range) {
+            range.max = hit.t;
+            closest = Some(SceneHit { hit, object: i });
         }
     }
     closest
 }
 // ANCHOR_END: solution
 
-/// Checks `closest(ray, shapes, t_min, t_max)`: the index and `t` of the closest hit
-/// with `t_min < t < t_max` over all `shapes`, or `None`.
-pub fn check_closest(f: impl Fn(&Ray, &[Shape], f32, f32) -> Option<(usize, f32)>) -> Outcome {
+impl Answer for SceneHit {
+    /// The same object, hit at the same `t`.
+    fn close(&self, other: &SceneHit) -> bool {
+        self.object == other.object && self.hit.t.close(&other.hit.t)
+    }
+    fn show(&self) -> String {
+        format!("object {} at t = {}", self.object, self.hit.t.show())
+    }
+}
+
+/// Every hit in list order, as the closest-hit loop would record it without
+/// shrinking the range.
+fn each_hit<'a>(
+    ray: &'a Ray,
+    shapes: &'a [Shape],
+    range: Interval,
+) -> impl DoubleEndedIterator<Item = SceneHit> + 'a {
+    shapes
+        .iter()
+        .enumerate()
+        .filter_map(move |(object, s)| s.hit(ray, range).map(|hit| SceneHit { hit, object }))
+}
+
+/// Checks `closest(ray, shapes, range)`: the closest hit within `range` over all
+/// `shapes`, with the index of the shape hit, or `None`.
+pub fn check_closest(f: impl Fn(&Ray, &[Shape], Interval) -> Option<SceneHit>) -> Outcome {
     let sphere =
         |z: f32, r: f32| Shape::Sphere(Sphere::new(v(0.0, 0.0, z), r).expect("valid sphere"));
     let floor = Shape::Plane(Plane::new(v(0.0, -1.0, 0.0), Vec3::Y).expect("valid plane"));
@@ -65,51 +83,42 @@ pub fn check_closest(f: impl Fn(&Ray, &[Shape], f32, f32) -> Option<(usize, f32)
         ("ray from (0, 0, 1), on the sphere at z = 0, along -Z, t_min = 0.001; sphere at z = -5 too", on_surface, vec![sphere(-5.0, 1.0), sphere(0.0, 1.0)], 1e-3, inf),
     ]
     .into_iter()
-    .map(|(case, ray, shapes, t_min, t_max)| (format!("{case}; t in ({}, {})", t_min.show(), t_max.show()), (ray, shapes, t_min, t_max)))
+    .map(|(case, ray, shapes, t_min, t_max)| {
+        let range = Interval::new(t_min, t_max);
+        let case = format!("{case}; t in ({}, {})", t_min.show(), t_max.show());
+        (case, (ray, shapes, range))
+    })
     .collect();
     run(
         &cases,
-        |(ray, shapes, t_min, t_max)| {
+        |(ray, shapes, range)| {
             let objects = shapes
                 .iter()
                 .map(|shape| Object::diffuse(shape.clone(), Vec3::ONE))
                 .collect();
             // A closest-hit query needs no light.
             let scene = Scene::new(objects, Vec3::ZERO).expect("valid scene");
-            scene
-                .closest(ray, *t_min, *t_max)
-                .map(|(hit, index)| (index, hit.t))
+            scene.closest(ray, *range)
         },
-        |(ray, shapes, t_min, t_max)| f(&ray, &shapes, t_min, t_max),
+        |(ray, shapes, range)| f(&ray, &shapes, range),
         &[
             Mistake {
-                looks_like: &gives(&|(ray, shapes, t_min, t_max): &ClosestArgs| {
-                    Some(
-                        shapes
-                            .iter()
-                            .enumerate()
-                            .find_map(|(i, s)| s.hit(ray, *t_min, *t_max).map(|h| (i, h.t))),
-                    )
+                looks_like: &gives(&|(ray, shapes, range): &ClosestArgs| {
+                    Some(each_hit(ray, shapes, *range).next())
                 }),
                 hint: "that is the first hit in list order, not the closest: keep looking after a hit, \
-                   and shrink t_max to its t so that only nearer hits count",
+                   and shrink range.max to its t so that only nearer hits count",
             },
             Mistake {
-                looks_like: &gives(&|(ray, shapes, t_min, t_max): &ClosestArgs| {
-                    Some(
-                        shapes
-                            .iter()
-                            .enumerate()
-                            .filter_map(|(i, s)| s.hit(ray, *t_min, *t_max).map(|h| (i, h.t)))
-                            .next_back(),
-                    )
+                looks_like: &gives(&|(ray, shapes, range): &ClosestArgs| {
+                    Some(each_hit(ray, shapes, *range).next_back())
                 }),
                 hint: "that is the last hit in list order, not the closest: the last hit found is \
-                       the closest only if you shrink t_max to each hit's t, so that only nearer \
-                       hits count",
+                       the closest only if you shrink range.max to each hit's t, so that only \
+                       nearer hits count",
             },
         ],
-        "test every shape with shape.hit(ray, t_min, t_max); after each hit set t_max = hit.t \
-         and remember its index; return the last one remembered",
+        "test every shape with shape.hit(ray, range); after each hit set range.max = hit.t \
+         and remember it with its index; return the last one remembered",
     )
 }

@@ -4,27 +4,21 @@
 // The parameters are unused until you write the body.
 #![allow(unused_variables)]
 
+use crate::ray::Interval;
 use glam::Vec3;
 
 /// Coding exercise 11.1: the slab test with a precomputed `1/d`. The interval
 /// `[t0, t1]` of the ray `o + t d` inside the closed box `[min, max]`, clipped to
-/// `[t_min, t_max]`, or `None` if it is empty. `inv_d` is `1 / d`, component by
+/// `[range.min, range.max]`, or `None` if it is empty. `inv_d` is `1 / d`, component by
 /// component, computed once per ray by the caller: a zero component of `d` gives an
 /// infinite one here (`1 / 0 = inf`, `1 / -0 = -inf`).
 ///
 /// Per axis i, t_near = (min_i - o_i) * inv_d_i and t_far = (max_i - o_i) * inv_d_i,
-/// swapped if t_near > t_far. Start with [t0, t1] = [t_min, t_max]; raise t0 to
+/// swapped if t_near > t_far. Start with [t0, t1] = [range.min, range.max]; raise t0 to
 /// t_near if t_near > t0, lower t1 to t_far if t_far < t1, and give up when t0 > t1.
 /// The box is closed (a hit whenever t0 <= t1), and a NaN from 0 * inf (a ray lying
 /// in a face's plane) must leave the interval alone.
-pub fn slab(
-    o: Vec3,
-    inv_d: Vec3,
-    min: Vec3,
-    max: Vec3,
-    t_min: f32,
-    t_max: f32,
-) -> Option<(f32, f32)> {
+pub fn slab(o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, range: Interval) -> Option<(f32, f32)> {
     todo!(
         "Coding exercise 11.1 (chapter 11, Speed against accuracy): the slab test \
          with a precomputed 1/d"

@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, run, v};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::Aabb;
 
 /// Coding exercise 11.1.
@@ -25,12 +25,11 @@ struct SlabArgs {
     inv_d: Vec3,
     min: Vec3,
     max: Vec3,
-    t_min: f32,
-    t_max: f32,
+    range: Interval,
 }
 
 /// The answer: the interval `[t0, t1]`, or `None`.
-type Interval = Option<(f32, f32)>;
+type SlabAnswer = Option<(f32, f32)>;
 
 // ANCHOR: solution
 /// A worked solution of exercise 11.1, written as the exercise asks (the book shows
@@ -40,10 +39,9 @@ pub fn slab_solution(
     inv_d: Vec3,
     min: Vec3,
     max: Vec3,
-    t_min: f32,
-    t_max: f32,
+    range: Interval,
 ) -> Option<(f32, f32)> {
-    let (mut t0, mut t1) = (t_min, t_max);
+    let (mut t0, mut t1) = (range.min, range.max);
     for i in 0..3 {
         let mut t_near = (min[i] - o[i]) * inv_d[i];
         let mut t_far = (max[i] - o[i]) * inv_d[i];
@@ -72,7 +70,7 @@ pub fn slab_solution(
 enum Slab {
     /// (min - o) / inv_d: dividing by 1/d instead of multiplying.
     Divides,
-    /// [t0, t1] starts at [-inf, inf], not [t_min, t_max].
+    /// [t0, t1] starts at [-inf, inf], not [range.min, range.max].
     Unclipped,
     /// No swap of t_near and t_far when d_i < 0.
     NoSwap,
@@ -89,11 +87,11 @@ enum Slab {
 }
 
 /// The slab test gone wrong the way `rule` says.
-fn slab_wrongly(rule: Slab, a: &SlabArgs) -> Interval {
+fn slab_wrongly(rule: Slab, a: &SlabArgs) -> SlabAnswer {
     let o = a.ray.origin();
     let (mut t0, mut t1) = match rule {
         Slab::Unclipped => (f32::NEG_INFINITY, f32::INFINITY),
-        _ => (a.t_min, a.t_max),
+        _ => (a.range.min, a.range.max),
     };
     for i in 0..3 {
         let (lo, hi) = (a.min[i] - o[i], a.max[i] - o[i]);
@@ -141,7 +139,7 @@ fn slab_wrongly(rule: Slab, a: &SlabArgs) -> Interval {
 }
 
 /// The same interval, a NaN matching a NaN.
-fn same(a: &Interval, b: &Interval) -> bool {
+fn same(a: &SlabAnswer, b: &SlabAnswer) -> bool {
     let eq = |x: f32, y: f32| x.close(&y) || (x.is_nan() && y.is_nan());
     match (a, b) {
         (None, None) => true,
@@ -150,11 +148,11 @@ fn same(a: &Interval, b: &Interval) -> bool {
     }
 }
 
-/// Checks `slab(o, inv_d, min, max, t_min, t_max)`: the interval of the ray inside
-/// the closed box, clipped to `[t_min, t_max]`, against the crate's [`Aabb::slab`],
+/// Checks `slab(o, inv_d, min, max, range)`: the interval of the ray inside
+/// the closed box, clipped to `[range.min, range.max]`, against the crate's [`Aabb::slab`],
 /// on rays parallel to slabs (`inv_d` infinite), lying in a face's plane (0 * inf =
 /// NaN), starting inside, touching a flat box, and with d < 0 and d = -0.
-pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> Outcome {
+pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer) -> Outcome {
     let cube = (v(-1.0, -1.0, -1.0), v(1.0, 1.0, 1.0));
     let flat = (v(-1.0, 0.0, -1.0), v(1.0, 0.0, 1.0));
     let inf = f32::INFINITY;
@@ -200,7 +198,7 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
             inf,
         ),
         (
-            "t_max = 5 ends inside the box",
+            "range.max = 5 ends inside the box",
             cube,
             v(0.2, 0.3, -5.0),
             v(0.0, 0.0, 1.0),
@@ -208,7 +206,7 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
             5.0,
         ),
         (
-            "t_max = 3 ends before the box",
+            "range.max = 3 ends before the box",
             cube,
             v(0.2, 0.3, -5.0),
             v(0.0, 0.0, 1.0),
@@ -299,8 +297,7 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
                 inv_d,
                 min,
                 max,
-                t_min,
-                t_max,
+                range: Interval::new(t_min, t_max),
             },
         )
     })
@@ -308,13 +305,13 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
     let reference = |a: &SlabArgs| {
         Aabb::new(a.min, a.max)
             .expect("valid box")
-            .slab(&a.ray, a.t_min, a.t_max)
+            .slab(&a.ray, a.range)
     };
     // The mistake that explains a failure gives the received answer on this case and,
     // like the implementation, the right one on every case before it.
     let wrong_first_here = |rule: Slab| {
         let cases = &cases;
-        move |args: &SlabArgs, got: &Interval| {
+        move |args: &SlabArgs, got: &SlabAnswer| {
             same(got, &slab_wrongly(rule, args))
                 && cases
                     .iter()
@@ -332,7 +329,7 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
     run(
         &cases,
         reference,
-        |a| f(a.ray.origin(), a.inv_d, a.min, a.max, a.t_min, a.t_max),
+        |a| f(a.ray.origin(), a.inv_d, a.min, a.max, a.range),
         &[
             Mistake {
                 looks_like: &divides,
@@ -341,8 +338,8 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
             },
             Mistake {
                 looks_like: &unclipped,
-                hint: "start the interval at [t_min, t_max], not at [-inf, inf]: a ray that \
-                       starts inside the box enters it at t_min, not behind its origin",
+                hint: "start the interval at [range.min, range.max], not at [-inf, inf]: a ray that \
+                       starts inside the box enters it at range.min, not behind its origin",
             },
             Mistake {
                 looks_like: &no_swap,
@@ -378,7 +375,7 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, f32, f32) -> Interval) -> O
             },
         ],
         "per axis t_near = (min_i - o_i) * inv_d_i, t_far = (max_i - o_i) * inv_d_i, swapped \
-         if t_near > t_far; start at [t_min, t_max], then `if t_near > t0 { t0 = t_near }`, \
+         if t_near > t_far; start at [range.min, range.max], then `if t_near > t0 { t0 = t_near }`, \
          `if t_far < t1 { t1 = t_far }`, and None as soon as t0 > t1",
     )
 }

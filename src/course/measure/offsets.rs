@@ -20,7 +20,7 @@ use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::offset::{Offset, offset_ray_origin};
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::sampling::{cosine_hemisphere, grid};
 use crate::shapes::{Hit, Plane, Sphere};
 
@@ -92,7 +92,7 @@ pub fn self_hit_rate(
         let target = centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
         let origin = base + Vec3::splat(i as f32 * 1e-3);
         let ray = Ray::new(origin, target - origin)?;
-        let Some(hit) = sphere.hit(&ray, 0.0, f32::INFINITY) else {
+        let Some(hit) = sphere.hit(&ray, Interval::AHEAD) else {
             continue;
         };
         let frame = Basis::around(hit.normal);
@@ -100,7 +100,11 @@ pub fn self_hit_rate(
         for u in grid(bounces) {
             let bounce = Ray::new(start, frame.to_world(cosine_hemisphere(u)))?;
             total += 1;
-            wrong += u64::from(sphere.hit(&bounce, t_min, f32::INFINITY).is_some());
+            wrong += u64::from(
+                sphere
+                    .hit(&bounce, Interval::new(t_min, f32::INFINITY))
+                    .is_some(),
+            );
         }
     }
     Ok(wrong as f64 / total.max(1) as f64)
@@ -168,7 +172,7 @@ pub fn scaled_offset_size(distance: f32) -> Result<f64> {
     let (centre, origin) = Placement::SphereFar.layout(distance);
     let sphere = Sphere::new(centre, 1.0)?;
     let ray = Ray::new(origin, centre - origin)?;
-    let Some(hit) = sphere.hit(&ray, 0.0, f32::INFINITY) else {
+    let Some(hit) = sphere.hit(&ray, Interval::AHEAD) else {
         return Ok(f64::NAN);
     };
     let p = start_point(&ray, &hit, Offset::Scaled);
@@ -182,12 +186,15 @@ pub fn contact_shadow_blocked(offset: Offset) -> Result<bool> {
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     let occluder = Plane::new(Vec3::new(0.0, 5e-5, 0.0), Vec3::Y)?;
     let p = Vec3::new(0.6, 0.0, 0.8);
-    let Some(hit) = floor.hit(&Ray::new(p + 3.0 * Vec3::Y, Vec3::NEG_Y)?, 0.0, 10.0) else {
+    let Some(hit) = floor.hit(
+        &Ray::new(p + 3.0 * Vec3::Y, Vec3::NEG_Y)?,
+        Interval::new(0.0, 10.0),
+    ) else {
         return Ok(false);
     };
     let (start, t_min) = offset.start(hit.point, hit.error, Vec3::Y);
     Ok(occluder
-        .hit(&Ray::new(start, Vec3::Y)?, t_min, 10.0)
+        .hit(&Ray::new(start, Vec3::Y)?, Interval::new(t_min, 10.0))
         .is_some())
 }
 

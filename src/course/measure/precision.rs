@@ -19,6 +19,7 @@
 //! the rounding of a large coordinate; errors are measured as offsets from the
 //! camera, p - e, which f64 subtracts exactly.
 
+use crate::ray::Interval;
 use glam::{DVec3, Vec3};
 
 use super::sphere::{reference, stable_f64};
@@ -92,10 +93,10 @@ pub fn errors_at(distance: f64, n: u32) -> Result<[f64; 3]> {
             let truth = t_ref * d; // the hit point relative to the eye
             let error = |p: DVec3| ((p - e) - truth).length();
             let world = world_sphere
-                .hit(&world_ray, 0.0, f32::INFINITY)
+                .hit(&world_ray, Interval::AHEAD)
                 .map_or(f64::INFINITY, |h| error(h.point.as_dvec3()));
             let relative = local_sphere
-                .hit(&local_ray, 0.0, f32::INFINITY)
+                .hit(&local_ray, Interval::AHEAD)
                 .map_or(f64::INFINITY, |h| error(e + h.point.as_dvec3()));
             let world64 = stable_f64(e, d, c, 1.0).map_or(f64::INFINITY, |(t, _)| error(e + t * d));
             for (sum, err) in sums.iter_mut().zip([world, relative, world64]) {

@@ -15,7 +15,7 @@ use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::raster::Mesh;
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::scene::{Intersect, Object, PointLight, Scene};
 use crate::shapes::{Shape, Triangle};
 
@@ -112,14 +112,14 @@ pub fn rows(scenes: Vec<Scene>, width: u32, height: u32, list_limit: usize) -> R
         let repeats = if primitives < 1000 { 5 } else { 2 };
         let list = (primitives <= list_limit).then(|| {
             seconds_per_frame(&rays, repeats, |r| {
-                scene.closest_hit(r, 0.0, f32::INFINITY).is_some()
+                scene.closest(r, Interval::AHEAD).is_some()
             })
         });
         let start = Instant::now();
         let tree = BvhScene::new(scene);
         let build = start.elapsed().as_secs_f64();
         let (bvh, bvh_hits) = seconds_per_frame(&rays, repeats, |r| {
-            tree.closest_hit(r, 0.0, f32::INFINITY).is_some()
+            tree.closest(r, Interval::AHEAD).is_some()
         });
         rows.push(Row {
             primitives,

@@ -20,7 +20,7 @@ use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::pathtrace::Rng;
-use crate::ray::Ray;
+use crate::ray::{Interval, Ray};
 use crate::shapes::{Aabb, Triangle};
 
 /// The ray/triangle tests on the chart.
@@ -58,13 +58,11 @@ impl TriangleMethod {
     /// Does `ray` hit `tri` at some t > 0?
     pub fn hits(self, tri: &Triangle, ray: &Ray) -> bool {
         match self {
-            TriangleMethod::MollerTrumbore => {
-                tri.moller_trumbore(ray, 0.0, f32::INFINITY).is_some()
-            }
+            TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, Interval::AHEAD).is_some(),
             TriangleMethod::MollerTrumboreEpsilon => {
-                moller_trumbore_epsilon(tri, ray, 0.0, f32::INFINITY).is_some()
+                moller_trumbore_epsilon(tri, ray, Interval::AHEAD).is_some()
             }
-            TriangleMethod::Watertight => tri.watertight(ray, 0.0, f32::INFINITY).is_some(),
+            TriangleMethod::Watertight => tri.watertight(ray, Interval::AHEAD).is_some(),
         }
     }
 }
@@ -77,8 +75,7 @@ impl TriangleMethod {
 pub fn moller_trumbore_epsilon(
     tri: &Triangle,
     ray: &Ray,
-    t_min: f32,
-    t_max: f32,
+    range: Interval,
 ) -> Option<(f32, f32, f32)> {
     let [v0, v1, v2] = tri.vertices();
     let (o, d) = (ray.origin(), ray.direction());
@@ -100,7 +97,7 @@ pub fn moller_trumbore_epsilon(
         return None;
     }
     let t = e2.dot(q) * inv;
-    (t > t_min && t < t_max).then_some((t, b1, b2))
+    (t > range.min && t < range.max).then_some((t, b1, b2))
 }
 
 /// A closed bumpy UV sphere of `rings` x `segments` (the mesh of lesson 07's S4/S5
@@ -235,7 +232,7 @@ fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
         let o = 20.0 * p();
         let [v0, v1, v2] = t.vertices();
         let Ok(r) = Ray::new(o, v0 - o) else { continue };
-        if t.watertight(&r, 0.0, f32::INFINITY).is_none() {
+        if t.watertight(&r, Interval::AHEAD).is_none() {
             continue;
         }
         cases.push((Aabb::new(v0.min(v1).min(v2), v0.max(v1).max(v2))?, r));
@@ -248,11 +245,11 @@ fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
 fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
     let plain = cases
         .iter()
-        .filter(|(b, r)| b.slab(r, 0.0, f32::INFINITY).is_none())
+        .filter(|(b, r)| b.slab(r, Interval::AHEAD).is_none())
         .count();
     let conservative = cases
         .iter()
-        .filter(|(b, r)| b.slab_conservative(r, 0.0, f32::INFINITY).is_none())
+        .filter(|(b, r)| b.slab_conservative(r, Interval::AHEAD).is_none())
         .count();
     (cases.len(), plain, conservative)
 }
@@ -272,13 +269,13 @@ pub fn box_rejects(quality: Quality) -> Result<(usize, usize, usize, f64, f64)> 
             &mut || {
                 ns_per_call(calls, |i| {
                     let (b, r) = &cases[i as usize % n];
-                    b.slab(r, 0.0, f32::INFINITY)
+                    b.slab(r, Interval::AHEAD)
                 })
             },
             &mut || {
                 ns_per_call(calls, |i| {
                     let (b, r) = &cases[i as usize % n];
-                    b.slab_conservative(r, 0.0, f32::INFINITY)
+                    b.slab_conservative(r, Interval::AHEAD)
                 })
             },
         ],

@@ -12,6 +12,7 @@
 //! which the estimator finds only by following the specular bounce, whatever the
 //! strategy; sigma^2 is measured a second time with them left out.
 
+use crate::ray::Interval;
 use glam::{DVec4, Vec2, Vec3};
 use rayon::prelude::*;
 
@@ -152,7 +153,9 @@ pub fn pixel_variance(
         }
         let m = moments / f64::from(spp.max(1));
         let centre = camera.sample_ray(corner + Vec2::splat(0.5), Vec2::splat(0.5));
-        let first = scene.closest(&centre, 0.0, f32::INFINITY).map(|(_, i)| i);
+        let first = scene
+            .closest(&centre, Interval::AHEAD)
+            .map(|found| found.object);
         let variance = |mean: f64, square: f64| (square - mean * mean).max(0.0);
         ((variance(m.x, m.y), variance(m.z, m.w)), first)
     };

@@ -49,12 +49,12 @@ fn bench(c: &mut Criterion) {
             });
         };
     }
-    case!("sphere textbook", |r: &Ray| sphere
+    case!("sphere textbook", |r: &Ray| !sphere
         .roots_textbook(r)
-        .is_some());
-    case!("sphere stable (Hearn-Baker)", |r: &Ray| sphere
+        .is_empty());
+    case!("sphere stable (Hearn-Baker)", |r: &Ray| !sphere
         .roots_stable(r)
-        .is_some());
+        .is_empty());
     case!("sphere hit", |r: &Ray| sphere
         .hit(r, Interval::new(0.0, n))
         .is_some());

@@ -11,16 +11,19 @@
 //! it (`tests/architecture.rs` checks this, and that no two files import each
 //! other):
 //!
-//! 1. `error`: the one typed error, naming the parameter at fault;
+//! 1. `error`, `float`: the one typed error, naming the parameter at fault, and the
+//!    floating-point tools (rounding-error bounds);
 //! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`:
 //!    what the machine can give, the maths of Lectures 3 and 4, writing files;
-//! 3. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
-//! 4. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
+//! 3. `quadratic`: the roots of a t^2 + b t + c = 0, shared by the sphere and the
+//!    quadrics;
+//! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
+//! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
 //!    image in memory;
-//! 5. `bvh`, `lighting`, `render`: the same questions through a tree, the one
+//! 6. `bvh`, `lighting`, `render`: the same questions through a tree, the one
 //!    Lambert formula, one ray per pixel in parallel;
-//! 6. `raycast`, `raster`, `pathtrace`: the three renderers;
-//! 7. `scenes`: the lessons' scenes, shared by several lessons.
+//! 7. `raycast`, `raster`, `pathtrace`: the three renderers;
+//! 8. `scenes`: the lessons' scenes, shared by several lessons.
 //!
 //! ## The course's tools
 //!
@@ -33,12 +36,14 @@ pub mod bvh;
 pub mod camera;
 pub mod course;
 pub mod error;
+pub mod float;
 pub mod framebuffer;
 pub mod lighting;
 pub mod material;
 pub mod offset;
 pub mod output;
 pub mod pathtrace;
+pub mod quadratic;
 pub mod raster;
 pub mod ray;
 pub mod raycast;

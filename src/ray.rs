@@ -103,3 +103,88 @@ impl Interval {
     }
 }
 // ANCHOR_END: interval
+
+// ANCHOR: crossings
+/// Every `t` at which a ray's line crosses a surface: both crossings of a sphere, a
+/// box or a quadric (entry and exit), the one of a plane, triangle or quad; none, one
+/// or two, ascending.
+///
+/// The whole line counts, not only `t > 0`: a negative `t` is behind the ray's origin,
+/// so a ray starting inside a sphere of radius 1 at its centre reports -1 and 1, and a
+/// tangent ray reports its point twice. This is The Ray Tracer Challenge's
+/// `intersect(shape, ray)` (ch. 5), which keeps every crossing so that later chapters
+/// can tell inside from outside; [`crate::shapes::Shape::hit`] picks the nearest one in a range.
+///
+/// Derefs to a slice: `xs.len()`, `xs[0]`, `xs.iter()`.
+#[derive(Clone, Copy, Debug)]
+pub struct Crossings {
+    ts: [f32; 2],
+    len: usize,
+}
+// ANCHOR_END: crossings
+
+impl Crossings {
+    /// No crossing.
+    pub const NONE: Crossings = Crossings {
+        ts: [0.0; 2],
+        len: 0,
+    };
+
+    /// One crossing, or none if `t` is not finite.
+    pub(crate) fn one(t: f32) -> Crossings {
+        Crossings::from_finite([t])
+    }
+
+    /// Two crossings in ascending order; a non-finite one is dropped.
+    pub(crate) fn two(t0: f32, t1: f32) -> Crossings {
+        Crossings::from_finite([t0.min(t1), t0.max(t1)])
+    }
+
+    /// At most two values, in order; the non-finite ones dropped.
+    fn from_finite(ts: impl IntoIterator<Item = f32>) -> Crossings {
+        let mut out = Crossings::NONE;
+        for t in ts.into_iter().filter(|t| t.is_finite()).take(2) {
+            out.ts[out.len] = t;
+            out.len += 1;
+        }
+        out
+    }
+
+    /// The `t` values, ascending.
+    pub fn as_slice(&self) -> &[f32] {
+        &self.ts[..self.len]
+    }
+
+    /// The two crossings (entry, exit) if there are two: a sphere's or a box's.
+    pub fn pair(&self) -> Option<(f32, f32)> {
+        match *self.as_slice() {
+            [t0, t1] => Some((t0, t1)),
+            _ => None,
+        }
+    }
+
+    /// The smallest `t` inside `range`, if any.
+    pub fn first_in(&self, range: Interval) -> Option<f32> {
+        self.iter().copied().find(|&t| range.contains(t))
+    }
+
+    /// Each `t` mapped by `f`, which must keep the order (the instance's division by a
+    /// positive scale does).
+    pub(crate) fn map(self, f: impl Fn(f32) -> f32) -> Crossings {
+        Crossings::from_finite(self.as_slice().iter().map(|&t| f(t)))
+    }
+}
+
+impl std::ops::Deref for Crossings {
+    type Target = [f32];
+
+    fn deref(&self) -> &[f32] {
+        self.as_slice()
+    }
+}
+
+impl PartialEq for Crossings {
+    fn eq(&self, other: &Crossings) -> bool {
+        self.as_slice() == other.as_slice()
+    }
+}

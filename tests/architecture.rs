@@ -10,7 +10,7 @@ use std::path::Path;
 /// The layers of `src/lib.rs`, lowest first. A module may only use modules of
 /// lower layers (and its own submodules).
 const LAYERS: &[&[&str]] = &[
-    &["error"],
+    &["error", "float"],
     &[
         "budget",
         "transform",
@@ -21,6 +21,7 @@ const LAYERS: &[&[&str]] = &[
         "material",
         "output",
     ],
+    &["quadratic"],
     &["camera", "shapes"],
     &["scene", "framebuffer"],
     &["bvh", "lighting", "render"],

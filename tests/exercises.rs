@@ -349,7 +349,7 @@ mod checks {
     fn ray_sphere_roots_accepts_the_reference() {
         let ray = |o, d| Ray::new(o, d).unwrap();
         assert_eq!(
-            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_stable(&ray(o, d))),
+            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_stable(&ray(o, d)).pair()),
             Outcome::Pass
         );
         // Written out independently: the Hearn-Baker discriminant r^2 - |l|^2 (with
@@ -372,13 +372,19 @@ mod checks {
         let ray = |o, d| Ray::new(o, d).unwrap();
         fails_with(
             check_ray_sphere_roots(|o, d, c, r| {
-                sphere(c, r).roots_stable(&ray(o, d)).map(|(a, b)| (b, a))
+                sphere(c, r)
+                    .roots_stable(&ray(o, d))
+                    .pair()
+                    .map(|(a, b)| (b, a))
             }),
             "ascending",
         );
         fails_with(
             check_ray_sphere_roots(|o, d, c, r| {
-                sphere(c, r).roots_stable(&ray(o, d)).map(|(a, b)| (-b, -a))
+                sphere(c, r)
+                    .roots_stable(&ray(o, d))
+                    .pair()
+                    .map(|(a, b)| (-b, -a))
             }),
             "f = o - c",
         );
@@ -386,13 +392,14 @@ mod checks {
             check_ray_sphere_roots(|o, d, c, r| {
                 sphere(c, r)
                     .roots_stable(&ray(o, d))
+                    .pair()
                     .filter(|&(t0, _)| t0 >= 0.0)
             }),
             "negative",
         );
         // The school formula: right near the origin, wrong on the far sphere (S1).
         fails_with(
-            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_textbook(&ray(o, d))),
+            check_ray_sphere_roots(|o, d, c, r| sphere(c, r).roots_textbook(&ray(o, d)).pair()),
             "STABILITY S1",
         );
         let textbook_disc = |o: Vec3, d: Vec3, c: Vec3, r: f32, stable_roots: bool| {

@@ -17,9 +17,9 @@
 use glam::Vec3A;
 
 use crate::bvh::{Bvh, MAX_DEPTH, Node};
+use crate::float::gamma;
 use crate::ray::{Interval, Ray};
 use crate::scene::{Object, SceneHit};
-use crate::shapes::aabb::gamma;
 use crate::shapes::{Candidate, PreparedRay};
 
 /// The relative margin added to the far end of the box tests: 4 gamma(3), about

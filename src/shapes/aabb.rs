@@ -4,22 +4,15 @@
 use glam::Vec3;
 
 use crate::error::{Error, Result, finite3};
-use crate::ray::{Interval, Ray};
-use crate::shapes::{Crossings, Hit, PreparedRay};
+use crate::float::gamma;
+use crate::ray::{Crossings, Interval, Ray};
+use crate::shapes::{Hit, PreparedRay};
 
 /// The box of points with `min <= p <= max` on every axis (a closed set).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb {
     min: Vec3,
     max: Vec3,
-}
-
-/// pbrt's gamma(n) = n eps / (1 - n eps), eps = f32::EPSILON / 2 (the unit roundoff):
-/// a bound on the relative error of n rounded operations (pbrt-v4, section 6.8.1).
-pub const fn gamma(n: u32) -> f32 {
-    let eps = f32::EPSILON / 2.0;
-    let n = n as f32;
-    n * eps / (1.0 - n * eps)
 }
 
 /// The entry and exit of one slab, with the axis index that produced each.

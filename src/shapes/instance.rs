@@ -10,8 +10,8 @@
 use glam::{Mat3, Mat4, Vec3};
 
 use crate::error::{Error, Result};
+use crate::float::gamma;
 use crate::ray::{Interval, Ray};
-use crate::shapes::aabb::gamma;
 use crate::shapes::{Aabb, Crossings, Hit, Shape};
 use crate::transform::Transform;
 

@@ -3,8 +3,8 @@
 use glam::Vec3;
 
 use crate::error::{Result, finite3, unit};
+use crate::float::gamma;
 use crate::ray::{Interval, Ray};
-use crate::shapes::aabb::gamma;
 use crate::shapes::{Crossings, Hit};
 
 /// The infinite plane through `point` with unit `normal`; the normal's side is the

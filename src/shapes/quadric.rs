@@ -15,9 +15,10 @@
 use glam::{DVec3, Mat4, Vec3, Vec4};
 
 use crate::error::{Error, Result, positive, unit};
-use crate::ray::{Interval, Ray};
-use crate::shapes::aabb::gamma;
-use crate::shapes::{Crossings, Hit};
+use crate::float::{difference_of_products, gamma};
+use crate::quadratic;
+use crate::ray::{Crossings, Interval, Ray};
+use crate::shapes::Hit;
 
 /// Largest asymmetry |Q_ij - Q_ji| accepted, relative to the largest |Q_ij|: a few
 /// f32 roundings, so that a matrix computed as M^-T Q M^-1 still passes.
@@ -30,40 +31,6 @@ pub const SYMMETRY_TOLERANCE: f32 = 1e-5;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quadric {
     q: Mat4,
-}
-
-/// The real roots of a t^2 + b t + c = 0 that came out finite, ascending.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Roots {
-    /// No real root, no finite one, or a degenerate line (a = b = 0) that lies
-    /// entirely on the surface or entirely off it.
-    None,
-    /// One root: the linear case a = 0 (the other root is at infinity).
-    One(f32),
-    /// Two roots, ascending; equal for a tangent ray.
-    Two(f32, f32),
-}
-
-impl Roots {
-    /// The finite values among `t0` and `t1`, ascending; NaN and infinities dropped.
-    fn finite(t0: f32, t1: f32) -> Roots {
-        match (t0.is_finite(), t1.is_finite()) {
-            (true, true) => Roots::Two(t0.min(t1), t0.max(t1)),
-            (true, false) => Roots::One(t0),
-            (false, true) => Roots::One(t1),
-            (false, false) => Roots::None,
-        }
-    }
-
-    /// The smallest root with `t_min < t < t_max`, if any.
-    pub fn first_in(&self, range: Interval) -> Option<f32> {
-        let (t0, t1) = match *self {
-            Roots::None => return None,
-            Roots::One(t) => (t, t),
-            Roots::Two(t0, t1) => (t0, t1),
-        };
-        [t0, t1].into_iter().find(|&t| range.contains(t))
-    }
 }
 
 impl Quadric {
@@ -204,56 +171,34 @@ impl Quadric {
     }
 
     // ANCHOR: quadric_roots_textbook
-    /// The roots by the school formula t = (-b +- sqrt(b^2 - 4ac)) / 2a, with no
-    /// special case for a = 0.
+    /// The roots by the school formula ([`quadratic::textbook`]), with no special
+    /// case for a = 0.
     ///
     /// As a -> 0 (a ray nearly parallel to a paraboloid's axis) one root runs off to
     /// infinity and the other, the one that matters, is -b + sqrt(b^2 - 4ac) with
     /// b^2 >> 4ac: two nearly equal numbers subtracted, then divided by the tiny 2a.
     /// In f32 it is tens of percent off at a ~ 1e-8, garbage or missing below, and at
     /// a = 0 it is 0/0 and the hit is lost (STABILITY S9). Kept to show that failure.
-    pub fn roots_textbook(&self, ray: &Ray) -> Roots {
+    pub fn roots_textbook(&self, ray: &Ray) -> Crossings {
         let (a, b, c) = self.coefficients(ray);
-        let disc = b * b - 4.0 * a * c;
-        if disc.is_nan() || disc < 0.0 {
-            return Roots::None;
-        }
-        let s = disc.sqrt();
-        Roots::finite((-b - s) / (2.0 * a), (-b + s) / (2.0 * a))
+        quadratic::textbook(a, b, c)
     }
     // ANCHOR_END: quadric_roots_textbook
 
     // ANCHOR: quadric_roots_stable
-    /// The roots computed so that neither cancels, and a -> 0 needs no special case.
-    ///
-    /// Roots (Numerical Recipes 5.6): q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2 with
-    /// sign(0) = +1, then t = c/q and t = q/a. The sum b + sign(b) sqrt(..) adds two
-    /// numbers of the same sign, so nothing cancels. As a -> 0, q -> -b and
-    /// c/q -> -c/b, the root of the linear equation b t + c = 0; at a = 0 exactly,
-    /// q/a is infinite and dropped, leaving [`Roots::One`].
+    /// The roots computed so that neither cancels, and a -> 0 needs no special case:
+    /// [`quadratic::stable`], whose c/q tends to the root -c/b of the linear equation
+    /// b t + c = 0 as a -> 0, and leaves one root at a = 0.
     ///
     /// The discriminant is formed as a difference of products with one fused
-    /// multiply-add correction (Kahan; pbrt-v4's `DifferenceOfProducts`), accurate to
-    /// a few ulps even when b^2 and 4ac nearly cancel (a grazing ray).
-    ///
-    /// q = 0 means b = 0 and disc = 0: a double root at 0 if a != 0; if a = 0 as well
-    /// the line is on the surface or off it everywhere, and there is no crossing.
-    pub fn roots_stable(&self, ray: &Ray) -> Roots {
+    /// multiply-add correction ([`difference_of_products`]), accurate to a few ulps
+    /// even when b^2 and 4ac nearly cancel (a grazing ray); a tangent ray's, rounded a
+    /// few ulps below 0, counts as 0 ([`quadratic::tangent_as_zero`]).
+    pub fn roots_stable(&self, ray: &Ray) -> Crossings {
         let (a, b, c) = self.coefficients(ray);
-        let disc = tangent_as_zero(difference_of_products(b, b, 4.0 * a, c), b * b, 4.0 * a * c);
-        if disc.is_nan() || disc < 0.0 {
-            return Roots::None;
-        }
-        let sign = if b >= 0.0 { 1.0 } else { -1.0 };
-        let q = -0.5 * (b + sign * disc.sqrt());
-        if q == 0.0 {
-            return if a != 0.0 {
-                Roots::Two(0.0, 0.0)
-            } else {
-                Roots::None
-            };
-        }
-        Roots::finite(c / q, q / a)
+        let disc = difference_of_products(b, b, 4.0 * a, c);
+        let disc = quadratic::tangent_as_zero(disc, b * b, 4.0 * a * c);
+        quadratic::stable(a, b, c, disc)
     }
     // ANCHOR_END: quadric_roots_stable
 
@@ -320,7 +265,7 @@ impl Quadric {
     /// Every crossing of the ray's line, ascending, from [`Quadric::roots_stable`]:
     /// two, one (a ray parallel to a cone's generator or a paraboloid's axis), or none.
     pub fn crossings(&self, ray: &Ray) -> Crossings {
-        self.roots_stable(ray).into()
+        self.roots_stable(ray)
     }
 
     /// The unit normal at the surface point `p`: the normalised gradient, the xyz part
@@ -346,28 +291,4 @@ fn along(a: Vec3, k: f32, w: f32) -> Mat4 {
     }
     m[3][3] = w;
     Mat4::from_cols_array_2d(&m)
-}
-
-/// a b - c d with one rounding error instead of two: the product c d is rounded, its
-/// rounding error recovered exactly with a fused multiply-add and added back
-/// (Kahan, "Further analysis of Kahan's algorithm for the accurate computation of
-/// 2x2 determinants", Jeannerod, Louvet and Muller, Math. Comp. 2013).
-fn difference_of_products(a: f32, b: f32, c: f32, d: f32) -> f32 {
-    let cd = c * d;
-    let err = (-c).mul_add(d, cd);
-    let dop = a.mul_add(b, -cd);
-    dop + err
-}
-
-/// The discriminant `disc` = b^2 - 4ac, set to 0 when it is negative by no more than
-/// the rounding of a, b and c can explain, gamma(8) (b^2 + |4ac|). A tangent ray's
-/// discriminant is exactly 0, but a, b and c are rounded before it is formed: for
-/// The Ray Tracer Challenge's ray along (1, 1, 1) tangent to a cone it comes out a
-/// few ulps below 0 in f32, and the hit would be lost.
-fn tangent_as_zero(disc: f32, b2: f32, four_ac: f32) -> f32 {
-    if disc < 0.0 && -disc <= gamma(8) * (b2 + four_ac.abs()) {
-        0.0
-    } else {
-        disc
-    }
 }

@@ -7,9 +7,10 @@
 use glam::Vec3;
 
 use crate::error::{Result, finite3, positive};
-use crate::ray::{Interval, Ray};
-use crate::shapes::aabb::gamma;
-use crate::shapes::{Aabb, Crossings, Hit, on_ray_error};
+use crate::float::gamma;
+use crate::quadratic;
+use crate::ray::{Crossings, Interval, Ray};
+use crate::shapes::{Aabb, Hit, on_ray_error};
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -49,25 +50,21 @@ impl Sphere {
     }
 
     // ANCHOR: roots_textbook
-    /// Both roots, ascending, by the school formula t = (-b +- sqrt(b^2 - 4ac)) / 2a.
+    /// Both roots, ascending, by the school formula t = (-b +- sqrt(b^2 - 4ac)) / 2a
+    /// ([`quadratic::textbook`]).
     ///
     /// For a small sphere far away b^2 and 4ac are both about 4 D^2 and their
     /// difference, of order r^2, is lost to rounding: in f32 the roots' error grows with
     /// D/r, and from a few thousand radii on hit/miss answers go wrong, about half of
     /// them at D/r = 1e4 (STABILITY S1; lesson 11's chart 1 measures where). Kept to
     /// show that failure.
-    pub fn roots_textbook(&self, ray: &Ray) -> Option<(f32, f32)> {
+    pub fn roots_textbook(&self, ray: &Ray) -> Crossings {
         let f = ray.origin() - self.centre;
         let d = ray.direction();
         let a = d.dot(d);
         let b = 2.0 * f.dot(d);
         let c = f.dot(f) - self.radius * self.radius;
-        let disc = b * b - 4.0 * a * c;
-        if disc.is_nan() || disc < 0.0 {
-            return None;
-        }
-        let s = disc.sqrt();
-        finite_pair((-b - s) / (2.0 * a), (-b + s) / (2.0 * a))
+        quadratic::textbook(a, b, c)
     }
     // ANCHOR_END: roots_textbook
 
@@ -77,10 +74,10 @@ impl Sphere {
     /// Discriminant (Hearn-Baker form, Ray Tracing Gems ch. 7): with l = f - (f.d / a) d,
     /// the vector from the centre to the point of the line nearest it,
     /// b^2 - 4ac = 4a (r^2 - |l|^2); for a unit d this is 4 (r^2 - |f - (f.d) d|^2).
-    /// Roots (Numerical Recipes 5.6): q = -(b + sign(b) sqrt(disc)) / 2 with
-    /// sign(0) = +1, then t = c/q and q/a; no root subtracts nearly equal numbers.
+    /// Roots: [`quadratic::stable`], q = -(b + sign(b) sqrt(disc)) / 2, then t = c/q
+    /// and q/a; no root subtracts nearly equal numbers.
     #[inline]
-    pub fn roots_stable(&self, ray: &Ray) -> Option<(f32, f32)> {
+    pub fn roots_stable(&self, ray: &Ray) -> Crossings {
         let f = ray.origin() - self.centre;
         let d = ray.direction();
         let a = d.dot(d);
@@ -88,17 +85,7 @@ impl Sphere {
         let c = f.dot(f) - self.radius * self.radius;
         let l = f - (half_b / a) * d;
         let delta = self.radius * self.radius - l.dot(l);
-        if delta.is_nan() || delta < 0.0 {
-            return None;
-        }
-        // q = -(b + sign(b) sqrt(4 a delta)) / 2 with b = 2 half_b.
-        let sign = if half_b >= 0.0 { 1.0 } else { -1.0 };
-        let q = -(half_b + sign * (a * delta).sqrt());
-        if q == 0.0 {
-            // b = 0 and disc = 0: a double root at -b / 2a = 0.
-            return Some((0.0, 0.0));
-        }
-        finite_pair(c / q, q / a)
+        quadratic::stable(a, 2.0 * half_b, c, 4.0 * (a * delta))
     }
     // ANCHOR_END: roots_stable
 
@@ -107,12 +94,7 @@ impl Sphere {
     /// that the closest-hit loop asks of a sphere.
     #[inline]
     pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
-        let (t0, t1) = self.roots_stable(ray)?;
-        if range.contains(t0) {
-            Some(t0)
-        } else {
-            range.contains(t1).then_some(t1)
-        }
+        self.roots_stable(ray).first_in(range)
     }
 
     /// The hit record at `t`: the point, its error bound and the outward normal.
@@ -153,27 +135,15 @@ impl Sphere {
     }
     // ANCHOR_END: sphere_hit
 
-    /// Both crossings of the ray's line, ascending, from [`Sphere::roots_stable`]:
-    /// entry and exit, negative behind the origin, equal for a tangent ray.
+    /// Both crossings of the ray's line, ascending: [`Sphere::roots_stable`], entry
+    /// and exit, negative behind the origin, equal for a tangent ray.
     pub fn crossings(&self, ray: &Ray) -> Crossings {
-        match self.roots_stable(ray) {
-            Some((t0, t1)) => Crossings::two(t0, t1),
-            None => Crossings::NONE,
-        }
+        self.roots_stable(ray)
     }
 
     /// The outward unit normal at `p`: (p - c) / r, normalised (p on the surface makes
     /// it unit already); the zero vector at the centre.
     pub fn normal_at(&self, p: Vec3) -> Vec3 {
         ((p - self.centre) / self.radius).normalize_or_zero()
-    }
-}
-
-/// `(t0, t1)` in ascending order, or `None` if either overflowed or is NaN.
-fn finite_pair(t0: f32, t1: f32) -> Option<(f32, f32)> {
-    if t0.is_finite() && t1.is_finite() {
-        Some((t0.min(t1), t0.max(t1)))
-    } else {
-        None
     }
 }

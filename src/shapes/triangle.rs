@@ -4,8 +4,8 @@
 use glam::{DVec3, Vec3};
 
 use crate::error::{Error, Result, finite3};
+use crate::float::gamma;
 use crate::ray::{Interval, Ray};
-use crate::shapes::aabb::gamma;
 use crate::shapes::{Aabb, Crossings, Hit, PreparedRay};
 
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they

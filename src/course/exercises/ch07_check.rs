@@ -147,6 +147,7 @@ pub fn check_ray_sphere_roots(f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, 
         Sphere::new(c, r)
             .expect("valid sphere")
             .roots_stable(&Ray::new(o, d).expect("valid ray"))
+            .pair()
     };
     run(
         &cases,

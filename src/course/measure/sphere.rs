@@ -154,8 +154,8 @@ fn near_root(method: SphereMethod, sphere: &Sphere, ray: &Ray) -> Option<f64> {
     let (o, d) = (ray.origin().as_dvec3(), ray.direction().as_dvec3());
     let (c, r) = (sphere.centre().as_dvec3(), f64::from(sphere.radius()));
     match method {
-        SphereMethod::TextbookF32 => sphere.roots_textbook(ray).map(|(t, _)| f64::from(t)),
-        SphereMethod::StableF32 => sphere.roots_stable(ray).map(|(t, _)| f64::from(t)),
+        SphereMethod::TextbookF32 => sphere.roots_textbook(ray).first().map(|&t| f64::from(t)),
+        SphereMethod::StableF32 => sphere.roots_stable(ray).first().map(|&t| f64::from(t)),
         SphereMethod::TextbookF64 => textbook_f64(o, d, c, r).map(|(t, _)| t),
         SphereMethod::StableF64 => stable_f64(o, d, c, r).map(|(t, _)| t),
     }

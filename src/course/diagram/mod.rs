@@ -19,7 +19,7 @@ use crate::output::write_png_rgba;
 use crate::ray::Ray;
 
 /// The embedded font (DejaVu Sans; licence in `assets/fonts/LICENSE-DejaVu.txt`).
-pub const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+pub const FONT_BYTES: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
 
 fn font() -> Option<&'static FontRef<'static>> {
     static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();

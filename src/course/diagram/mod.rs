@@ -5,10 +5,12 @@
 //! Coordinates are diagram units (y up); one uniform scale maps them to pixels, so
 //! circles stay round and right angles stay right.
 
-use std::path::Path;
-use std::sync::OnceLock;
+mod glyphs;
 
-use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
+pub use glyphs::FONT_BYTES;
+
+use std::path::Path;
+
 use glam::{Vec2, Vec3};
 use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, PremultipliedColorU8, Stroke, Transform};
 
@@ -17,15 +19,7 @@ use crate::course::report::num;
 use crate::error::{Error, Result, finite};
 use crate::output::write_png_rgba;
 use crate::ray::Ray;
-
-/// The embedded font (DejaVu Sans; licence in `assets/fonts/LICENSE-DejaVu.txt`).
-pub const FONT_BYTES: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
-
-fn font() -> Option<&'static FontRef<'static>> {
-    static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
-    FONT.get_or_init(|| FontRef::try_from_slice(FONT_BYTES).ok())
-        .as_ref()
-}
+use glyphs::{draw_label, glyphs, layout_size};
 
 /// An opaque colour.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -630,13 +624,7 @@ impl Diagram {
                 .segments
                 .iter()
                 .any(|g| l.bounds.touches(g.a, g.b, g.half_width));
-            if over_line {
-                for (dx, dy) in HALO {
-                    let at = l.at + Vec2::new(dx, dy);
-                    draw_text(&mut pixmap, at, &l.text, l.size, Rgb(255, 255, 255));
-                }
-            }
-            draw_text(&mut pixmap, l.at, &l.text, l.size, l.color);
+            draw_label(&mut pixmap, l.at, &l.text, l.size, l.color, over_line);
         }
         pixmap
     }
@@ -659,30 +647,11 @@ impl Diagram {
     }
 }
 
-/// The offsets a label's white halo is drawn at, 2 pixels around it.
-const HALO: [(f32, f32); 12] = [
-    (-2.0, 0.0),
-    (2.0, 0.0),
-    (0.0, -2.0),
-    (0.0, 2.0),
-    (-1.5, -1.5),
-    (1.5, -1.5),
-    (-1.5, 1.5),
-    (1.5, 1.5),
-    (-1.0, 0.0),
-    (1.0, 0.0),
-    (0.0, -1.0),
-    (0.0, 1.0),
-];
-
 /// Where the text's layout box starts (top-left) relative to its point.
 fn offset(s: &str, size: f32, place: Place) -> Vec2 {
-    let Some(font) = font() else {
+    let Some((width, height)) = layout_size(s, size) else {
         return Vec2::ZERO;
     };
-    let scaled = font.as_scaled(PxScale::from(size));
-    let width: f32 = s.chars().map(|c| scaled.h_advance(font.glyph_id(c))).sum();
-    let height = scaled.ascent() - scaled.descent();
     let (dx, dy) = match place {
         Place::Right => (GAP, -height * 0.5),
         Place::Left => (-GAP - width, -height * 0.5),
@@ -695,22 +664,6 @@ fn offset(s: &str, size: f32, place: Place) -> Vec2 {
         Place::BelowLeft => (-GAP - width, GAP),
     };
     Vec2::new(dx, dy)
-}
-
-/// Calls `each` with every glyph outline of `s` set from the layout box's top-left
-/// corner `top_left`.
-fn glyphs(top_left: Vec2, s: &str, size: f32, mut each: impl FnMut(ab_glyph::OutlinedGlyph)) {
-    let Some(font) = font() else { return };
-    let scaled = font.as_scaled(PxScale::from(size));
-    let mut caret = Vec2::new(top_left.x, top_left.y + scaled.ascent());
-    for c in s.chars() {
-        let id = font.glyph_id(c);
-        let glyph = id.with_scale_and_position(size, ab_glyph::point(caret.x, caret.y));
-        caret.x += scaled.h_advance(id);
-        if let Some(outline) = font.outline_glyph(glyph) {
-            each(outline);
-        }
-    }
 }
 
 /// The box the ink of `s` covers when placed at `at` as `place` says; `None` for
@@ -729,37 +682,6 @@ fn ink_box(at: Vec2, s: &str, size: f32, place: Place) -> Option<PxBox> {
         });
     });
     b
-}
-
-/// Sets `s` with its layout box's top-left corner at `top_left`.
-fn draw_text(pixmap: &mut Pixmap, top_left: Vec2, s: &str, size: f32, color: Rgb) {
-    glyphs(top_left, s, size, |outline| {
-        let bounds = outline.px_bounds();
-        outline.draw(|gx, gy, coverage| {
-            let x = bounds.min.x as i64 + gx as i64;
-            let y = bounds.min.y as i64 + gy as i64;
-            blend(pixmap, x, y, color, coverage);
-        });
-    });
-}
-
-fn blend(pixmap: &mut Pixmap, x: i64, y: i64, color: Rgb, coverage: f32) {
-    let (w, h) = (pixmap.width() as i64, pixmap.height() as i64);
-    if x < 0 || y < 0 || x >= w || y >= h {
-        return;
-    }
-    let pixel = &mut pixmap.pixels_mut()[(y * w + x) as usize];
-    let a = coverage.clamp(0.0, 1.0);
-    let mix = |src: u8, dst: u8| (src as f32 * a + dst as f32 * (1.0 - a) + 0.5) as u8;
-    let blended = PremultipliedColorU8::from_rgba(
-        mix(color.0, pixel.red()),
-        mix(color.1, pixel.green()),
-        mix(color.2, pixel.blue()),
-        mix(255, pixel.alpha()),
-    );
-    if let Some(b) = blended {
-        *pixel = b;
-    }
 }
 
 /// The most ticks an axis gets before [`tick_step`] widens the step.

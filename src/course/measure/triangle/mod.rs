@@ -11,6 +11,12 @@
 //! The methods are Moller-Trumbore, the watertight test of Woop, Benthin and Wald,
 //! and, as a comparison written here, Moller-Trumbore with its edge tests widened by
 //! a small epsilon (the usual patch for its leaks).
+//!
+//! This file measures the chart; `boxes.rs` measures the S6 finding below it.
+
+mod boxes;
+
+pub use boxes::box_rejects;
 
 use glam::Vec3;
 
@@ -19,9 +25,9 @@ use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
-use crate::pathtrace::Rng;
 use crate::ray::Ray;
-use crate::shapes::{Aabb, Triangle};
+use crate::shapes::Triangle;
+use boxes::{box_cases, box_counts};
 
 /// The ray/triangle tests on the chart.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -219,71 +225,6 @@ fn times(tris: &[Triangle], rays: &[Ray], quality: Quality) -> [f64; 3] {
             &mut || per_test(TriangleMethod::Watertight),
         ],
     )
-}
-
-/// STABILITY S6: rays aimed exactly at a vertex of random triangles, kept when the
-/// watertight test hits, each with the triangle's f32 bounding box.
-fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
-    let mut rng = Rng::new(12345, 6);
-    let mut p =
-        || 10.0 * Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - Vec3::splat(5.0);
-    let mut cases = Vec::new();
-    for _ in 0..quality.pick(20_000, 200_000) {
-        let Ok(t) = Triangle::new(p(), p(), p()) else {
-            continue;
-        };
-        let o = 20.0 * p();
-        let [v0, v1, v2] = t.vertices();
-        let Ok(r) = Ray::new(o, v0 - o) else { continue };
-        if t.watertight(&r, 0.0, f32::INFINITY).is_none() {
-            continue;
-        }
-        cases.push((Aabb::new(v0.min(v1).min(v2), v0.max(v1).max(v2))?, r));
-    }
-    Ok(cases)
-}
-
-/// How often the plain and the conservative slab test reject the boxes of `cases`:
-/// (rays, plain rejects, conservative rejects).
-fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
-    let plain = cases
-        .iter()
-        .filter(|(b, r)| b.slab(r, 0.0, f32::INFINITY).is_none())
-        .count();
-    let conservative = cases
-        .iter()
-        .filter(|(b, r)| b.slab_conservative(r, 0.0, f32::INFINITY).is_none())
-        .count();
-    (cases.len(), plain, conservative)
-}
-
-/// STABILITY S6: rays aimed exactly at a vertex of random triangles, kept when the
-/// watertight test hits; how often the plain and the conservative slab test on the
-/// triangle's f32 bounding box reject it, and their times per test:
-/// (rays, plain rejects, conservative rejects, plain ns, conservative ns).
-pub fn box_rejects(quality: Quality) -> Result<(usize, usize, usize, f64, f64)> {
-    let cases = box_cases(quality)?;
-    let (n_cases, plain, conservative) = box_counts(&cases);
-    let n = cases.len().max(1);
-    let calls = quality.pick(300_000, 3_000_000);
-    let [plain_ns, conservative_ns] = fastest(
-        quality.pick(5, 9),
-        [
-            &mut || {
-                ns_per_call(calls, |i| {
-                    let (b, r) = &cases[i as usize % n];
-                    b.slab(r, 0.0, f32::INFINITY)
-                })
-            },
-            &mut || {
-                ns_per_call(calls, |i| {
-                    let (b, r) = &cases[i as usize % n];
-                    b.slab_conservative(r, 0.0, f32::INFINITY)
-                })
-            },
-        ],
-    );
-    Ok((n_cases, plain, conservative, plain_ns, conservative_ns))
 }
 
 /// `k` of `n` as "k (p%)".

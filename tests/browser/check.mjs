@@ -93,7 +93,7 @@ function sourceHasMath(file) {
 // its size in the figure times the figure's rendered width over its natural
 // width. The sizes in the figures' own pixels (tests/figures.rs checks these
 // constants against the code that draws them):
-// - diagrams (src/course/diagram.rs): tick values, 0.8 of LABEL_SIZE = 15 px;
+// - diagrams (src/course/diagram/axes.rs): tick values, 0.8 of LABEL_SIZE = 15 px;
 // - strips of renders (book/figures/src/lesson09.rs): captions of CAPTION_SIZE;
 // - renders: no text at all;
 // - SVG charts (src/course/chart.rs): read from the SVG's own font-size attributes.

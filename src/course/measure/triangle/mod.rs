@@ -11,17 +11,25 @@
 //! The methods are Moller-Trumbore, the watertight test of Woop, Benthin and Wald,
 //! and, as a comparison written here, Moller-Trumbore with its edge tests widened by
 //! a small epsilon (the usual patch for its leaks).
+//!
+//! This file measures the chart; `boxes.rs` measures the S6 finding below it, and
+//! `tables.rs` builds the tables the book quotes from both.
+
+mod boxes;
+mod tables;
+
+pub use boxes::box_rejects;
+pub use tables::exact_quoted;
 
 use glam::Vec3;
 
 use super::sphere::fastest;
 use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale};
-use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
-use crate::pathtrace::Rng;
 use crate::ray::{Interval, Ray};
-use crate::shapes::{Aabb, Triangle};
+use crate::shapes::Triangle;
+use tables::quoted_times;
 
 /// The ray/triangle tests on the chart.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -97,7 +105,7 @@ pub fn moller_trumbore_epsilon(
         return None;
     }
     let t = e2.dot(q) * inv;
-    (t > range.min && t < range.max).then_some((t, b1, b2))
+    range.contains(t).then_some((t, b1, b2))
 }
 
 /// A closed bumpy UV sphere of `rings` x `segments` (the mesh of lesson 07's S4/S5
@@ -216,170 +224,6 @@ fn times(tris: &[Triangle], rays: &[Ray], quality: Quality) -> [f64; 3] {
             &mut || per_test(TriangleMethod::Watertight),
         ],
     )
-}
-
-/// STABILITY S6: rays aimed exactly at a vertex of random triangles, kept when the
-/// watertight test hits, each with the triangle's f32 bounding box.
-fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
-    let mut rng = Rng::new(12345, 6);
-    let mut p =
-        || 10.0 * Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - Vec3::splat(5.0);
-    let mut cases = Vec::new();
-    for _ in 0..quality.pick(20_000, 200_000) {
-        let Ok(t) = Triangle::new(p(), p(), p()) else {
-            continue;
-        };
-        let o = 20.0 * p();
-        let [v0, v1, v2] = t.vertices();
-        let Ok(r) = Ray::new(o, v0 - o) else { continue };
-        if t.watertight(&r, Interval::AHEAD).is_none() {
-            continue;
-        }
-        cases.push((Aabb::new(v0.min(v1).min(v2), v0.max(v1).max(v2))?, r));
-    }
-    Ok(cases)
-}
-
-/// How often the plain and the conservative slab test reject the boxes of `cases`:
-/// (rays, plain rejects, conservative rejects).
-fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
-    let plain = cases
-        .iter()
-        .filter(|(b, r)| b.slab(r, Interval::AHEAD).is_none())
-        .count();
-    let conservative = cases
-        .iter()
-        .filter(|(b, r)| b.slab_conservative(r, Interval::AHEAD).is_none())
-        .count();
-    (cases.len(), plain, conservative)
-}
-
-/// STABILITY S6: rays aimed exactly at a vertex of random triangles, kept when the
-/// watertight test hits; how often the plain and the conservative slab test on the
-/// triangle's f32 bounding box reject it, and their times per test:
-/// (rays, plain rejects, conservative rejects, plain ns, conservative ns).
-pub fn box_rejects(quality: Quality) -> Result<(usize, usize, usize, f64, f64)> {
-    let cases = box_cases(quality)?;
-    let (n_cases, plain, conservative) = box_counts(&cases);
-    let n = cases.len().max(1);
-    let calls = quality.pick(300_000, 3_000_000);
-    let [plain_ns, conservative_ns] = fastest(
-        quality.pick(5, 9),
-        [
-            &mut || {
-                ns_per_call(calls, |i| {
-                    let (b, r) = &cases[i as usize % n];
-                    b.slab(r, Interval::AHEAD)
-                })
-            },
-            &mut || {
-                ns_per_call(calls, |i| {
-                    let (b, r) = &cases[i as usize % n];
-                    b.slab_conservative(r, Interval::AHEAD)
-                })
-            },
-        ],
-    );
-    Ok((n_cases, plain, conservative, plain_ns, conservative_ns))
-}
-
-/// `k` of `n` as "k (p%)".
-fn share(k: usize, n: usize) -> String {
-    format!("{k} ({:.2}%)", 100.0 * k as f64 / n.max(1) as f64)
-}
-
-/// The exact numbers the book quotes from chart 2, measured at `quality` (no
-/// timing): table `leaks`, each method's leaks on the rays at the lesson mesh's
-/// vertices (S4), at its edge midpoints (S5), on the chart's whole ray set and on
-/// the mesh of slivers; table `boxes`, the S6 rejections of both slab tests.
-pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
-    let (vertices, _) = bumpy_sphere(MESH.0, MESH.1);
-    let (tris, midpoint_rays) = mesh_and_rays(MESH, 1)?;
-    let (at_vertices, at_midpoints) = midpoint_rays.split_at(vertices.len());
-    let (_, chart_rays) = mesh_and_rays(MESH, per_edge(quality))?;
-    let (slivers, sliver_rays) = mesh_and_rays(SLIVERS, 1)?;
-    let mut leaks_table = Quoted::new(
-        "leaks",
-        false,
-        &[
-            "rays aimed at",
-            "rays",
-            "Moller-Trumbore",
-            "widened by 1e-6",
-            "watertight",
-        ],
-    );
-    let sets: [(String, &[Triangle], &[Ray]); 4] = [
-        ("vertices (S4)".into(), &tris, at_vertices),
-        ("edge midpoints (S5)".into(), &tris, at_midpoints),
-        (
-            format!("vertices + {} per edge", per_edge(quality)),
-            &tris,
-            &chart_rays,
-        ),
-        ("a mesh of slivers".into(), &slivers, &sliver_rays),
-    ];
-    for (name, tris, rays) in sets {
-        let mut cells = vec![name, rays.len().to_string()];
-        cells.extend(TriangleMethod::ALL.map(|m| share(leaks(m, tris, rays), rays.len())));
-        leaks_table = leaks_table.row(cells);
-    }
-    let (cases, plain, conservative) = box_counts(&box_cases(quality)?);
-    let boxes = Quoted::new(
-        "boxes",
-        false,
-        &["slab test", "rays at a vertex", "rejected"],
-    )
-    .row(vec!["plain".into(), cases.to_string(), share(plain, cases)])
-    .row(vec![
-        "conservative".into(),
-        cases.to_string(),
-        share(conservative, cases),
-    ]);
-    Ok(BookNumbers::default().table(leaks_table).table(boxes))
-}
-
-/// The times the book quotes from chart 2: table `times` (each triangle test, and
-/// both slab tests, with the ratio to the naive one), and the rows `cost` for the
-/// cost table of "Where methods fail".
-fn quoted_times(ns: [f64; 3], plain_ns: f64, conservative_ns: f64) -> BookNumbers {
-    let mut times = Quoted::new("times", true, &["test", "ns per test", "x the naive test"]);
-    for (m, t) in TriangleMethod::ALL.iter().zip(ns) {
-        times = times.row(vec![
-            m.name().to_string(),
-            format!("{t:.1}"),
-            format!("{:.2}", t / ns[0]),
-        ]);
-    }
-    times = times
-        .row(vec![
-            "plain slab (S6)".into(),
-            format!("{plain_ns:.1}"),
-            "1.00".into(),
-        ])
-        .row(vec![
-            "conservative slab (S6)".into(),
-            format!("{conservative_ns:.1}"),
-            format!("{:.2}", conservative_ns / plain_ns),
-        ]);
-    let cost = Quoted::new(
-        "cost",
-        true,
-        &["case", "naive / robust", "ns per test", "robust / naive"],
-    )
-    .row(vec![
-        "S4, S5".into(),
-        "Moller-Trumbore / watertight".into(),
-        format!("{:.1} / {:.1}", ns[0], ns[2]),
-        format!("{:.2}x", ns[2] / ns[0]),
-    ])
-    .row(vec![
-        "S6".into(),
-        "plain / conservative slab".into(),
-        format!("{plain_ns:.1} / {conservative_ns:.1}"),
-        format!("{:.2}x", conservative_ns / plain_ns),
-    ]);
-    BookNumbers::default().table(times).table(cost)
 }
 
 /// The methods not beaten by another on both counts (faster and leaking no more, or

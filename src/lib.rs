@@ -12,8 +12,9 @@
 //! other):
 //!
 //! 1. `error`: the one typed error, naming the parameter at fault;
-//! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`:
-//!    what the machine can give, the maths of Lectures 3 and 4, writing files;
+//! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`,
+//!    `progress`: what the machine can give, the maths of Lectures 3 and 4, writing
+//!    files, progress bars;
 //! 3. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
 //! 4. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
 //!    image in memory;
@@ -39,6 +40,7 @@ pub mod material;
 pub mod offset;
 pub mod output;
 pub mod pathtrace;
+pub mod progress;
 pub mod raster;
 pub mod ray;
 pub mod raycast;

@@ -12,6 +12,7 @@
 pub mod clip;
 pub mod compare;
 pub mod mesh;
+pub mod obj;
 pub mod pipeline;
 pub mod rasterize;
 pub mod shade;
@@ -24,6 +25,7 @@ pub mod vertex;
 pub use clip::clip_triangle;
 pub use compare::{Agreement, Reference, TOLERANCE, agreement, difference, reference};
 pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
+pub use obj::{FaceCounts, LoadedMesh, fan};
 pub use pipeline::{DepthRange, Pipeline};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
 pub use shade::{Shading, Viewer, shade};

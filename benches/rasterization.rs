@@ -50,7 +50,9 @@ fn camera() -> Camera {
 }
 
 fn torus() -> Mesh {
-    Mesh::from_obj(std::path::Path::new(TORUS_OBJ)).expect("the lesson's torus")
+    Mesh::from_obj(std::path::Path::new(TORUS_OBJ))
+        .expect("the lesson's torus")
+        .mesh
 }
 
 /// The mesh as a list of triangle primitives, for the ray caster.

@@ -7,6 +7,8 @@
 //!
 //!     cargo run --release --example 09_rasterization
 //!     cargo run --release --example 09_rasterization -- --width 1920 --height 1080
+//!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj
+//!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj --subdivide 4
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -20,7 +22,8 @@ use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, di
 use render_lessons::raster::{check_segments, floor_settings, point_light, rasterize};
 use render_lessons::raster::{reference, tessellate};
 use render_lessons::scenes::{LESSON08_OBJECTS, TORUS_OBJ, lesson08, lesson08_pinhole};
-use render_lessons::scenes::{lesson08_shadows, lesson09_mesh, lesson09_mesh_scene};
+use render_lessons::scenes::{LessonMesh, MeshScene, lesson08_shadows};
+use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
 use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, offset::Offset};
 use render_lessons::{raycast::lit, render::render, scene::Scene};
 
@@ -40,9 +43,14 @@ struct Args {
     /// The shadow map's bias, in texel footprints.
     #[arg(long, default_value = "1", value_parser = parse_finite)]
     bias: f32,
-    /// The mesh drawn by both renderers (a Wavefront OBJ file of triangles).
+    /// The mesh drawn by both renderers (a Wavefront OBJ file; quads and larger
+    /// faces are split into triangles).
     #[arg(long, default_value = TORUS_OBJ)]
     mesh: PathBuf,
+    /// Split every triangle of the mesh in four, this many times (the teapot: 4
+    /// makes a million triangles).
+    #[arg(long, default_value_t = 0)]
+    subdivide: u32,
     #[command(flatten)]
     output: Output,
 }
@@ -62,7 +70,8 @@ pub struct Lesson {
 // ANCHOR: images
 /// Renders everything: the ray-cast reference, the scene tessellated with `segments`
 /// and rasterized (per pixel, per vertex), the shadows both ways (the map with its
-/// bias, none, and 50 times too much), and the floor with `mesh`, both ways.
+/// bias, none, and 50 times too much), and the floor with `mesh`, both ways (the
+/// ray caster goes through a BVH when the mesh is too big to test every triangle).
 pub fn images(
     scene: &Scene,
     camera: &Camera,
@@ -80,7 +89,12 @@ pub fn images(
     let cast = |scene| reference(scene, camera, threads);
     let traced = || render(camera, threads, |r| lit(scene, r, Offset::Scaled));
     let mapped = |bias| draw(&instances, PerPixel, Some(shadows.with_bias(bias)));
-    let meshed = lesson09_mesh_scene(scene, mesh)?;
+    let pixels = u64::from(camera.film().width()) * u64::from(camera.film().height());
+    let meshed = MeshScene::new(lesson09_mesh_scene(scene, mesh)?, pixels);
+    let mesh_cast = match meshed {
+        MeshScene::List(_) => "ray cast, floor + mesh",
+        MeshScene::Tree(_) => "ray cast through a BVH, floor + mesh",
+    };
     let floor_and_mesh = [instances[0].clone(), mesh.clone()];
     let mut t = Timings::default();
     let ray_cast = t.time("ray cast, analytic scene", || cast(scene))?;
@@ -90,7 +104,8 @@ pub fn images(
     })?;
     let shadow_ray = t.time("ray cast with shadow rays", traced)?;
     let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
-    let mesh_ray_cast = t.time("ray cast, floor + mesh", || cast(&meshed))?;
+    let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera, threads))?;
+    drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes
     let mesh_raster = t.time("rasterized, floor + mesh", || {
         draw(&floor_and_mesh, PerPixel, None)
     })?;
@@ -135,7 +150,7 @@ pub fn images(
 pub fn numbers(
     scene: &Scene,
     segments: u32,
-    (mesh, file): (&Model, &str),
+    (mesh, file): (&LessonMesh, &str),
     lesson: &Lesson,
 ) -> Result<String> {
     let columns = ["object", "vertices", "triangles"];
@@ -147,12 +162,17 @@ pub fn numbers(
         counts.row(vec![name.to_string(), v.to_string(), t.to_string()]);
     }
     counts.row(vec!["all".into(), String::new(), total.to_string()]);
-    let (v, t) = (mesh.mesh.positions.len(), mesh.mesh.triangles.len());
-    let skipped = match mesh.mesh.degenerate() {
+    let m = &mesh.model.mesh;
+    let (v, t) = (m.positions.len(), m.triangles.len());
+    let split = match mesh.subdivisions {
         0 => String::new(),
-        n => format!("; {n} degenerate, left out of the ray cast"),
+        n => format!(" subdivided {n} times"),
     };
-    let name = format!("mesh ({file}, flat{skipped})");
+    let read = match mesh.counts.to_string() {
+        c if c.is_empty() => c,
+        c => format!("; {c}"),
+    };
+    let name = format!("mesh ({file}{split}, flat{read})");
     counts.row(vec![name, v.to_string(), t.to_string()]);
     let (width, height) = (lesson.images[0].1.width(), lesson.images[0].1.height());
     let tolerance = num(f64::from(TOLERANCE * 255.0), 0);
@@ -184,8 +204,9 @@ fn main() -> ExitCode {
         let camera = lesson08_pinhole(width, height)?;
         let shadows = lesson08_shadows(args.shadow_map_size, args.bias);
         check_segments(&scene, args.segments)?;
-        let mesh = lesson09_mesh(&args.mesh).map_err(lesson::flag("--mesh"))?;
-        let i = images(&scene, &camera, args.segments, shadows, &mesh, threads)?;
+        let mesh = lesson09_mesh(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
+        let model = &mesh.model;
+        let i = images(&scene, &camera, args.segments, shadows, model, threads)?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
         lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &i)?);
         lesson::print(&i.times.table().to_string()); // the terminal only

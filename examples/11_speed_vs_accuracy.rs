@@ -11,25 +11,32 @@
 //!     cargo run --release --example 11_speed_vs_accuracy -- --only 11_1_sphere
 //!     cargo run --release --example 11_speed_vs_accuracy -- --full --out chapters/figures
 //!                                                # refresh the book's charts and numbers
+//!     cargo run --release --example 11_speed_vs_accuracy -- --mesh assets/meshes/teapot.obj --subdivide 4
+//!                                                # the BVH on a million triangles
 
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
 use render_lessons::Result;
+use render_lessons::bvh::BvhScene;
 use render_lessons::course::chart::{Chart, Scale};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::lessons::{best_ms, lessons_quoted};
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
-use render_lessons::course::report::Run;
+use render_lessons::course::report::{Run, Table, Timings, num};
 use render_lessons::error::Error;
+use render_lessons::framebuffer::Framebuffer;
 use render_lessons::offset::Offset;
 use render_lessons::output::write_atomically;
+use render_lessons::progress;
 use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, reference};
 use render_lessons::raster::{TOLERANCE, point_light, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows};
+use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
 
 /// The lesson's parameters.
 #[derive(Parser, Debug)]
@@ -43,6 +50,14 @@ pub struct Args {
     /// match every chart.
     #[arg(long, value_parser = clap::builder::NonEmptyStringValueParser::new())]
     pub only: Option<String>,
+    /// Instead of the charts: time the BVH on this mesh (a Wavefront OBJ file) in
+    /// lesson 09's scene: read it, build the tree, ray cast 480 x 270 through it.
+    #[arg(long, conflicts_with_all = ["full", "only"])]
+    pub mesh: Option<PathBuf>,
+    /// With --mesh: split every triangle in four, this many times (the teapot: 4
+    /// makes a million triangles).
+    #[arg(long)]
+    pub subdivide: Option<u32>,
     #[command(flatten)]
     pub output: Output,
 }
@@ -50,6 +65,17 @@ pub struct Args {
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
+        if let Some(path) = &args.mesh {
+            let (text, image) = big_mesh(path, args.subdivide.unwrap_or(0))?;
+            lesson::print(&text);
+            return args.output.image("11_mesh.png", &image);
+        }
+        if args.subdivide.is_some() {
+            return Err(Error::Invalid {
+                param: "subdivide",
+                reason: "needs --mesh: it splits that mesh's triangles",
+            });
+        }
         let quality = if args.full {
             Quality::Full
         } else {
@@ -176,3 +202,42 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     })
 }
 // ANCHOR_END: lessons
+
+// ANCHOR: big_mesh
+/// The BVH on a mesh of any size, in lesson 09's scene (the floor, and the mesh of
+/// `path` split `subdivisions` times standing on it): read the file, build the
+/// tree, ray cast 480 x 270 with shadow rays through it, each step timed. Returns
+/// the tables to print and the image.
+pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)> {
+    let scene = lesson08(glam::Vec3::ZERO)?;
+    let camera = lesson08_pinhole(480, 270)?;
+    let mut t = Timings::default();
+    let read = || lesson09_mesh(path, subdivisions).map_err(lesson::flag("--mesh"));
+    let mesh = t.time("read the OBJ file (and subdivide)", read)?;
+    let list = lesson09_mesh_scene(&scene, &mesh.model)?;
+    let primitives = list.objects().len();
+    let build = || BvhScene::new(list);
+    let message = format!("building a BVH over {primitives} primitives");
+    let tree = t.time("build the BVH", || progress::spinner(message, build));
+    let image = t.time("ray cast with shadow rays", || {
+        render(&camera, None, |r| lit(&tree, r, Offset::Scaled))
+    })?;
+    let file = path.file_name().unwrap_or_default().to_string_lossy();
+    let title = format!("{file}, split in four {subdivisions} times, and its tree");
+    let mut sizes = Table::new(&title, &["what", "count"]);
+    let counts = mesh.counts;
+    for (what, count) in [
+        ("triangles", mesh.model.mesh.triangles.len()),
+        ("faces triangulated", counts.faces_triangulated),
+        ("degenerate, skipped", counts.skipped_degenerate),
+        ("BVH nodes", tree.bvh().nodes().len()),
+    ] {
+        sizes.row(vec![what.to_string(), count.to_string()]);
+    }
+    let rays = f64::from(camera.film().width()) * f64::from(camera.film().height());
+    let seconds = t.0.last().map_or(0.0, |&(_, s)| s).max(1e-9);
+    let mrays = num(rays / seconds / 1e6, 2);
+    let rate = format!("{mrays} million primary rays a second");
+    Ok((format!("{sizes}\n{}{rate}\n", t.table()), image))
+}
+// ANCHOR_END: big_mesh

@@ -13,8 +13,9 @@
 //!
 //! 1. `error`, `float`: the one typed error, naming the parameter at fault, and the
 //!    floating-point tools (rounding-error bounds);
-//! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`:
-//!    what the machine can give, the maths of Lectures 3 and 4, writing files;
+//! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`,
+//!    `progress`: what the machine can give, the maths of Lectures 3 and 4, writing
+//!    files, progress bars;
 //! 3. `quadratic`: the roots of a t^2 + b t + c = 0, shared by the sphere and the
 //!    quadrics;
 //! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
@@ -43,6 +44,7 @@ pub mod material;
 pub mod offset;
 pub mod output;
 pub mod pathtrace;
+pub mod progress;
 pub mod quadratic;
 pub mod raster;
 pub mod ray;

@@ -21,7 +21,7 @@ use render_lessons::raster::{
 use render_lessons::raster::{TOLERANCE, agreement, reference};
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::{
-    TORUS_OBJ, lesson08, lesson08_pinhole, lesson08_shadows, lesson09_mesh,
+    LessonMesh, TORUS_OBJ, lesson08, lesson08_pinhole, lesson08_shadows, lesson09_mesh,
 };
 use render_lessons::transform::Transform;
 
@@ -549,79 +549,6 @@ fn uv_sphere_is_closed_and_faces_out() {
 }
 
 #[test]
-fn obj_files() {
-    let dir = tempfile::tempdir().unwrap();
-    let write = |name: &str, text: &str| {
-        let path = dir.path().join(name);
-        std::fs::write(&path, text).unwrap();
-        path
-    };
-    let good = write(
-        "good.obj",
-        "# a triangle\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-    );
-    let mesh = Mesh::from_obj(&good).unwrap();
-    assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
-    assert!((mesh.normals[0] - Vec3::Z).length() < 1e-6);
-
-    let missing = Mesh::from_obj(&dir.path().join("missing.obj")).unwrap_err();
-    assert!(matches!(missing, Error::Obj { line: None, .. }));
-    assert!(missing.to_string().contains("missing.obj"), "{missing}");
-
-    let out_of_range = write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
-    let err = Mesh::from_obj(&out_of_range).unwrap_err();
-    assert!(matches!(err, Error::Obj { line: Some(5), .. }), "{err:?}");
-    assert!(err.to_string().contains("line 5"), "{err}");
-
-    let quad = write(
-        "quad.obj",
-        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\n\nf 1 2 3 4\n",
-    );
-    let err = Mesh::from_obj(&quad).unwrap_err();
-    assert!(matches!(err, Error::Obj { line: Some(7), .. }), "{err:?}");
-    assert!(err.to_string().contains("face 1 has 4 vertices"), "{err}");
-}
-
-#[test]
-fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted() {
-    let dir = tempfile::tempdir().unwrap();
-    let write = |name: &str, text: &str| {
-        let path = dir.path().join(name);
-        std::fs::write(&path, text).unwrap();
-        path
-    };
-    for (name, text, says) in [
-        ("empty.obj", "", "no vertices"),
-        ("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles"),
-        (
-            "edge.obj",
-            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n",
-            "no triangles",
-        ),
-    ] {
-        let err = Mesh::from_obj(&write(name, text)).unwrap_err();
-        let message = err.to_string();
-        assert!(
-            message.contains(name) && message.contains(says),
-            "{message}"
-        );
-    }
-    // One triangle with area, one whose corners lie on a line: the ray caster gets
-    // the first only, and the count says so.
-    let text = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n";
-    let mesh = Mesh::from_obj(&write("flat.obj", text)).unwrap();
-    assert_eq!(mesh.degenerate(), 1);
-    assert_eq!(mesh.objects(Vec3::ONE).unwrap().len(), 1);
-    // Every triangle degenerate (1e38 corners: the area overflows): nothing to show.
-    let huge = "v 0 0 0\nv 1e38 0 0\nv 0 1e38 0\nf 1 2 3\n";
-    let mesh = Mesh::from_obj(&write("huge.obj", huge)).unwrap();
-    assert_eq!(mesh.degenerate(), 1);
-    assert_eq!(mesh.objects(Vec3::ONE).unwrap_err().param(), "mesh");
-    let err = render_lessons::scenes::lesson09_mesh(&write("huge2.obj", huge)).unwrap_err();
-    assert_eq!(err.param(), "mesh");
-}
-
-#[test]
 fn segments_are_checked_before_tessellating() {
     let scene = render_lessons::scenes::lesson08(Vec3::ZERO).unwrap();
     assert!(render_lessons::raster::check_segments(&scene, 4).is_ok());
@@ -679,12 +606,12 @@ fn same_image_for_any_thread_count() {
 
 /// The lesson at its defaults, as `main` runs it: the scene, the tessellation of 64
 /// segments, the 1024^2 shadow map with a bias of 1, and the torus.
-fn book_lesson() -> (Scene, Model, lesson::Lesson) {
+fn book_lesson() -> (Scene, LessonMesh, lesson::Lesson) {
     let scene = lesson08(Vec3::ZERO).unwrap();
     let camera = lesson08_pinhole(480, 270).unwrap();
-    let mesh = lesson09_mesh(Path::new(TORUS_OBJ)).unwrap();
+    let mesh = lesson09_mesh(Path::new(TORUS_OBJ), 0).unwrap();
     let shadows = lesson08_shadows(1024, 1.0);
-    let lesson = lesson::images(&scene, &camera, 64, shadows, &mesh, None).unwrap();
+    let lesson = lesson::images(&scene, &camera, 64, shadows, &mesh.model, None).unwrap();
     (scene, mesh, lesson)
 }
 

@@ -20,6 +20,7 @@ const LAYERS: &[&[&str]] = &[
         "offset",
         "material",
         "output",
+        "progress",
     ],
     &["quadratic"],
     &["camera", "shapes"],

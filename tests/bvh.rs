@@ -519,6 +519,7 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
 
     let mut objects = Mesh::from_obj(std::path::Path::new(TORUS_OBJ))
         .unwrap()
+        .mesh
         .objects(Vec3::new(0.7, 0.5, 0.3))
         .unwrap();
     let (torus_triangles, floor_y) = (objects.len(), -1.0);

@@ -3,7 +3,6 @@
 //! vertex shared by several triangles is stored (and later transformed and lit) once.
 
 use std::f32::consts::PI;
-use std::path::Path;
 
 use glam::Vec3;
 
@@ -228,63 +227,6 @@ impl Mesh {
             .to_vec();
         Mesh::with_normals(positions, vec![Vec3::Y; 4], vec![[0, 1, 2], [0, 2, 3]])
     }
-
-    /// Reads a Wavefront OBJ file with tobj, without triangulating: every face must
-    /// be a triangle. Points and lines are skipped; all objects and groups are merged
-    /// into one mesh. Normals come from the file when every vertex has one, else they
-    /// are averaged from the triangles.
-    pub fn from_obj(path: &Path) -> Result<Mesh> {
-        let text =
-            std::fs::read_to_string(path).map_err(|e| obj_error(path, None, e.to_string()))?;
-        let options = tobj::LoadOptions {
-            triangulate: false,
-            single_index: true,
-            ignore_points: true,
-            ignore_lines: true,
-        };
-        let (models, _) =
-            tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))
-                .map_err(|e| obj_error(path, bad_index_line(&text), e.to_string()))?;
-        let mut positions = Vec::new();
-        let mut normals = Vec::new();
-        let mut triangles = Vec::new();
-        let mut faces_before = 0;
-        for model in &models {
-            let m = &model.mesh;
-            if let Some(face) = m.face_arities.iter().position(|&a| a != 3) {
-                let arity = m.face_arities[face];
-                let face = faces_before + face;
-                return Err(obj_error(
-                    path,
-                    face_line(&text, face),
-                    format!("face {face} has {arity} vertices; only triangles are supported"),
-                ));
-            }
-            let base = positions.len() as u32;
-            faces_before += m.indices.len() / 3;
-            positions.extend(m.positions.chunks_exact(3).map(Vec3::from_slice));
-            normals.extend(m.normals.chunks_exact(3).map(Vec3::from_slice));
-            triangles.extend(
-                m.indices
-                    .chunks_exact(3)
-                    .map(|t| [t[0] + base, t[1] + base, t[2] + base]),
-            );
-        }
-        if triangles.is_empty() {
-            let has_vertices = text.lines().any(|l| l.trim_start().starts_with("v "));
-            let what = match has_vertices {
-                false => "has no vertices (v lines)",
-                true => "has no triangles (f lines of three vertices)",
-            };
-            return Err(obj_error(path, None, what.to_string()));
-        }
-        let mesh = if normals.len() == positions.len() {
-            Mesh::with_normals(positions, normals, triangles)
-        } else {
-            Mesh::new(positions, triangles)
-        };
-        mesh.map_err(|e| obj_error(path, None, e.to_string()))
-    }
 }
 
 /// `value` if it is at least `min`.
@@ -344,44 +286,4 @@ fn vertex_normals(positions: &[Vec3], triangles: &[[u32; 3]]) -> Vec<Vec3> {
         }
     }
     normals.iter().map(|n| n.normalize_or_zero()).collect()
-}
-
-fn obj_error(path: &Path, line: Option<usize>, message: String) -> Error {
-    Error::Obj {
-        path: path.display().to_string(),
-        line,
-        message,
-    }
-}
-
-/// The 1-based line of the `face`-th (0-based) face statement `f ...`.
-fn face_line(text: &str, face: usize) -> Option<usize> {
-    text.lines()
-        .enumerate()
-        .filter(|(_, l)| l.trim_start().starts_with("f "))
-        .nth(face)
-        .map(|(n, _)| n + 1)
-}
-
-/// The 1-based line of the first face whose vertex number is 0 or names a vertex
-/// not yet defined (OBJ numbers vertices from 1; negative numbers count back).
-fn bad_index_line(text: &str) -> Option<usize> {
-    let mut vertices = 0i64;
-    for (n, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("v") => vertices += 1,
-            Some("f") => {
-                let bad = words.any(|w| {
-                    let index = w.split('/').next().and_then(|i| i.parse::<i64>().ok());
-                    index.is_none_or(|i| i == 0 || i > vertices || -i > vertices)
-                });
-                if bad {
-                    return Some(n + 1);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
 }

@@ -12,20 +12,26 @@
 pub mod clip;
 pub mod compare;
 pub mod mesh;
+pub mod obj;
 pub mod pipeline;
 pub mod rasterize;
 pub mod shade;
 pub mod shadow_map;
+pub mod subdivide;
+pub mod teapot;
 pub mod tessellate;
 pub mod vertex;
 
 pub use clip::clip_triangle;
 pub use compare::{Agreement, Reference, TOLERANCE, agreement, difference, reference};
 pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
+pub use obj::{FaceCounts, LoadedMesh, fan};
 pub use pipeline::{DepthRange, Pipeline};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
 pub use shade::{Shading, Viewer, shade};
 pub use shadow_map::{ShadowMap, Shadows};
+pub use subdivide::{MAX_SUBDIVISIONS, check_subdivisions, subdivided_count};
+pub use teapot::{patch_point, teapot_obj};
 pub use tessellate::{
     FLOOR_DEPTH, FLOOR_SIZE, check_segments, floor_settings, point_light, tessellate,
 };

@@ -105,6 +105,7 @@ const NO_TEXT = new Set([
     '08_far_fixed_epsilon.png', '08_far_scaled_offset.png', '08_lambert.png',
     '08_shadowless_ortho.png', '08_shadowless_pinhole.png',
     '09_difference.png', '09_mesh.png', '09_shadow_bias.png', '09_shadows.png',
+    '09_teapot.png',
     '10_convergence.png', '10_step_cosine.png', '10_step_lens.png', '10_step_mis.png',
     '10_step_nee.png', '10_step_roulette.png', '10_step_specular.png', '10_step_uniform.png',
 ]);

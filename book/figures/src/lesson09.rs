@@ -15,19 +15,20 @@ use render_lessons::raster::{Model, Pipeline, Shadows, floor_settings, point_lig
 use render_lessons::raster::{rasterize, rasterize_triangle, reference, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-use render_lessons::scenes::{TORUS_OBJ, lesson08, lesson08_pinhole, lesson08_shadows};
-use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
+use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, lesson09_mesh_scene};
+use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows, lesson09_mesh};
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
 /// Writes `09_side_by_side.png`, `09_shadows.png`, `09_shadow_bias.png`,
-/// `09_mesh.png` and `09_pipeline_stages.png`: lesson 09 at its defaults (480 x 270,
-/// spheres of 64 segments, a 1024^2 shadow map, a bias of one texel footprint).
+/// `09_mesh.png`, `09_teapot.png` and `09_pipeline_stages.png`: lesson 09 at its
+/// defaults (480 x 270, spheres of 64 segments, a 1024^2 shadow map, a bias of one
+/// texel footprint), and with `--mesh assets/meshes/teapot.obj`.
 pub fn figures(output: &Output) -> Result<()> {
     let scene = lesson08(Vec3::ZERO)?;
     let camera = lesson08_pinhole(480, 270)?;
     let shadows = lesson08_shadows(1024, 1.0);
-    let mesh = lesson09_mesh(std::path::Path::new(TORUS_OBJ))?;
+    let mesh = lesson09_mesh(std::path::Path::new(TORUS_OBJ), 0)?.model;
     let instances = tessellate(&scene, 64)?;
     let light = point_light(&scene)?;
     let book = floor_settings(&scene);
@@ -48,12 +49,17 @@ pub fn figures(output: &Output) -> Result<()> {
     let (shadow_map, acne, peter_pan) = (mapped(1.0)?, mapped(0.0)?, mapped(50.0)?);
     let mesh_cast = reference(&lesson09_mesh_scene(&scene, &mesh)?, &camera, None)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
+    let teapot = lesson09_mesh(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
+    let teapot_scene = MeshScene::new(lesson09_mesh_scene(&scene, &teapot)?, 480 * 270);
+    let teapot_cast = reference(&teapot_scene, &camera, None)?.image;
+    let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];
     output.diagram("09_side_by_side.png", &captioned(&three, &SIDE_BY_SIDE)?)?;
     let panels = [
         ("09_shadows.png", vec![&traced, &shadow_map]),
         ("09_shadow_bias.png", vec![&acne, &peter_pan]),
         ("09_mesh.png", vec![&mesh_cast, &mesh_raster]),
+        ("09_teapot.png", vec![&teapot_cast, &teapot_raster]),
     ];
     for (name, images) in panels {
         output.image(name, &Framebuffer::beside(&images, 8)?)?;

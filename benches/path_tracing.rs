@@ -25,13 +25,14 @@ use std::time::{Duration, Instant};
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group};
 use glam::Vec3;
+use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking};
 use render_lessons::course::measure::variance::{Seen, pixel_variance};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes;
-use render_lessons::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling};
+use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling};
 use render_lessons::pathtrace::{Settings, SphereSampling};
 use render_lessons::scene::Scene;
 
@@ -106,7 +107,7 @@ fn source_hash() -> u64 {
     use std::hash::{Hash, Hasher};
     let sources = [
         include_str!("../src/pathtrace/estimator.rs"),
-        include_str!("../src/pathtrace/lens.rs"),
+        include_str!("../src/camera/thin_lens.rs"),
         include_str!("../src/pathtrace/light.rs"),
         include_str!("../src/material.rs"),
         include_str!("../src/pathtrace/mis.rs"),
@@ -176,7 +177,7 @@ fn average(a: &Framebuffer, b: &Framebuffer) -> Framebuffer {
 
 /// One half of the reference: MIS, `REFERENCE_HALF_SPP` samples, seed `seed`, read
 /// from the cache if it is there.
-fn reference_half(scene: &Scene, camera: &LensCamera, seed: u64) -> Framebuffer {
+fn reference_half(scene: &Scene, camera: &Camera, seed: u64) -> Framebuffer {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target");
     let path = dir.join(format!(
         "path_tracing_reference_{WIDTH}x{HEIGHT}_mis_{REFERENCE_HALF_SPP}spp_seed{seed:x}_{:016x}.pfm",

@@ -69,7 +69,7 @@ pub fn numbers(cam: &OrthoCamera, d: Vec3, k: Vec3) -> String {
     );
     for y in 0..cam.film().height().min(6) {
         for x in 0..cam.film().width().min(6) {
-            let (local, _) = cam.local_ray(x, y);
+            let local = cam.local_ray(Film::pixel_centre(x, y)).origin();
             let ray = cam.ray(x, y);
             rays.row(vec![
                 format!("({x}, {y})"),

@@ -91,7 +91,7 @@ pub fn numbers(at_origin: &PinholeCamera, placed: &PinholeCamera, d: Vec3, k: Ve
     for (x, y) in [(0, 0), (1, 0), (2, 1), (3, 2)] {
         origin_table.row(vec![
             format!("({x}, {y})"),
-            vec3(at_origin.screen_point(x, y), 3),
+            vec3(at_origin.screen_point(Film::pixel_centre(x, y)), 3),
             vec3(at_origin.ray(x, y).direction(), 4),
         ]);
         let ray = placed.ray(x, y);

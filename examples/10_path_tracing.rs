@@ -16,6 +16,7 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::ProgressBar;
 use render_lessons::Result;
+use render_lessons::camera::Camera;
 use render_lessons::course::ladder_figure::ladder_figure;
 use render_lessons::course::lesson::{self, Output, parse_finite};
 use render_lessons::course::report::{Table, num};
@@ -24,7 +25,7 @@ use render_lessons::pathtrace::convergence::{Part, Renders, Study, ladder};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::SceneName;
-use render_lessons::pathtrace::{LensCamera, Passes, PixelSampling, Sampling, Settings};
+use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
 use render_lessons::scene::Scene;
 
 /// The lesson's parameters; every one has a default that reproduces the book.
@@ -119,7 +120,7 @@ pub fn numbers(scene: SceneName, study: &Study, renders: &Renders) -> String {
 // ANCHOR: setup
 /// What the flags ask for: the scene, its camera (a thin lens when `--aperture` is
 /// not 0) and the study to run on them.
-pub fn setup(args: &Args) -> Result<(Scene, LensCamera, Study)> {
+pub fn setup(args: &Args) -> Result<(Scene, Camera, Study)> {
     // At most 11 rungs, 3 strategies, the reference and two f64 accumulators.
     let threads = lesson::budget(args.width, args.height, args.threads, 20)?;
     let (scene, pinhole) = args.scene.build(args.width, args.height)?;

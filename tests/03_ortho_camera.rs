@@ -54,7 +54,9 @@ fn the_literal_slide_formula_counts_rows_from_the_bottom() {
     );
     assert_eq!(literal, Vec2::new(-6.0, -4.0));
     assert_eq!(slide_camera().ray(0, 2).origin(), literal.extend(0.0));
-    assert_eq!(slide_camera().film().row_from_bottom(0), 2);
+    // The film counts rows from the top: the top row's centre is 0.5 pixels down.
+    let top_left = slide_camera().film().film_point(Vec2::new(0.5, 0.5));
+    assert_eq!(top_left, Vec2::new(-6.0, 4.0));
 }
 
 #[test]

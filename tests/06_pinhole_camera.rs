@@ -47,7 +47,10 @@ fn screen_point_is_c_plus_u_a_plus_v_b() {
                 (px as f32 + 0.5) / res_x,
                 (y_from_bottom as f32 + 0.5) / res_y,
             );
-            assert!((cam.screen_point(px, py) - (c + u * a + v * b)).length() < 1e-6);
+            assert!(
+                (cam.screen_point(Film::pixel_centre(px, py)) - (c + u * a + v * b)).length()
+                    < 1e-6
+            );
         }
     }
 }
@@ -147,7 +150,7 @@ proptest! {
         let cam = PinholeCamera::new(film, s, frame).unwrap();
         let (px, py) = (px % w, py % h);
         let ray = cam.ray(px, py);
-        let target = frame.point_to_world(cam.screen_point(px, py));
+        let target = frame.point_to_world(cam.screen_point(Film::pixel_centre(px, py)));
         let t = ray.t_closest_to(target);
         prop_assert!(t > 0.0, "the screen is in front of the eye");
         prop_assert!((ray.at(t) - target).length() < 1e-4 * (1.0 + target.length()));

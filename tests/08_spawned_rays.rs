@@ -343,7 +343,15 @@ fn far_furnace(distance: f32, n: u32) -> (f64, f64) {
     let (mut sum, mut sum2) = (0.0f64, 0.0f64);
     for i in 0..n {
         let pixel = Vec2::new((i % 16) as f32 + 0.5, ((i / 16) % 16) as f32 + 0.5);
-        let x = f64::from(radiance(&scene, camera.ray(pixel, Vec2::ZERO), &mut rng, &settings).x);
+        let x = f64::from(
+            radiance(
+                &scene,
+                camera.ray_through(pixel, Vec2::ZERO),
+                &mut rng,
+                &settings,
+            )
+            .x,
+        );
         (sum, sum2) = (sum + x, sum2 + x * x);
     }
     let mean = sum / f64::from(n);

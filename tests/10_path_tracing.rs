@@ -16,7 +16,7 @@ use clap::Parser;
 
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
-use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera, ThinLensCamera};
 use render_lessons::error::Error;
 use render_lessons::material::{Material, fresnel};
 use render_lessons::offset::Offset;
@@ -27,8 +27,8 @@ use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::pathtrace::{
-    Accumulator, LensCamera, PathCamera, PixelSampling, RecordedPath, Rng, Sampling, Settings,
-    SphereSampling, radiance, radiance_observed, record_path,
+    Accumulator, PixelSampling, RecordedPath, Rng, Sampling, Settings, SphereSampling, radiance,
+    radiance_observed, record_path,
 };
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene};
@@ -222,18 +222,12 @@ fn assert_within_4_sigma(label: &str, (mean, sigma): (f64, f64), n: u32, exact: 
 }
 
 /// `n` samples of the radiance along pixel rays of `camera`, cycling over pixels.
-fn pixel_samples(
-    scene: &Scene,
-    camera: &LensCamera,
-    s: &Settings,
-    n: u32,
-    seed: u64,
-) -> (f64, f64) {
+fn pixel_samples(scene: &Scene, camera: &Camera, s: &Settings, n: u32, seed: u64) -> (f64, f64) {
     let (w, h) = (camera.film().width(), camera.film().height());
     let mut rng = Rng::for_pixel(seed, 0, 0);
     stats(n, |i| {
         let (x, y) = (i % w, (i / w) % h);
-        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), Vec2::ZERO);
+        let ray = camera.ray_through(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), Vec2::ZERO);
         radiance(scene, ray, &mut rng, s).x
     })
 }
@@ -862,11 +856,14 @@ fn aperture_0_is_the_pinhole_camera_bit_for_bit() {
     )
     .unwrap();
     let pinhole = PinholeCamera::new(film, 1.7, frame).unwrap();
-    let lens = LensCamera::new(pinhole, 0.0, 5.0).unwrap();
+    let lens = ThinLensCamera::new(pinhole, 0.0, 5.0).unwrap();
     for y in 0..15 {
         for x in 0..20 {
             let centre = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
-            assert_eq!(lens.ray(centre, Vec2::new(0.3, 0.7)), pinhole.ray(x, y));
+            assert_eq!(
+                lens.ray_through(centre, Vec2::new(0.3, 0.7)),
+                pinhole.ray(x, y)
+            );
         }
     }
     let _ = camera;
@@ -876,12 +873,12 @@ fn aperture_0_is_the_pinhole_camera_bit_for_bit() {
 fn thin_lens_rays_meet_on_the_plane_in_focus() {
     let film = Film::new(8, 8, (-0.5, 0.5), (-0.5, 0.5)).unwrap();
     let pinhole = PinholeCamera::at_origin(film, 1.0).unwrap();
-    let lens = LensCamera::new(pinhole, 0.2, 4.0).unwrap();
+    let lens = ThinLensCamera::new(pinhole, 0.2, 4.0).unwrap();
     let pixel = Vec2::new(2.3, 5.6);
-    let centre_ray = lens.ray(pixel, Vec2::ZERO);
+    let centre_ray = lens.ray_through(pixel, Vec2::ZERO);
     let target = centre_ray.at(4.0 / -centre_ray.direction().z);
     for u in render_lessons::sampling::grid(4) {
-        let r = lens.ray(pixel, u);
+        let r = lens.ray_through(pixel, u);
         assert!(r.origin().z == 0.0 && r.origin().length() <= 0.2 + 1e-6);
         let p = r.at((-4.0 - r.origin().z) / r.direction().z);
         assert!((p - target).length() < 1e-5, "{p} vs {target}");
@@ -911,12 +908,12 @@ fn the_thin_lens_focus_point_is_in_front_of_the_eye_at_the_focus_distance() {
     let eye = Vec3::new(1.0, 2.0, 3.0);
     let frame = Frame::look(eye, Vec3::new(0.3, -0.2, -1.0), Vec3::Y).unwrap();
     let pinhole = PinholeCamera::new(film, s, frame).unwrap();
-    let lens = LensCamera::new(pinhole, 0.3, z_f).unwrap();
+    let lens = ThinLensCamera::new(pinhole, 0.3, z_f).unwrap();
     let w = frame.basis().w();
     for (x, y) in [(0u32, 0u32), (7, 11), (19, 14)] {
         let pixel = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
         // The point in focus as the page computes it, in world space.
-        let screen_cam = pinhole.screen_point(x, y);
+        let screen_cam = pinhole.screen_point(pixel);
         assert!((screen_cam.z + s).abs() < 1e-6, "screen point z = -s");
         let focus = frame.point_to_world(screen_cam * (z_f / s));
         // In front of the eye (the camera looks along -w), at the focus distance.
@@ -932,7 +929,7 @@ fn the_thin_lens_focus_point_is_in_front_of_the_eye_at_the_focus_distance() {
         // it crosses the pinhole ray is p_f too; no ray comes near the point behind.
         let pinhole_ray = pinhole.ray(x, y);
         for u in render_lessons::sampling::grid(3) {
-            let r = lens.ray(pixel, u);
+            let r = lens.ray_through(pixel, u);
             assert!((r.origin() - eye).dot(w).abs() < 1e-5, "starts on the lens");
             let t = r.t_closest_to(focus);
             assert!(t > 0.0, "p_f ahead of the lens ray: t = {t}");
@@ -1047,15 +1044,15 @@ fn bad_input_is_an_error_naming_the_parameter() {
     let film = Film::new(4, 4, (-1.0, 1.0), (-1.0, 1.0)).unwrap();
     let pinhole = PinholeCamera::at_origin(film, 1.0).unwrap();
     assert_eq!(
-        param(LensCamera::new(pinhole, -0.1, 1.0).unwrap_err()),
+        param(ThinLensCamera::new(pinhole, -0.1, 1.0).unwrap_err()),
         "aperture"
     );
     assert_eq!(
-        param(LensCamera::new(pinhole, f32::NAN, 1.0).unwrap_err()),
+        param(ThinLensCamera::new(pinhole, f32::NAN, 1.0).unwrap_err()),
         "aperture"
     );
     assert_eq!(
-        param(LensCamera::new(pinhole, 0.1, 0.0).unwrap_err()),
+        param(ThinLensCamera::new(pinhole, 0.1, 0.0).unwrap_err()),
         "focus"
     );
 
@@ -1134,7 +1131,7 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 let path = record_path(&scene, &camera, &s, 1, (x, y));
                 let mut rng = Rng::for_pixel(1, x, y);
                 let position = Vec2::new(x as f32, y as f32) + rng.next_vec2();
-                let ray = camera.ray(position, rng.next_vec2());
+                let ray = camera.ray_through(position, rng.next_vec2());
                 assert_eq!(path.eye, ray.origin());
                 let mut watched = rng;
                 let expected = radiance(&scene, ray, &mut rng, &s);
@@ -1198,7 +1195,7 @@ fn the_grey_furnace_renders_through_an_orthographic_camera() {
     let centre = |x: u32, y: u32| Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
     for (x, y) in [(0, 0), (5, 17), (23, 23), (12, 11)] {
         assert_eq!(
-            camera.sample_ray(centre(x, y), Vec2::splat(0.3)),
+            camera.ray_through(centre(x, y), Vec2::splat(0.3)),
             camera.ray(x, y)
         );
     }
@@ -1238,14 +1235,15 @@ fn the_grey_furnace_renders_through_an_orthographic_camera() {
         "{} vs {exact}",
         image.mean()
     );
-    // A pinhole `Camera` renders as the lens camera of aperture 0, bit for bit.
+    // A pinhole `Camera` renders as the thin lens of aperture 0, bit for bit.
     let pinhole =
         PinholeCamera::at_origin(Film::new(8, 6, (-1.0, 1.0), (-0.75, 0.75)).unwrap(), 1.0)
             .unwrap();
     let (u, pixel) = (Vec2::new(0.2, 0.9), Vec2::new(3.3, 4.7));
+    let lens = ThinLensCamera::new(pinhole, 0.0, 1.0).unwrap();
     assert_eq!(
-        Camera::Pinhole(pinhole).sample_ray(pixel, u),
-        LensCamera::pinhole(pinhole).ray(pixel, u)
+        Camera::Pinhole(pinhole).ray_through(pixel, u),
+        Camera::ThinLens(lens).ray_through(pixel, u)
     );
 }
 

@@ -484,10 +484,7 @@ fn structural_invariants_and_sah_beats_the_median_on_100k_triangles() {
 }
 
 /// 4 samples per pixel of the default path tracer, each pixel's bits.
-fn path_traced(
-    scene: &impl Intersect,
-    camera: &render_lessons::pathtrace::LensCamera,
-) -> Vec<[u32; 3]> {
+fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) -> Vec<[u32; 3]> {
     use render_lessons::pathtrace::{Accumulator, PixelSampling, Settings};
     let settings = Settings::default();
     let image = Accumulator::new(camera, 7)

@@ -103,34 +103,49 @@ impl Film {
         )
     }
 
-    // ANCHOR: row_flip
-    /// The slides count pixel rows from the bottom of the image; image files (and
-    /// this crate) count them from the top. This is the one place that converts.
-    pub fn row_from_bottom(&self, row_from_top: u32) -> u32 {
-        self.height - 1 - row_from_top.min(self.height - 1)
-    }
-    // ANCHOR_END: row_flip
-
-    // ANCHOR: pixel_to_plane
-    /// The centre of pixel (`px`, `py`) on the plane, `py` counted from the top row
-    /// (Lecture 4, "Computing the ray origin"):
+    // ANCHOR: film_point
+    /// The point of the plane at the continuous pixel position `pixel` = (column, row
+    /// from the top), measured in pixels: pixel (x, y) covers [x, x + 1] x [y, y + 1].
     ///
-    /// x = (x_pixel + 0.5) / resolution_x * width + x_min
-    /// y = (y_pixel + 0.5) / resolution_y * height + y_min, y_pixel counted from the bottom.
-    pub fn pixel_to_plane(&self, px: u32, py: u32) -> Vec2 {
-        let x_pixel = px as f32;
-        let y_pixel = self.row_from_bottom(py) as f32;
+    /// Lecture 4's "Computing the ray origin", for any point of a pixel:
+    ///
+    /// x = pixel_x / resolution_x * width + x_min
+    /// y = (resolution_y - pixel_y) / resolution_y * height + y_min
+    ///
+    /// The slides count rows from the bottom of the image; image files (and this crate)
+    /// count them from the top. resolution_y - pixel_y is that conversion, made here
+    /// and nowhere else.
+    pub fn film_point(&self, pixel: Vec2) -> Vec2 {
+        let from_bottom = self.height as f32 - pixel.y;
         let width = self.x_max - self.x_min;
         let height = self.y_max - self.y_min;
         Vec2::new(
-            (x_pixel + 0.5) / self.width as f32 * width + self.x_min,
-            (y_pixel + 0.5) / self.height as f32 * height + self.y_min,
+            pixel.x / self.width as f32 * width + self.x_min,
+            from_bottom / self.height as f32 * height + self.y_min,
         )
+    }
+    // ANCHOR_END: film_point
+
+    // ANCHOR: pixel_to_plane
+    /// The centre of pixel (`px`, `py`) on the plane, `py` counted from the top row:
+    /// [`Film::film_point`] at (px + 0.5, py + 0.5). That is the slides' formula
+    ///
+    /// x = (x_pixel + 0.5) / resolution_x * width + x_min
+    /// y = (y_pixel + 0.5) / resolution_y * height + y_min
+    ///
+    /// with the row counted from the bottom, y_pixel = resolution_y - 1 - py.
+    pub fn pixel_to_plane(&self, px: u32, py: u32) -> Vec2 {
+        self.film_point(Film::pixel_centre(px, py))
+    }
+
+    /// The continuous position of the centre of pixel (`px`, `py`): (px + 0.5, py + 0.5).
+    pub fn pixel_centre(px: u32, py: u32) -> Vec2 {
+        Vec2::new(px as f32 + 0.5, py as f32 + 0.5)
     }
     // ANCHOR_END: pixel_to_plane
 
-    /// The inverse of [`Film::pixel_to_plane`] for any plane point: continuous pixel
-    /// coordinates (column, row from the top), so a pixel centre maps to (px + 0.5, py + 0.5).
+    /// The inverse of [`Film::film_point`]: continuous pixel coordinates (column, row
+    /// from the top) of a plane point, so a pixel centre maps to (px + 0.5, py + 0.5).
     pub fn plane_to_pixel(&self, p: Vec2) -> Vec2 {
         let sx = (p.x - self.x_min) / (self.x_max - self.x_min) * self.width as f32;
         let sy = (p.y - self.y_min) / (self.y_max - self.y_min) * self.height as f32;

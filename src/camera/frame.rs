@@ -5,6 +5,7 @@ use glam::Vec3;
 
 use crate::basis::Basis;
 use crate::error::{Error, Result, finite3, unit};
+use crate::ray::Ray;
 use crate::transform::{Transform, from_rows};
 
 /// Below this sine of the angle between up and the view direction, the up vector no
@@ -125,6 +126,15 @@ impl Frame {
     /// A camera-space direction in world space: B x.
     pub fn vector_to_world(&self, x: Vec3) -> Vec3 {
         self.basis.to_world(x)
+    }
+
+    /// A camera-space ray in world space: origin B o + p, direction B d (still unit
+    /// length: B is orthonormal).
+    pub fn ray_to_world(&self, local: &Ray) -> Ray {
+        Ray::from_checked(
+            self.point_to_world(local.origin()),
+            self.vector_to_world(local.direction()),
+        )
     }
     // ANCHOR_END: to_world
 

@@ -1,21 +1,26 @@
 //! Cameras: how a pixel becomes a ray (Lecture 4).
 //!
-//! Both cameras first build their ray in camera space (eye at the origin, looking
-//! down -Z, +Y up) and then carry it to the world with the frame's basis and position.
+//! Every camera first builds its ray in camera space (eye at the origin, looking
+//! down -Z, +Y up) and then carries it to the world with the frame's basis and
+//! position. The film turns a position on the image (in pixels) into a point of the
+//! camera's plane, once for all cameras ([`Film::film_point`]).
 
 mod film;
 mod frame;
 mod ortho;
 mod pinhole;
+mod thin_lens;
 
 pub use film::{Film, MAX_RESOLUTION};
 pub use frame::{Frame, MIN_UP_SINE, camera_basis, camera_basis_as_on_slide};
 pub use ortho::OrthoCamera;
 pub use pinhole::PinholeCamera;
+pub use thin_lens::ThinLensCamera;
 
 use glam::Vec2;
 use glam::Vec3;
 
+use crate::error::{Error, Result};
 use crate::ray::Ray;
 
 /// One of the course's cameras. An enum, not a trait: there are few, and a `match`
@@ -26,14 +31,55 @@ pub enum Camera {
     Ortho(OrthoCamera),
     /// Rays from one eye point.
     Pinhole(PinholeCamera),
+    /// Rays from a lens disc, meeting on the plane in focus (lesson 10's depth of field).
+    ThinLens(ThinLensCamera),
 }
 
 impl Camera {
-    /// The ray through the centre of pixel (`px`, `py`), `py` counted from the top row.
+    // ANCHOR: ray_through
+    /// The ray through the continuous pixel position `pixel` (column, row from the
+    /// top), `lens` in the unit square choosing the point of the lens it leaves from
+    /// (ignored by the cameras without a lens).
+    pub fn ray_through(&self, pixel: Vec2, lens: Vec2) -> Ray {
+        match self {
+            Camera::Ortho(c) => c.ray_through(pixel),
+            Camera::Pinhole(c) => c.ray_through(pixel),
+            Camera::ThinLens(c) => c.ray_through(pixel, lens),
+        }
+    }
+    // ANCHOR_END: ray_through
+
+    /// The ray through the centre of pixel (`px`, `py`), `py` counted from the top row
+    /// (from the lens's centre for a thin lens).
     pub fn ray(&self, px: u32, py: u32) -> Ray {
         match self {
             Camera::Ortho(c) => c.ray(px, py),
             Camera::Pinhole(c) => c.ray(px, py),
+            Camera::ThinLens(c) => c.pinhole().ray(px, py),
+        }
+    }
+
+    /// The same camera with a lens of radius `aperture` focused at `focus_distance`
+    /// ([`ThinLensCamera::new`]): a pinhole gains one, a thin lens changes its own.
+    /// An orthographic camera has none to give: an error naming `aperture`.
+    pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<Camera> {
+        match self {
+            Camera::Ortho(_) => Err(Error::Invalid {
+                param: "aperture",
+                reason: "needs a pinhole camera: an orthographic camera has no lens",
+            }),
+            Camera::Pinhole(c) => Ok(ThinLensCamera::new(*c, aperture, focus_distance)?.into()),
+            Camera::ThinLens(c) => Ok(c.with_lens(aperture, focus_distance)?.into()),
+        }
+    }
+
+    /// The pinhole camera of a perspective camera (a pinhole, or the pinhole a thin
+    /// lens sits on); `None` for an orthographic one.
+    pub fn pinhole(&self) -> Option<&PinholeCamera> {
+        match self {
+            Camera::Ortho(_) => None,
+            Camera::Pinhole(c) => Some(c),
+            Camera::ThinLens(c) => Some(c.pinhole()),
         }
     }
 
@@ -42,6 +88,7 @@ impl Camera {
         match self {
             Camera::Ortho(c) => c.film(),
             Camera::Pinhole(c) => c.film(),
+            Camera::ThinLens(c) => c.film(),
         }
     }
 
@@ -50,14 +97,17 @@ impl Camera {
         match self {
             Camera::Ortho(c) => c.frame(),
             Camera::Pinhole(c) => c.frame(),
+            Camera::ThinLens(c) => c.frame(),
         }
     }
 
-    /// Where the world point `x` lands, in continuous pixel coordinates, if it does.
+    /// Where the world point `x` lands, in continuous pixel coordinates, if it does
+    /// (a thin lens: where its pinhole would put it, the centre of the blur disc).
     pub fn project(&self, x: Vec3) -> Option<Vec2> {
         match self {
             Camera::Ortho(c) => Some(c.project(x)),
             Camera::Pinhole(c) => c.project(x),
+            Camera::ThinLens(c) => c.pinhole().project(x),
         }
     }
 }
@@ -71,5 +121,11 @@ impl From<OrthoCamera> for Camera {
 impl From<PinholeCamera> for Camera {
     fn from(c: PinholeCamera) -> Camera {
         Camera::Pinhole(c)
+    }
+}
+
+impl From<ThinLensCamera> for Camera {
+    fn from(c: ThinLensCamera) -> Camera {
+        Camera::ThinLens(c)
     }
 }

@@ -35,23 +35,25 @@ impl OrthoCamera {
     }
 
     // ANCHOR: local_ray
-    /// The ray of pixel (`px`, `py`) in camera space: origin (x, y, 0) at the pixel
-    /// centre on the plane, direction (0, 0, -1).
-    pub fn local_ray(&self, px: u32, py: u32) -> (Vec3, Vec3) {
-        let on_plane = self.film.pixel_to_plane(px, py);
-        (on_plane.extend(0.0), Vec3::NEG_Z)
+    /// The ray through the continuous pixel position `pixel` in camera space: its
+    /// origin is the film point on the plane z = 0 ([`Film::film_point`]), its
+    /// direction (0, 0, -1).
+    pub fn local_ray(&self, pixel: Vec2) -> Ray {
+        let origin = self.film.film_point(pixel).extend(0.0);
+        Ray::from_checked(origin, Vec3::NEG_Z)
     }
     // ANCHOR_END: local_ray
 
     // ANCHOR: ray
-    /// The ray of pixel (`px`, `py`) in world space:
-    /// origin_world = B origin_cam + p, direction_world = B direction_cam.
+    /// The same ray in world space: origin_world = B origin_cam + p,
+    /// direction_world = B direction_cam.
+    pub fn ray_through(&self, pixel: Vec2) -> Ray {
+        self.frame.ray_to_world(&self.local_ray(pixel))
+    }
+
+    /// The ray through the centre of pixel (`px`, `py`), `py` counted from the top row.
     pub fn ray(&self, px: u32, py: u32) -> Ray {
-        let (origin, direction) = self.local_ray(px, py);
-        Ray::from_checked(
-            self.frame.point_to_world(origin),
-            self.frame.vector_to_world(direction),
-        )
+        self.ray_through(Film::pixel_centre(px, py))
     }
     // ANCHOR_END: ray
 

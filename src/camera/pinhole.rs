@@ -34,10 +34,13 @@ impl PinholeCamera {
             screen_distance: positive("screen distance", screen_distance)?,
             frame,
         };
-        let corners = [(0, 0), (film.width() - 1, film.height() - 1)];
+        let corners = [
+            Vec2::ZERO,
+            Vec2::new(film.width() as f32, film.height() as f32),
+        ];
         if corners
             .iter()
-            .any(|&(x, y)| !camera.screen_point(x, y).length_squared().is_finite())
+            .any(|&corner| !camera.screen_point(corner).length_squared().is_finite())
         {
             return Err(Error::Invalid {
                 param: "screen distance",
@@ -102,31 +105,33 @@ impl PinholeCamera {
     }
 
     // ANCHOR: screen_point
-    /// The screen point of pixel (`px`, `py`) in camera space (Lecture 4, "Pinhole
-    /// Camera Setup"): with a = (x_max - x_min) x, b = (y_max - y_min) y and corner
-    /// c = x_min x + y_min y - s z, the point is c + u a + v b, where
-    /// u = (x + 0.5)/resolution_x and v = (y + 0.5)/resolution_y.
+    /// The screen point at the continuous pixel position `pixel`, in camera space
+    /// (Lecture 4, "Pinhole Camera Setup"): with a = (x_max - x_min) x,
+    /// b = (y_max - y_min) y and corner c = x_min x + y_min y - s z, the point is
+    /// c + u a + v b, where u and v are the position's fractions of the image's width
+    /// and height (for a pixel centre, u = (x + 0.5)/resolution_x and
+    /// v = (y + 0.5)/resolution_y, rows counted from the bottom).
     ///
-    /// The pixel centre on the film already is x_min + u (x_max - x_min) (and the same
-    /// for y, rows counted from the bottom), so the screen point is that centre at z = -s.
-    pub fn screen_point(&self, px: u32, py: u32) -> Vec3 {
-        self.film
-            .pixel_to_plane(px, py)
-            .extend(-self.screen_distance)
+    /// The film point already is x_min + u (x_max - x_min) (and the same for y), so the
+    /// screen point is the film point at z = -s.
+    pub fn screen_point(&self, pixel: Vec2) -> Vec3 {
+        self.film.film_point(pixel).extend(-self.screen_distance)
     }
     // ANCHOR_END: screen_point
 
     // ANCHOR: ray
-    /// The ray of pixel (`px`, `py`) in world space: it starts at the eye e and goes
-    /// through the screen point s, direction (s - e)/|s - e|; then B and p carry both
-    /// to the world, as for the orthographic camera.
-    pub fn ray(&self, px: u32, py: u32) -> Ray {
+    /// The ray through the continuous pixel position `pixel` in world space: it starts
+    /// at the eye e and goes through the screen point s, direction (s - e)/|s - e|;
+    /// then B and p carry both to the world, as for the orthographic camera.
+    pub fn ray_through(&self, pixel: Vec2) -> Ray {
         let eye = Vec3::ZERO;
-        let direction = (self.screen_point(px, py) - eye).normalize();
-        Ray::from_checked(
-            self.frame.point_to_world(eye),
-            self.frame.vector_to_world(direction),
-        )
+        let direction = (self.screen_point(pixel) - eye).normalize();
+        self.frame.ray_to_world(&Ray::from_checked(eye, direction))
+    }
+
+    /// The ray through the centre of pixel (`px`, `py`), `py` counted from the top row.
+    pub fn ray(&self, px: u32, py: u32) -> Ray {
+        self.ray_through(Film::pixel_centre(px, py))
     }
     // ANCHOR_END: ray
 

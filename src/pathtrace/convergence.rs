@@ -2,9 +2,9 @@
 //! of sample counts, every sampling strategy at the ladder's top, and a reference of
 //! many more samples to measure their errors against.
 
+use crate::camera::Camera;
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
-use crate::pathtrace::lens::PathCamera;
 use crate::pathtrace::progressive::{Pass, Passes, PixelSampling, render_progressive};
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::scene::Intersect;
@@ -97,7 +97,7 @@ impl Study {
     pub fn render(
         &self,
         scene: &impl Intersect,
-        camera: &impl PathCamera,
+        camera: &Camera,
         mut watch: impl FnMut(Part, &Pass) -> Result<()>,
     ) -> Result<Renders> {
         let reference_stops = stops_of_16(self.reference_spp, "reference-spp")?;

@@ -11,7 +11,6 @@
 //! - [`next_event`]: light samples with shadow rays;
 //! - [`mis`]: the power heuristic that combines light and BRDF samples;
 //! - [`roulette`]: Russian roulette;
-//! - [`lens`]: the thin-lens camera, and the cameras a path can start from;
 //! - [`progressive`]: sample passes accumulated into an image;
 //! - [`convergence`]: the lesson's experiment, a ladder of sample counts, every
 //!   strategy, and a reference;
@@ -20,7 +19,6 @@
 
 pub mod convergence;
 pub mod estimator;
-pub mod lens;
 pub mod light;
 pub mod mis;
 pub mod next_event;
@@ -34,7 +32,6 @@ pub mod scenes;
 pub mod settings;
 
 pub use estimator::{radiance, radiance_observed};
-pub use lens::{LensCamera, PathCamera};
 pub use light::SphereSampling;
 pub use observer::PathObserver;
 pub use progressive::{Accumulator, Passes, PixelSampling};

@@ -12,10 +12,10 @@
 use glam::{DVec3, Vec2, Vec3};
 use rayon::prelude::*;
 
+use crate::camera::Camera;
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::estimator::radiance;
-use crate::pathtrace::lens::PathCamera;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
 use crate::ray::Ray;
@@ -56,7 +56,7 @@ pub struct Accumulator {
 
 impl Accumulator {
     /// Empty sums for `camera`'s film, streams seeded from (`seed`, x, y).
-    pub fn new(camera: &impl PathCamera, seed: u64) -> Accumulator {
+    pub fn new(camera: &Camera, seed: u64) -> Accumulator {
         let (width, height) = (camera.film().width(), camera.film().height());
         let rngs = (0..height)
             .flat_map(|y| (0..width).map(move |x| Rng::for_pixel(seed, x, y)))
@@ -88,7 +88,7 @@ impl Accumulator {
     pub fn render_pass(
         &mut self,
         scene: &impl Intersect,
-        camera: &impl PathCamera,
+        camera: &Camera,
         settings: &Settings,
         pixels: PixelSampling,
         spp: u32,
@@ -137,7 +137,7 @@ impl Accumulator {
 
 fn check_pass(
     acc: &Accumulator,
-    camera: &impl PathCamera,
+    camera: &Camera,
     settings: &Settings,
     pixels: PixelSampling,
     spp: u32,
@@ -186,7 +186,7 @@ fn strata(spp: u32) -> u32 {
 /// The camera ray of sample `i` of `spp` in the pixel whose corner is `pixel`: a
 /// point in the pixel, then a point on the lens, both drawn from `rng`.
 pub fn pixel_ray(
-    camera: &impl PathCamera,
+    camera: &Camera,
     pixel: Vec2,
     pixels: PixelSampling,
     spp: u32,
@@ -194,7 +194,7 @@ pub fn pixel_ray(
     rng: &mut Rng,
 ) -> Ray {
     let position = pixel + pixel_offset(pixels, spp, i, rng);
-    camera.sample_ray(position, rng.next_vec2())
+    camera.ray_through(position, rng.next_vec2())
 }
 
 // ANCHOR: pixel_offset
@@ -242,7 +242,7 @@ pub struct Pass {
 /// number of samples dropped as NaN or infinite.
 pub fn render_progressive(
     scene: &impl Intersect,
-    camera: &impl PathCamera,
+    camera: &Camera,
     settings: &Settings,
     passes: Passes,
     stops: &[u32],

@@ -2,8 +2,8 @@
 
 use glam::{Vec2, Vec3};
 
+use crate::camera::Camera;
 use crate::pathtrace::estimator::radiance_observed;
-use crate::pathtrace::lens::PathCamera;
 use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::progressive::{PixelSampling, pixel_ray};
 use crate::pathtrace::rng::Rng;
@@ -63,7 +63,7 @@ impl PathObserver for RecordedPath {
 /// traced by the estimator itself and recorded.
 pub fn record_path(
     scene: &impl Intersect,
-    camera: &impl PathCamera,
+    camera: &Camera,
     settings: &Settings,
     seed: u64,
     (x, y): (u32, u32),

@@ -3,10 +3,9 @@
 
 use glam::Vec3;
 
-use crate::camera::{Film, Frame, PinholeCamera};
+use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::error::Result;
 use crate::material::Material;
-use crate::pathtrace::lens::LensCamera;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
 
@@ -33,7 +32,7 @@ impl SceneName {
     ];
 
     /// The scene at `width` x `height` pixels, and its pinhole camera.
-    pub fn build(self, width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+    pub fn build(self, width: u32, height: u32) -> Result<(Scene, Camera)> {
         match self {
             SceneName::Cornell => cornell(width, height),
             SceneName::TwoLights => two_lights(width, height),
@@ -51,10 +50,10 @@ pub fn look_camera(
     eye: Vec3,
     direction: Vec3,
     half_height: f32,
-) -> Result<LensCamera> {
+) -> Result<Camera> {
     let film = Film::centred(width, height, half_height)?;
     let frame = Frame::look(eye, direction, Vec3::Y)?;
-    Ok(LensCamera::pinhole(PinholeCamera::new(film, 1.0, frame)?))
+    Ok(PinholeCamera::new(film, 1.0, frame)?.into())
 }
 
 /// The side of the Cornell box's square light: its area equals the disc smallpt's
@@ -78,7 +77,7 @@ pub const CORNELL_LIGHT_GAP: f32 = 0.05;
 ///
 /// smallpt's front wall is black (albedo 0, no emission): a ray that hits it gets
 /// the same radiance, 0, as a ray that escapes, so it is left out.
-pub fn cornell(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+pub fn cornell(width: u32, height: u32) -> Result<(Scene, Camera)> {
     let grey = Material::diffuse(Vec3::splat(0.75))?;
     let wall = |point: (f32, f32, f32), normal: Vec3, material| -> Result<Object> {
         let plane = Plane::new(Vec3::from(point), normal)?;
@@ -135,7 +134,7 @@ pub fn cornell(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
 /// STABILITY S16 (pbrt-v4's interior furnace): a unit sphere of albedo 0.5 that
 /// emits 0.5, seen from its centre. Every path sees 0.5 + 0.5 * 0.5 + ...: depth d
 /// gives 0.5 (1 - 0.5^(d+1)) / (1 - 0.5), infinite depth exactly 1.
-pub fn interior_furnace(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+pub fn interior_furnace(width: u32, height: u32) -> Result<(Scene, Camera)> {
     let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)?);
     let objects = vec![Object::emitting(
         sphere,
@@ -150,7 +149,7 @@ pub fn interior_furnace(width: u32, height: u32) -> Result<(Scene, LensCamera)> 
 /// of radiance 1. A ray that hits it sees exactly 0.5 (one bounce, then the
 /// environment); each wrong self-hit multiplies by 0.5 again. The camera, 3 units in
 /// front along +Z, sees only the sphere.
-pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, LensCamera)> {
+pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, Camera)> {
     let sphere = Shape::Sphere(Sphere::new(centre, 1.0)?);
     let objects = vec![Object::new(sphere, Material::diffuse(Vec3::splat(0.5))?)];
     let camera = look_camera(width, height, centre + 3.0 * Vec3::Z, -Vec3::Z, 0.2)?;
@@ -169,7 +168,7 @@ pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, Len
 /// under the large one (points on the sphere seen at wide angles), MIS is close to
 /// the better of the two under each, and cone sampling of the spheres leaves MIS
 /// little to add on a Lambertian floor.
-pub fn two_lights(width: u32, height: u32) -> Result<(Scene, LensCamera)> {
+pub fn two_lights(width: u32, height: u32) -> Result<(Scene, Camera)> {
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     let small = Sphere::new(Vec3::new(-1.5, 1.0, 0.0), 0.05)?;
     let large = Sphere::new(Vec3::new(1.5, 1.5, 0.0), 1.0)?;

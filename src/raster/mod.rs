@@ -129,9 +129,9 @@ impl Default for RasterSettings {
 
 /// The viewer as lighting needs it.
 pub fn viewer(camera: &Camera) -> Viewer {
-    match camera {
-        Camera::Pinhole(c) => Viewer::Point(c.frame().position()),
-        Camera::Ortho(c) => Viewer::Direction(c.frame().basis().w()),
+    match camera.pinhole() {
+        Some(c) => Viewer::Point(c.frame().position()),
+        None => Viewer::Direction(camera.frame().basis().w()),
     }
 }
 

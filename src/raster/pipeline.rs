@@ -38,9 +38,9 @@ impl Pipeline {
     /// The view, projection and viewport matrices that reproduce `camera`.
     pub fn new(camera: &Camera, depth: DepthRange) -> Result<Pipeline> {
         let film = *camera.film();
-        let projection = match camera {
-            Camera::Pinhole(c) => perspective(&film, c.screen_distance(), depth)?,
-            Camera::Ortho(_) => orthographic(&film, depth)?,
+        let projection = match camera.pinhole() {
+            Some(c) => perspective(&film, c.screen_distance(), depth)?,
+            None => orthographic(&film, depth)?,
         };
         Ok(Pipeline {
             view: view(camera.frame())?,

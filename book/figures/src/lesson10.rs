@@ -4,6 +4,7 @@
 
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
+use render_lessons::camera::Camera;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
 use render_lessons::course::report::num;
@@ -12,9 +13,7 @@ use render_lessons::material::Material;
 use render_lessons::pathtrace::progressive::render_progressive;
 use render_lessons::pathtrace::record::{PathVertex, RecordedPath, record_path};
 use render_lessons::pathtrace::scenes::SceneName;
-use render_lessons::pathtrace::{
-    LensCamera, Passes, PixelSampling, Rng, Sampling, Settings, scenes,
-};
+use render_lessons::pathtrace::{Passes, PixelSampling, Rng, Sampling, Settings, scenes};
 use render_lessons::sampling::{cosine_hemisphere, uniform_hemisphere};
 use render_lessons::scene::Scene;
 
@@ -196,7 +195,7 @@ impl Step {
 /// first path, in row order, that `wanted` accepts; a short search, done once.
 fn find_path(
     scene: &Scene,
-    camera: &LensCamera,
+    camera: &Camera,
     s: &Settings,
     wanted: impl Fn(&Scene, &RecordedPath) -> bool,
 ) -> Option<((u32, u32), RecordedPath)> {
@@ -336,8 +335,8 @@ pub fn path_figure() -> Result<Diagram> {
 }
 // ANCHOR_END: path_figure
 
-fn camera_eye(camera: &LensCamera) -> Vec3 {
-    camera.ray(Vec2::splat(0.5), Vec2::ZERO).origin()
+fn camera_eye(camera: &Camera) -> Vec3 {
+    camera.ray_through(Vec2::splat(0.5), Vec2::ZERO).origin()
 }
 
 /// A map from the unit square to directions.

@@ -5,7 +5,7 @@ use glam::{Vec2, Vec3};
 
 use super::place::Place;
 use super::{Diagram, palette};
-use crate::camera::Camera;
+use crate::camera::{Camera, Film};
 use crate::ray::Ray;
 
 /// Which world plane a diagram shows, and how a world point lands on the page.
@@ -153,10 +153,11 @@ impl CameraRays {
         let w = self.camera.frame().basis().w();
         let pixel = |&(x, y): &(u32, u32)| {
             let ray = self.camera.ray(x, y);
-            match &self.camera {
-                Camera::Ortho(_) => (ray, ray.origin(), self.reach),
-                Camera::Pinhole(c) => {
-                    let s = c.frame().point_to_world(c.screen_point(x, y));
+            match self.camera.pinhole() {
+                None => (ray, ray.origin(), self.reach),
+                Some(c) => {
+                    let s = c.screen_point(Film::pixel_centre(x, y));
+                    let s = c.frame().point_to_world(s);
                     (ray, s, self.reach / ray.direction().dot(-w))
                 }
             }
@@ -179,9 +180,9 @@ impl CameraRays {
         let page = |p: Vec3| self.view.project(p);
         let frame = self.camera.frame();
         let film = self.camera.film();
-        let depth = match &self.camera {
-            Camera::Ortho(_) => 0.0,
-            Camera::Pinhole(c) => -c.screen_distance(),
+        let depth = match self.camera.pinhole() {
+            None => 0.0,
+            Some(c) => -c.screen_distance(),
         };
         // The plane edge-on: its midline along v from the side, along u from above.
         let (edge, on_plane) = match self.view {

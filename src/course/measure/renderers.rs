@@ -11,13 +11,14 @@
 use std::time::Instant;
 
 use super::{Measured, Quality};
+use crate::camera::Camera;
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
 use crate::pathtrace::scenes::cornell;
-use crate::pathtrace::{Accumulator, LensCamera, PixelSampling, Sampling, Settings};
+use crate::pathtrace::{Accumulator, PixelSampling, Sampling, Settings};
 use crate::scene::Scene;
 
 /// The four strategies of lesson 10, worst first, with their names in the legend.
@@ -79,7 +80,7 @@ fn settings(sampling: Sampling) -> Settings {
 }
 
 /// The reference image: MIS, `spp` samples per pixel, its own seed.
-pub fn reference(scene: &Scene, camera: &LensCamera, spp: u32) -> Result<Framebuffer> {
+pub fn reference(scene: &Scene, camera: &Camera, spp: u32) -> Result<Framebuffer> {
     let mut acc = Accumulator::new(camera, REFERENCE_SEED);
     let s = settings(Sampling::Mis);
     acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp, None)
@@ -90,7 +91,7 @@ pub fn reference(scene: &Scene, camera: &LensCamera, spp: u32) -> Result<Framebu
 /// `passes`, rendering with `sampling`. Only the passes are timed, not the RMSE.
 pub fn error_curve(
     scene: &Scene,
-    camera: &LensCamera,
+    camera: &Camera,
     sampling: Sampling,
     reference: &Framebuffer,
     passes: &[u32],

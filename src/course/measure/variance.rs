@@ -12,6 +12,7 @@
 //! which the estimator finds only by following the specular bounce, whatever the
 //! strategy; sigma^2 is measured a second time with them left out.
 
+use crate::camera::Camera;
 use crate::ray::Interval;
 use glam::{DVec4, Vec2, Vec3};
 use rayon::prelude::*;
@@ -20,9 +21,7 @@ use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 use crate::material::Material;
 use crate::pathtrace::progressive::pixel_ray;
-use crate::pathtrace::{
-    LensCamera, PathCamera, PathObserver, PixelSampling, Rng, Settings, radiance_observed,
-};
+use crate::pathtrace::{PathObserver, PixelSampling, Rng, Settings, radiance_observed};
 use crate::render::in_pool;
 use crate::scene::Scene;
 
@@ -128,7 +127,7 @@ fn classify(scene: &Scene, first: Option<usize>) -> Seen {
 /// each pixel's random stream seeded from (`seed`, x, y), on `threads` threads.
 pub fn pixel_variance(
     scene: &Scene,
-    camera: &LensCamera,
+    camera: &Camera,
     settings: &Settings,
     spp: u32,
     seed: u64,
@@ -152,7 +151,7 @@ pub fn pixel_variance(
             }
         }
         let m = moments / f64::from(spp.max(1));
-        let centre = camera.sample_ray(corner + Vec2::splat(0.5), Vec2::splat(0.5));
+        let centre = camera.ray_through(corner + Vec2::splat(0.5), Vec2::splat(0.5));
         let first = scene
             .closest(&centre, Interval::AHEAD)
             .map(|found| found.object);

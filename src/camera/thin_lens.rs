@@ -8,7 +8,7 @@
 
 use glam::{Vec2, Vec3};
 
-use crate::camera::{Camera, Film, PinholeCamera};
+use super::{Film, Frame, PinholeCamera};
 use crate::error::{Error, Result, finite, positive};
 use crate::ray::Ray;
 use crate::sampling::uniform_disc;
@@ -16,23 +16,27 @@ use crate::sampling::uniform_disc;
 /// A pinhole camera's frame and film, with a lens of radius `aperture` focused at
 /// `focus_distance`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LensCamera {
+pub struct ThinLensCamera {
     pinhole: PinholeCamera,
     aperture: f32,
     focus_distance: f32,
 }
 
-impl LensCamera {
+impl ThinLensCamera {
     /// A thin lens on `pinhole`'s frame and film. Rejects a negative or non-finite
     /// aperture and a focus distance that is not finite and positive.
-    pub fn new(pinhole: PinholeCamera, aperture: f32, focus_distance: f32) -> Result<LensCamera> {
+    pub fn new(
+        pinhole: PinholeCamera,
+        aperture: f32,
+        focus_distance: f32,
+    ) -> Result<ThinLensCamera> {
         if finite("aperture", aperture)? < 0.0 {
             return Err(Error::Invalid {
                 param: "aperture",
                 reason: "must be >= 0 (0 is a pinhole)",
             });
         }
-        let camera = LensCamera {
+        let camera = ThinLensCamera {
             pinhole,
             aperture,
             focus_distance: positive("focus", focus_distance)?,
@@ -57,8 +61,7 @@ impl LensCamera {
             Vec2::new(0.0, h),
             Vec2::new(w, h),
         ] {
-            let s = screen_point(film, corner).extend(-self.pinhole.screen_distance());
-            let focus = s * scale;
+            let focus = self.pinhole.screen_point(corner) * scale;
             if focus.normalize_or_zero() == Vec3::ZERO {
                 return Err(Error::Invalid {
                     param: "focus",
@@ -80,24 +83,25 @@ impl LensCamera {
         Ok(())
     }
 
-    /// The pinhole camera itself (aperture 0; focus distance irrelevant, set to 1).
-    pub fn pinhole(pinhole: PinholeCamera) -> LensCamera {
-        LensCamera {
-            pinhole,
-            aperture: 0.0,
-            focus_distance: 1.0,
-        }
+    /// The same camera with a lens of radius `aperture` focused at `focus_distance`
+    /// (validated as in [`ThinLensCamera::new`]).
+    pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<ThinLensCamera> {
+        ThinLensCamera::new(self.pinhole, aperture, focus_distance)
     }
 
-    /// The same camera with a lens of radius `aperture` focused at `focus_distance`
-    /// (validated as in [`LensCamera::new`]).
-    pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<LensCamera> {
-        LensCamera::new(self.pinhole, aperture, focus_distance)
+    /// The pinhole camera the lens sits on.
+    pub fn pinhole(&self) -> &PinholeCamera {
+        &self.pinhole
     }
 
     /// The film: resolution and screen rectangle.
     pub fn film(&self) -> &Film {
         self.pinhole.film()
+    }
+
+    /// The camera's position and basis.
+    pub fn frame(&self) -> &Frame {
+        self.pinhole.frame()
     }
 
     // ANCHOR: ray
@@ -109,78 +113,16 @@ impl LensCamera {
     /// **s** = (x, y, -s), s the screen distance; it meets the plane in focus, at
     /// distance z_f in front of the eye, at p_f = **s** z_f / s. The lens ray starts
     /// at a uniform point o' (`lens`) of the lens disc (z = 0) and goes towards p_f.
-    pub fn ray(&self, pixel: Vec2, u: Vec2) -> Ray {
-        let s = screen_point(self.pinhole.film(), pixel).extend(-self.pinhole.screen_distance());
-        let (origin, direction) = if self.aperture == 0.0 {
-            (Vec3::ZERO, s.normalize())
-        } else {
-            let lens = (self.aperture * uniform_disc(u)).extend(0.0);
-            let focus = s * (self.focus_distance / self.pinhole.screen_distance());
-            (lens, (focus - lens).normalize())
-        };
-        let frame = self.pinhole.frame();
-        Ray::from_checked(
-            frame.point_to_world(origin),
-            frame.vector_to_world(direction),
-        )
+    /// With aperture 0 it is the pinhole's ray.
+    pub fn ray_through(&self, pixel: Vec2, u: Vec2) -> Ray {
+        if self.aperture == 0.0 {
+            return self.pinhole.ray_through(pixel);
+        }
+        let s = self.pinhole.screen_point(pixel);
+        let lens = (self.aperture * uniform_disc(u)).extend(0.0);
+        let focus = s * (self.focus_distance / self.pinhole.screen_distance());
+        let local = Ray::from_checked(lens, (focus - lens).normalize());
+        self.frame().ray_to_world(&local)
     }
     // ANCHOR_END: ray
-}
-
-// ANCHOR: path_camera
-/// A camera the path tracer can render through: a film, and a ray through any point
-/// of a pixel, not only its centre (and through the lens point chosen by `lens`).
-pub trait PathCamera: Sync {
-    /// The film: resolution and screen rectangle.
-    fn film(&self) -> &Film;
-    /// The ray through the continuous pixel position `pixel` (column, row from the
-    /// top), `lens` in the unit square choosing a point of the lens if there is one.
-    fn sample_ray(&self, pixel: Vec2, lens: Vec2) -> Ray;
-}
-
-impl PathCamera for LensCamera {
-    fn film(&self) -> &Film {
-        self.pinhole.film()
-    }
-
-    fn sample_ray(&self, pixel: Vec2, lens: Vec2) -> Ray {
-        self.ray(pixel, lens)
-    }
-}
-
-/// The cameras of Lecture 4: a pinhole is a lens of aperture 0; an orthographic
-/// camera's ray starts at the screen point and runs along the camera's -Z.
-impl PathCamera for Camera {
-    fn film(&self) -> &Film {
-        Camera::film(self)
-    }
-
-    fn sample_ray(&self, pixel: Vec2, lens: Vec2) -> Ray {
-        match self {
-            Camera::Pinhole(c) => LensCamera::pinhole(*c).ray(pixel, lens),
-            Camera::Ortho(c) => {
-                let origin = screen_point(c.film(), pixel).extend(0.0);
-                let frame = c.frame();
-                Ray::from_checked(
-                    frame.point_to_world(origin),
-                    frame.vector_to_world(Vec3::NEG_Z),
-                )
-            }
-        }
-    }
-}
-// ANCHOR_END: path_camera
-
-/// The screen-plane point of a continuous pixel position, the inverse of
-/// [`Film::plane_to_pixel`]; at a pixel centre it is bit for bit
-/// [`Film::pixel_to_plane`], rows flipped the same way (counted from the bottom on the
-/// plane, from the top in the image).
-fn screen_point(film: &Film, pixel: Vec2) -> Vec2 {
-    let (x_min, x_max) = film.x_extent();
-    let (y_min, y_max) = film.y_extent();
-    let from_bottom = film.height() as f32 - pixel.y;
-    Vec2::new(
-        pixel.x / film.width() as f32 * (x_max - x_min) + x_min,
-        from_bottom / film.height() as f32 * (y_max - y_min) + y_min,
-    )
 }

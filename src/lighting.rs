@@ -50,7 +50,7 @@ pub fn at_hit(
     object: &Object,
     visible: impl FnOnce(&PointLight) -> bool,
 ) -> Vec3 {
-    let Some(light) = scene.light() else {
+    let Some(light) = scene.point_light() else {
         return object.colour() * AMBIENT;
     };
     lambert(hit.point, hit.facing(), object.colour(), &light, || {

@@ -131,13 +131,13 @@ pub struct PointLight {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     objects: Vec<Object>,
-    lights: Vec<usize>,
+    emitters: Vec<usize>,
     background: Vec3,
-    light: Option<PointLight>,
+    point_light: Option<PointLight>,
 }
 
 /// `v` if finite and not negative in any channel.
-fn radiance(param: &'static str, v: Vec3) -> Result<Vec3> {
+fn check_radiance(param: &'static str, v: Vec3) -> Result<Vec3> {
     let v = finite3(param, v)?;
     if v.min_element() >= 0.0 {
         Ok(v)
@@ -159,9 +159,9 @@ impl Scene {
     /// every emitter must be a light that next event estimation can sample, or its
     /// light would be missed.
     pub fn new(objects: Vec<Object>, background: Vec3) -> Result<Scene> {
-        let mut lights = Vec::new();
+        let mut emitters = Vec::new();
         for (i, o) in objects.iter().enumerate() {
-            radiance("emission", o.emission)?;
+            check_radiance("emission", o.emission)?;
             o.material.check()?;
             if o.is_emissive() {
                 if !matches!(o.shape, Shape::Sphere(_) | Shape::Quad(_)) {
@@ -170,23 +170,23 @@ impl Scene {
                         reason: "is only allowed on spheres and quads (the lights we can sample)",
                     });
                 }
-                lights.push(i);
+                emitters.push(i);
             }
         }
         Ok(Scene {
             objects,
-            lights,
-            background: radiance("background", background)?,
-            light: None,
+            emitters,
+            background: check_radiance("background", background)?,
+            point_light: None,
         })
     }
 
     /// The same scene lit by the point `light` (lessons 08 and 09's shading).
     pub fn with_light(self, light: PointLight) -> Result<Scene> {
         finite3("light position", light.position)?;
-        radiance("light intensity", light.intensity)?;
+        check_radiance("light intensity", light.intensity)?;
         Ok(Scene {
-            light: Some(light),
+            point_light: Some(light),
             ..self
         })
     }
@@ -202,8 +202,8 @@ impl Scene {
     }
 
     /// The indices (into [`Scene::objects`]) of the emissive objects.
-    pub fn lights(&self) -> &[usize] {
-        &self.lights
+    pub fn emitters(&self) -> &[usize] {
+        &self.emitters
     }
 
     /// The colour (or radiance) of rays that hit nothing.
@@ -212,8 +212,8 @@ impl Scene {
     }
 
     /// The point light, if the scene has one.
-    pub fn light(&self) -> Option<PointLight> {
-        self.light
+    pub fn point_light(&self) -> Option<PointLight> {
+        self.point_light
     }
 
     // ANCHOR: closest_hit
@@ -276,9 +276,9 @@ pub trait Intersect: Sync {
         self.scene().objects()
     }
 
-    /// The emitters' indices ([`Scene::lights`]).
-    fn lights(&self) -> &[usize] {
-        self.scene().lights()
+    /// The emitters' indices ([`Scene::emitters`]).
+    fn emitters(&self) -> &[usize] {
+        self.scene().emitters()
     }
 
     /// What rays that hit nothing see ([`Scene::background`]).
@@ -286,9 +286,9 @@ pub trait Intersect: Sync {
         self.scene().background()
     }
 
-    /// The point light, if any ([`Scene::light`]).
-    fn light(&self) -> Option<PointLight> {
-        self.scene().light()
+    /// The point light, if any ([`Scene::point_light`]).
+    fn point_light(&self) -> Option<PointLight> {
+        self.scene().point_light()
     }
 }
 // ANCHOR_END: intersect

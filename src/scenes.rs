@@ -211,7 +211,7 @@ pub fn lesson09_mesh_scene(scene: &Scene, mesh: &Model) -> Result<Scene> {
     let mut objects = scene.objects()[..1].to_vec();
     objects.extend(mesh.objects()?);
     let floor_and_mesh = Scene::new(objects, scene.background())?;
-    match scene.light() {
+    match scene.point_light() {
         Some(light) => floor_and_mesh.with_light(light),
         None => Ok(floor_and_mesh),
     }

@@ -1596,7 +1596,7 @@ fn the_light_sample_exercises_are_the_crates_numbers() {
     // Step 5's exercise: the Cornell box's floor under its ceiling light, through the
     // crate's own scene, light density and BRDF.
     let (scene, _) = cornell(16, 12).unwrap();
-    let light = &scene.objects()[scene.lights()[0]];
+    let light = &scene.objects()[scene.emitters()[0]];
     let Shape::Quad(quad) = &light.shape else {
         panic!("the Cornell light is a quad")
     };

@@ -754,7 +754,7 @@ fn chapter_09_sagitta_of_the_tessellated_sphere() {
 #[test]
 fn chapter_09_gouraud_floor_corners_are_about_7070_from_the_light() {
     let scene = lesson08(Vec3::ZERO).unwrap();
-    let light = scene.light().unwrap().position;
+    let light = scene.point_light().unwrap().position;
     let floor = &tessellate(&scene, 64).unwrap()[0];
     assert_eq!(floor.mesh.positions.len(), 4);
     for corner in &floor.mesh.positions {

@@ -189,7 +189,7 @@ fn emission_weight(
         Previous::LightSampled => 0.0,
         Previous::Mis { from, pdf } => {
             let shape = &scene.objects()[index].shape;
-            let choose = 1.0 / scene.lights().len() as f32;
+            let choose = 1.0 / scene.emitters().len() as f32;
             let light_pdf =
                 choose * light::pdf(shape, from, hit.point, hit.normal, s.sphere_lights);
             power_heuristic(pdf, light_pdf)

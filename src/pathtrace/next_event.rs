@@ -47,12 +47,12 @@ pub(super) fn direct_light(
     s: &Settings,
     observer: &mut impl PathObserver,
 ) -> Vec3 {
-    if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.lights().is_empty() {
+    if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.emitters().is_empty() {
         return Vec3::ZERO;
     }
-    let count = scene.lights().len();
+    let count = scene.emitters().len();
     let pick = ((rng.next_f32() * count as f32) as usize).min(count - 1);
-    let light = &scene.objects()[scene.lights()[pick]];
+    let light = &scene.objects()[scene.emitters()[pick]];
     let u = rng.next_vec2();
     let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
         return Vec3::ZERO;

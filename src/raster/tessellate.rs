@@ -78,7 +78,7 @@ pub fn floor_settings(scene: &Scene) -> RasterSettings {
 
 /// The scene's point light: the one light a rasterizer shades with.
 pub fn point_light(scene: &Scene) -> Result<PointLight> {
-    scene.light().ok_or(Error::Invalid {
+    scene.point_light().ok_or(Error::Invalid {
         param: "scene",
         reason: "needs a point light to be rasterized",
     })

@@ -129,6 +129,7 @@ impl Film {
     }
     // ANCHOR_END: pixel_to_plane
 
+    // ANCHOR: plane_to_pixel
     /// The inverse of [`Film::pixel_to_plane`] for any plane point: continuous pixel
     /// coordinates (column, row from the top), so a pixel centre maps to (px + 0.5, py + 0.5).
     pub fn plane_to_pixel(&self, p: Vec2) -> Vec2 {
@@ -136,4 +137,5 @@ impl Film {
         let sy = (p.y - self.y_min) / (self.y_max - self.y_min) * self.height as f32;
         Vec2::new(sx, self.height as f32 - sy)
     }
+    // ANCHOR_END: plane_to_pixel
 }

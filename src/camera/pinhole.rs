@@ -130,6 +130,7 @@ impl PinholeCamera {
     }
     // ANCHOR_END: ray
 
+    // ANCHOR: project
     /// Where the world point `x` lands in the image, in continuous pixel coordinates,
     /// or `None` when it is not in front of the eye.
     pub fn project(&self, x: Vec3) -> Option<Vec2> {
@@ -140,4 +141,5 @@ impl PinholeCamera {
         let on_screen = local.truncate() * (self.screen_distance / -local.z);
         Some(self.film.plane_to_pixel(on_screen))
     }
+    // ANCHOR_END: project
 }

@@ -146,6 +146,7 @@ fn main() -> ExitCode {
     lesson::run(|| {
         let (angle, point, output) = (args.angle, args.point, &args.output);
         let angle = lesson::angle("--angle", angle)?;
+        let compose = args.mine.then(mine::my_compose).transpose()?;
         let all = [slide_transforms(angle)?, two_orders(angle)?.to_vec()].concat();
         if all.iter().any(|(_, t)| !t.point(point).is_finite()) {
             return Err(Error::Invalid {
@@ -155,8 +156,8 @@ fn main() -> ExitCode {
         }
         lesson::print(&numbers(angle, point)?);
         output.diagram("01_transform_order.png", &order_figure(angle)?)?;
-        if args.mine {
-            let figure = my_order_figure(angle, mine::my_compose()?)?;
+        if let Some(compose) = compose {
+            let figure = my_order_figure(angle, compose)?;
             output.diagram("01_transform_order_mine.png", &figure)?;
         }
         Ok(())

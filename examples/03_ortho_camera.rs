@@ -149,14 +149,15 @@ fn main() -> ExitCode {
         let x = lesson::extent("--x-min/--x-max", args.x_min, args.x_max)?;
         let y = lesson::extent("--y-min/--y-max", args.y_min, args.y_max)?;
         let cam = camera(args.width, args.height, x, y)?;
+        let pixel_to_plane = args.mine.then(mine::my_pixel_to_plane).transpose()?;
         lesson::print(&numbers(&cam));
         let out = &args.output;
         out.diagram("03_plane.png", &plane_figure(cam.film())?)?;
         out.diagram("03_rays.png", &rays_figure(&cam)?)?;
         let picture = Film::new(320, 240, x, y)?;
         out.image("03_origins.png", &origin_image(&picture)?)?;
-        if args.mine {
-            let image = my_origin_image(&picture, mine::my_pixel_to_plane()?)?;
+        if let Some(pixel_to_plane) = pixel_to_plane {
+            let image = my_origin_image(&picture, pixel_to_plane)?;
             out.image("03_origins_mine.png", &image)?;
         }
         Ok(())

@@ -177,12 +177,13 @@ fn main() -> ExitCode {
         let [at_origin, placed] = cameras(s, frame)?;
         let view_width = lesson::pixels("--view-width", args.view_width, MAX_RESOLUTION / 2)?;
         let views = views(frame, view_width, s * 0.5)?;
+        let pinhole_ray = args.mine.then(mine::my_pinhole_ray).transpose()?;
         lesson::print(&numbers(&at_origin, &placed, d, k));
         let out = &args.output;
         out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
         out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)?;
-        if args.mine {
-            let image = my_pinhole_view(frame, view_width, s * 0.5, mine::my_pinhole_ray()?)?;
+        if let Some(pinhole_ray) = pinhole_ray {
+            let image = my_pinhole_view(frame, view_width, s * 0.5, pinhole_ray)?;
             out.image("06_pinhole_mine.png", &image)?;
         }
         Ok(())

@@ -13,6 +13,7 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::course::diagram::{Diagram, Place, palette};
 use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::mine;
 use render_lessons::course::report::{Table, vec3};
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
@@ -28,6 +29,10 @@ pub struct Args {
     /// The point (and vector) to transform, as x,y,z.
     #[arg(long, default_value = "1,2,3", value_parser = parse_vec3)]
     pub point: Vec3,
+    /// Also draw the figure with your own `compose` (coding exercise 1.2):
+    /// `cargo run --features exercises --example 01_transforms -- --mine`.
+    #[arg(long)]
+    pub mine: bool,
     #[command(flatten)]
     pub output: Output,
 }
@@ -91,6 +96,28 @@ pub fn house() -> Vec<Vec3> {
 
 /// The figure: the house, and the house moved by both compositions.
 pub fn order_figure(degrees: f32) -> Result<Diagram> {
+    figure_of(degrees, two_orders(degrees)?)
+}
+
+/// The figure drawn with `compose`, the student's own once it passes its check
+/// (coding exercise 1.2, `src/course/exercises/ch01.rs`): the same two orders, each
+/// composed by it.
+pub fn my_order_figure(degrees: f32, compose: mine::Compose) -> Result<Diagram> {
+    let rotate = Transform::rotation_z(degrees.to_radians())?;
+    let translate = Transform::translation(3.0, 0.0, 0.0)?;
+    let yours =
+        |first: &Transform, second: &Transform| Transform::from_matrix(compose(first, second));
+    figure_of(
+        degrees,
+        [
+            ("rotate, then translate", yours(&rotate, &translate)?),
+            ("translate, then rotate", yours(&translate, &rotate)?),
+        ],
+    )
+}
+
+/// The house, and the house moved by each of `orders`.
+fn figure_of(degrees: f32, orders: [(&str, Transform); 2]) -> Result<Diagram> {
     let mut d = Diagram::new(800, 560, (-2.5, 6.5), (-1.5, 4.2))?;
     d.title(&format!(
         "Rotate {degrees} degrees about Z and translate by (3, 0, 0): the order matters"
@@ -101,10 +128,7 @@ pub fn order_figure(degrees: f32) -> Result<Diagram> {
     d.fill(&shape, palette::GRID, 200);
     d.outline(&shape, palette::INK, 1.5);
     d.text(Vec2::new(0.5, 0.4), "original", palette::INK, Place::Centre);
-    for ((name, t), color) in two_orders(degrees)?
-        .into_iter()
-        .zip([palette::RAY, palette::HIT])
-    {
+    for ((name, t), color) in orders.into_iter().zip([palette::RAY, palette::HIT]) {
         let moved: Vec<Vec2> = house().into_iter().map(|p| xy(t.point(p))).collect();
         d.fill(&moved, color, 60);
         d.outline(&moved, color, 2.0);
@@ -118,13 +142,11 @@ pub fn order_figure(degrees: f32) -> Result<Diagram> {
 }
 
 fn main() -> ExitCode {
-    let Args {
-        angle,
-        point,
-        output,
-    } = lesson::parse::<Args>();
+    let args = lesson::parse::<Args>();
     lesson::run(|| {
+        let (angle, point, output) = (args.angle, args.point, &args.output);
         let angle = lesson::angle("--angle", angle)?;
+        let compose = args.mine.then(mine::my_compose).transpose()?;
         let all = [slide_transforms(angle)?, two_orders(angle)?.to_vec()].concat();
         if all.iter().any(|(_, t)| !t.point(point).is_finite()) {
             return Err(Error::Invalid {
@@ -133,6 +155,11 @@ fn main() -> ExitCode {
             });
         }
         lesson::print(&numbers(angle, point)?);
-        output.diagram("01_transform_order.png", &order_figure(angle)?)
+        output.diagram("01_transform_order.png", &order_figure(angle)?)?;
+        if let Some(compose) = compose {
+            let figure = my_order_figure(angle, compose)?;
+            output.diagram("01_transform_order_mine.png", &figure)?;
+        }
+        Ok(())
     })
 }

@@ -15,6 +15,7 @@ use render_lessons::Result;
 use render_lessons::camera::{Film, OrthoCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, View};
 use render_lessons::course::lesson::{self, Output, parse_finite};
+use render_lessons::course::mine;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 
@@ -136,13 +137,10 @@ pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Resul
 }
 // ANCHOR_END: origin_image
 
-/// The origin image drawn with the student's own `pixel_to_plane`, once it passes its
-/// check (coding exercise 3.1, `src/course/exercises/ch03.rs`).
-pub fn my_origin_image(f: &Film) -> Result<Framebuffer> {
-    let mine = lesson::my_pixel_to_plane()?;
-    colour_by_origin(f, |x, y| {
-        mine(f.x_extent(), f.y_extent(), f.width(), f.height(), x, y)
-    })
+/// The origin image drawn with `pixel_to_plane`, the student's own once it passes
+/// its check (coding exercise 3.1, `src/course/exercises/ch03.rs`).
+pub fn my_origin_image(film: &Film, pixel_to_plane: mine::PixelToPlane) -> Result<Framebuffer> {
+    colour_by_origin(film, |x, y| pixel_to_plane(film, x, y))
 }
 
 fn main() -> ExitCode {
@@ -151,14 +149,16 @@ fn main() -> ExitCode {
         let x = lesson::extent("--x-min/--x-max", args.x_min, args.x_max)?;
         let y = lesson::extent("--y-min/--y-max", args.y_min, args.y_max)?;
         let cam = camera(args.width, args.height, x, y)?;
+        let pixel_to_plane = args.mine.then(mine::my_pixel_to_plane).transpose()?;
         lesson::print(&numbers(&cam));
         let out = &args.output;
         out.diagram("03_plane.png", &plane_figure(cam.film())?)?;
         out.diagram("03_rays.png", &rays_figure(&cam)?)?;
         let picture = Film::new(320, 240, x, y)?;
         out.image("03_origins.png", &origin_image(&picture)?)?;
-        if args.mine {
-            out.image("03_origins_mine.png", &my_origin_image(&picture)?)?;
+        if let Some(pixel_to_plane) = pixel_to_plane {
+            let image = my_origin_image(&picture, pixel_to_plane)?;
+            out.image("03_origins_mine.png", &image)?;
         }
         Ok(())
     })

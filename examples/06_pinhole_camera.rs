@@ -15,6 +15,7 @@ use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, MAX_RESOLUTION, OrthoCamera, PinholeCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
 use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::mine;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Ray;
@@ -39,6 +40,10 @@ pub struct Args {
     /// Width in pixels of each of the two views of the floor grid.
     #[arg(long, default_value_t = 320)]
     pub view_width: u32,
+    /// Also draw the pinhole view with your own `pinhole_ray` (coding exercise 6.1):
+    /// `cargo run --features exercises --example 06_pinhole_camera -- --mine`.
+    #[arg(long)]
+    pub mine: bool,
     #[command(flatten)]
     pub output: Output,
 }
@@ -149,6 +154,21 @@ pub fn side_by_side(cameras: &[Camera; 2]) -> Result<Framebuffer> {
 }
 // ANCHOR_END: side_by_side
 
+/// The pinhole half of the comparison drawn with `pinhole_ray`, the student's own
+/// once it passes its check (coding exercise 6.1, `src/course/exercises/ch06.rs`).
+pub fn my_pinhole_view(
+    frame: Frame,
+    width: u32,
+    s: f32,
+    pinhole_ray: mine::PinholeRay,
+) -> Result<Framebuffer> {
+    let film = Film::new(width, width * 3 / 4, (-4.0, 4.0), (-3.0, 3.0))?;
+    Framebuffer::from_fn(film.width(), film.height(), |x, y| {
+        let (origin, direction) = pinhole_ray(&film, s, &frame, x, y);
+        Ray::new(origin, direction).map_or(Vec3::new(1.0, 0.0, 1.0), |r| floor_colour(&r))
+    })
+}
+
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
@@ -157,9 +177,15 @@ fn main() -> ExitCode {
         let [at_origin, placed] = cameras(s, frame)?;
         let view_width = lesson::pixels("--view-width", args.view_width, MAX_RESOLUTION / 2)?;
         let views = views(frame, view_width, s * 0.5)?;
+        let pinhole_ray = args.mine.then(mine::my_pinhole_ray).transpose()?;
         lesson::print(&numbers(&at_origin, &placed, d, k));
         let out = &args.output;
         out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
-        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)
+        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)?;
+        if let Some(pinhole_ray) = pinhole_ray {
+            let image = my_pinhole_view(frame, view_width, s * 0.5, pinhole_ray)?;
+            out.image("06_pinhole_mine.png", &image)?;
+        }
+        Ok(())
     })
 }

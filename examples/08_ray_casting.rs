@@ -16,6 +16,7 @@ use clap::Parser;
 use glam::Vec3;
 use render_lessons::camera::Camera;
 use render_lessons::course::lesson::{self, ImageFlags, Output, parse_finite, parse_vec3};
+use render_lessons::course::mine;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::error::non_negative;
 use render_lessons::framebuffer::Framebuffer;
@@ -41,7 +42,8 @@ struct Args {
     #[arg(long, default_value = "10000,0,0", value_parser = parse_vec3, allow_hyphen_values = true)]
     far: Vec3,
     /// Also draw the shadowless pinhole image with your own `closest` (coding exercise
-    /// 8.1): `cargo run --release --features exercises --example 08_ray_casting -- --mine`.
+    /// 8.1) and the Lambert image with your own `lambert` (8.2):
+    /// `cargo run --release --features exercises --example 08_ray_casting -- --mine`.
     #[arg(long)]
     mine: bool,
     #[command(flatten)]
@@ -84,10 +86,10 @@ pub fn images(
 }
 // ANCHOR_END: images
 
-/// The shadowless pinhole image drawn with `mine`, the student's own `closest` once
-/// it passes its check (coding exercise 8.1, `src/course/exercises/ch08.rs`).
+/// The shadowless pinhole image drawn with `closest`, the student's own once it
+/// passes its check (coding exercise 8.1, `src/course/exercises/ch08.rs`).
 pub fn my_shadowless_image(
-    mine: lesson::Closest,
+    closest: mine::Closest,
     (width, height): (u32, u32),
     threads: Option<usize>,
 ) -> Result<Framebuffer> {
@@ -95,11 +97,23 @@ pub fn my_shadowless_image(
     let [_, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
     let shapes: Vec<_> = scene.objects().iter().map(|o| o.shape.clone()).collect();
     render(&pinhole, threads, |r| {
-        match mine(r, &shapes, Interval::AHEAD) {
+        match closest(r, &shapes, Interval::AHEAD) {
             Some(found) => scene.object(&found).colour(),
             None => scene.background(),
         }
     })
+}
+
+/// The Lambert image drawn with `lambert`, the student's own once it passes its
+/// check (coding exercise 8.2, `src/course/exercises/ch08.rs`).
+pub fn my_lambert_image(
+    lambert: mine::Lambert,
+    (width, height): (u32, u32),
+    threads: Option<usize>,
+) -> Result<Framebuffer> {
+    let scene = lesson08(Vec3::ZERO)?;
+    let [_, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
+    render(&pinhole, threads, |r| mine::lit_with(&scene, r, lambert))
 }
 
 /// How many pixels show each primitive (in scene order, then the background).
@@ -174,10 +188,14 @@ pub fn numbers(
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| {
-        let mine = args.mine.then(lesson::my_closest).transpose()?;
-        let (size, threads) = args
-            .image
-            .check(IMAGES.len() as u64 + u64::from(mine.is_some()))?;
+        let (closest, lambert) = if args.mine {
+            let closest = mine::if_passing(mine::my_closest())?;
+            (closest, mine::if_passing(mine::my_lambert())?)
+        } else {
+            (None, None)
+        };
+        let mine_images = u64::from(closest.is_some()) + u64::from(lambert.is_some());
+        let (size, threads) = args.image.check(IMAGES.len() as u64 + mine_images)?;
         non_negative("--epsilon", args.epsilon)?;
         lesson08(args.far).map_err(|_| Error::Invalid {
             param: "--far",
@@ -188,9 +206,13 @@ fn main() -> ExitCode {
         for (name, image) in IMAGES.iter().zip(&images) {
             args.output.image(name, image)?;
         }
-        if let Some(mine) = mine {
-            let image = my_shadowless_image(mine, size, threads)?;
+        if let Some(closest) = closest {
+            let image = my_shadowless_image(closest, size, threads)?;
             args.output.image("08_shadowless_mine.png", &image)?;
+        }
+        if let Some(lambert) = lambert {
+            let image = my_lambert_image(lambert, size, threads)?;
+            args.output.image("08_lambert_mine.png", &image)?;
         }
         Ok(())
     })

@@ -50,10 +50,12 @@ impl Ray {
     }
     // ANCHOR_END: at
 
+    // ANCHOR: t_closest_to
     /// The `t` of the point on the ray's line closest to `p`: (p - o) . d.
     pub fn t_closest_to(&self, p: Vec3) -> f32 {
         (p - self.origin).dot(self.direction)
     }
+    // ANCHOR_END: t_closest_to
 }
 
 // ANCHOR: interval

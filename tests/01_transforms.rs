@@ -190,3 +190,32 @@ fn lesson_01_worked_numbers() {
     let shown = format!("{:.3} {:.3} {:.3}", wrong.x, wrong.y, wrong.z);
     assert_eq!(shown, "-0.634 2.000 3.098");
 }
+
+#[test]
+fn mine_draws_the_order_figure_with_the_given_compose() {
+    // The crate's composition, in the shape of exercise 1.2, draws the lesson's figure.
+    fn reference(first: &Transform, second: &Transform) -> Mat4 {
+        first.then(*second).matrix()
+    }
+    let mine = lesson::my_order_figure(30.0, reference).unwrap();
+    assert_eq!(mine.rgba(), lesson::order_figure(30.0).unwrap().rgba());
+    // The product the wrong way round moves the houses: a different picture.
+    fn reversed(first: &Transform, second: &Transform) -> Mat4 {
+        first.matrix() * second.matrix()
+    }
+    let wrong = lesson::my_order_figure(30.0, reversed).unwrap();
+    assert_ne!(wrong.rgba(), lesson::order_figure(30.0).unwrap().rgba());
+}
+
+#[cfg(not(feature = "exercises"))]
+#[test]
+fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
+    let message = render_lessons::course::mine::my_compose()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("cargo run --features exercises --example 01_transforms -- --mine"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+}

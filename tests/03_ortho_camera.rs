@@ -163,3 +163,27 @@ fn lesson_03_worked_numbers() {
     assert_eq!(format!("{:.3}", 16.0f64 / 3.0), "5.333");
     assert_eq!(MAX_RESOLUTION, 16384, "the largest width or height");
 }
+
+#[test]
+fn mine_draws_the_origin_image_with_the_given_pixel_to_plane() {
+    // The crate's formula, in the shape of exercise 3.1, draws the lesson's image.
+    fn reference(film: &Film, px: u32, py: u32) -> Vec2 {
+        film.pixel_to_plane(px, py)
+    }
+    let film = Film::new(32, 24, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
+    let mine = lesson::my_origin_image(&film, reference).unwrap();
+    assert_eq!(mine, lesson::origin_image(&film).unwrap());
+}
+
+#[cfg(not(feature = "exercises"))]
+#[test]
+fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
+    let message = render_lessons::course::mine::my_pixel_to_plane()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("cargo run --features exercises --example 03_ortho_camera -- --mine"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+}

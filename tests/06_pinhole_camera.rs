@@ -208,3 +208,36 @@ fn lesson_06_worked_numbers() {
     let up = 30f64.to_radians().tan();
     assert_eq!(format!("{up:.4} {:.4}", up * 4.0 / 3.0), "0.5774 0.7698");
 }
+
+#[test]
+fn mine_draws_the_pinhole_view_with_the_given_pinhole_ray() {
+    // The crate's pinhole ray, in the shape of exercise 6.1, draws the right half of
+    // the lesson's comparison, bit for bit.
+    fn reference(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+        let ray = PinholeCamera::new(*film, s, *frame).unwrap().ray(px, py);
+        (ray.origin(), ray.direction())
+    }
+    let args = lesson::Args::parse_from(["06_pinhole_camera", "--view-width", "64"]);
+    let frame = Frame::look(args.position, args.direction, args.up).unwrap();
+    let s = args.screen_distance * 0.5;
+    let mine = lesson::my_pinhole_view(frame, 64, s, reference).unwrap();
+    let both = lesson::side_by_side(&lesson::views(frame, 64, s).unwrap()).unwrap();
+    for y in 0..mine.height() {
+        for x in 0..mine.width() {
+            assert_eq!(mine.get(x, y), both.get(64 + x, y), "pixel ({x}, {y})");
+        }
+    }
+}
+
+#[cfg(not(feature = "exercises"))]
+#[test]
+fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
+    let message = render_lessons::course::mine::my_pinhole_ray()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("cargo run --features exercises --example 06_pinhole_camera -- --mine"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+}

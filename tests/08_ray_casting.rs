@@ -293,14 +293,39 @@ fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
     assert_eq!(mine, pinhole);
 }
 
+#[test]
+fn mine_draws_the_lambert_image_with_the_given_lambert() {
+    // The crate's Lambert formula, in the shape of exercise 8.2, must draw exactly the
+    // lesson's Lambert image (shadow rays and all).
+    fn reference(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+        render_lessons::lighting::lambert(p, n, albedo, light, || visible)
+    }
+    let mine = lesson::my_lambert_image(reference, SMALL, None).unwrap();
+    let [_, _, lambert, ..] = lesson::images(SMALL, EPSILON, FAR, None).unwrap();
+    assert_eq!(mine, lambert);
+}
+
 #[cfg(not(feature = "exercises"))]
 #[test]
 fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
-    let message = render_lessons::course::lesson::my_closest()
-        .unwrap_err()
-        .to_string();
-    assert!(message.contains("--features exercises"), "{message}");
-    assert_eq!(message.lines().count(), 1, "{message}");
+    use render_lessons::course::mine;
+    for mine in [mine::my_closest().err(), mine::my_lambert().err()] {
+        let message = mine.expect("an error").to_string();
+        assert!(message.contains("--features exercises"), "{message}");
+        assert_eq!(message.lines().count(), 1, "{message}");
+        // The command names the lesson, so that it can be pasted as it is.
+        assert!(
+            message.contains("--example 08_ray_casting -- --mine"),
+            "{message}"
+        );
+        // Without the feature, a lesson with two exercises still stops with the error.
+        assert!(
+            mine::if_passing(Err::<(), _>(render_lessons::Error::Exercise {
+                report: message
+            }))
+            .is_err()
+        );
+    }
 }
 
 /// The numbers `08_ray_casting.md` and `08_1_light_and_shadows.md` work out by hand,

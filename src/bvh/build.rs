@@ -331,14 +331,28 @@ fn cheapest_plane(bins: &[Bin; BINS], area: f32) -> Option<(f32, usize)> {
         if left.count == 0 || right_count == 0 {
             continue; // one side empty: not a split
         }
-        let weighted = left.bounds.area() * left.count as f32 + right_area * right_count as f32;
-        let cost = TRAVERSAL_COST + weighted / area;
+        let cost = split_cost(
+            area,
+            (left.bounds.area(), left.count),
+            (right_area, right_count),
+        );
         if best.is_none_or(|(c, _)| cost < c) {
             best = Some((cost, k));
         }
     }
     best
 }
+
+// ANCHOR: split_cost
+/// The surface area heuristic's cost of splitting a node of surface area `area` into
+/// two children, each given as (surface area, primitive count), in primitive tests:
+/// C_trav + (A(L) N(L) + A(R) N(R)) / A(node). A ray that hits the node hits a child
+/// with probability about A(child) / A(node) (MacDonald and Booth 1990).
+pub fn split_cost(area: f32, left: (f32, u32), right: (f32, u32)) -> f32 {
+    let weighted = left.0 * left.1 as f32 + right.0 * right.1 as f32;
+    TRAVERSAL_COST + weighted / area
+}
+// ANCHOR_END: split_cost
 // ANCHOR_END: sah_split
 
 /// The object median: the items sorted by centroid along the centroids' longest axis

@@ -144,6 +144,7 @@ impl Film {
     }
     // ANCHOR_END: pixel_to_plane
 
+    // ANCHOR: plane_to_pixel
     /// The inverse of [`Film::film_point`]: continuous pixel coordinates (column, row
     /// from the top) of a plane point, so a pixel centre maps to (px + 0.5, py + 0.5).
     pub fn plane_to_pixel(&self, p: Vec2) -> Vec2 {
@@ -151,4 +152,5 @@ impl Film {
         let sy = (p.y - self.y_min) / (self.y_max - self.y_min) * self.height as f32;
         Vec2::new(sx, self.height as f32 - sy)
     }
+    // ANCHOR_END: plane_to_pixel
 }

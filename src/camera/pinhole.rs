@@ -135,6 +135,7 @@ impl PinholeCamera {
     }
     // ANCHOR_END: ray
 
+    // ANCHOR: project
     /// Where the world point `x` lands in the image, in continuous pixel coordinates,
     /// or `None` when it is not in front of the eye.
     pub fn project(&self, x: Vec3) -> Option<Vec2> {
@@ -145,4 +146,5 @@ impl PinholeCamera {
         let on_screen = local.truncate() * (self.screen_distance / -local.z);
         Some(self.film.plane_to_pixel(on_screen))
     }
+    // ANCHOR_END: project
 }

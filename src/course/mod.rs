@@ -7,6 +7,7 @@
 //! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
+//! - [`mine`]: `--mine`, a lesson's picture drawn with the student's exercise code;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
 //! - [`measure`]: lesson 11's measurements, one file per chart;
 //! - [`exercises`]: the coding exercises and the harness that checks them.
@@ -18,4 +19,5 @@ pub mod flags;
 pub mod ladder_figure;
 pub mod lesson;
 pub mod measure;
+pub mod mine;
 pub mod report;

@@ -189,13 +189,7 @@ pub fn rasterize_triangle(
 /// The fragment at pixel (x, y) with screen-space barycentric weights `b`.
 fn fragment(x: u32, y: u32, v: &[ScreenVertex; 3], b: [f32; 3], inv_w: Vec4) -> Fragment {
     let depth = b[0] * v[0].depth + b[1] * v[1].depth + b[2] * v[2].depth;
-    let over_w = [b[0] * inv_w.x, b[1] * inv_w.y, b[2] * inv_w.z];
-    let sum = over_w[0] + over_w[1] + over_w[2];
-    let weights = if sum > 0.0 {
-        over_w.map(|o| o / sum)
-    } else {
-        b
-    };
+    let weights = perspective_weights(b, [inv_w.x, inv_w.y, inv_w.z]);
     Fragment {
         x,
         y,
@@ -203,4 +197,20 @@ fn fragment(x: u32, y: u32, v: &[ScreenVertex; 3], b: [f32; 3], inv_w: Vec4) -> 
         varyings: Varyings::weighted(&v.map(|v| v.varyings), weights),
     }
 }
+
+// ANCHOR: perspective_weights
+/// The weights that interpolate an attribute perspective-correctly, from the screen
+/// weights `b` and the vertices' 1/w: b_k (1/w_k) / sum_j b_j (1/w_j), so that
+/// sum_k weights_k a_k = (sum_k b_k a_k / w_k) / (sum_k b_k / w_k). The screen
+/// weights themselves if that sum is not positive (no vertex in front of the eye).
+pub fn perspective_weights(b: [f32; 3], inv_w: [f32; 3]) -> [f32; 3] {
+    let over_w = [b[0] * inv_w[0], b[1] * inv_w[1], b[2] * inv_w[2]];
+    let sum = over_w[0] + over_w[1] + over_w[2];
+    if sum > 0.0 {
+        over_w.map(|o| o / sum)
+    } else {
+        b
+    }
+}
+// ANCHOR_END: perspective_weights
 // ANCHOR_END: perspective_correct

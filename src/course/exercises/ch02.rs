@@ -1,10 +1,12 @@
-//! Chapter 02, The ray: coding exercise 2.1.
+//! Chapter 02, The ray: coding exercises 2.1 and 2.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch02`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch02`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 
 use glam::Vec3;
+
+use crate::ray::Ray;
 
 /// Coding exercise 2.1: the point r(t) of the ray from `o` along `d` at parameter `t`.
 ///
@@ -12,4 +14,12 @@ use glam::Vec3;
 /// (negative behind it), as for the crate's `Ray`.
 pub fn point_at(o: Vec3, d: Vec3, t: f32) -> Vec3 {
     todo!("Coding exercise 2.1 (chapter 02, The ray): the point at distance t along the ray")
+}
+
+/// Coding exercise 2.2: the `t` of the point of the ray's line closest to `p`: for a
+/// point on the line, its own `t`. `ray.origin()` is o and `ray.direction()` the unit
+/// direction d. The answer may be negative (behind the origin). (`ray.t_closest_to(p)`
+/// is the crate's answer.)
+pub fn t_closest(ray: &Ray, p: Vec3) -> f32 {
+    todo!("Coding exercise 2.2 (chapter 02, The ray): the t of the point closest to p")
 }

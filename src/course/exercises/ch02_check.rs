@@ -1,6 +1,6 @@
-//! The check of chapter 02's coding exercise: the cases, the reference
-//! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch02.rs`, beside this file; the harness is `harness.rs`.
+//! The checks of chapter 02's coding exercises: the cases, the reference
+//! answer for each, and the hints for the typical mistakes. The student's functions
+//! are in `ch02.rs`, beside this file; the harness is `harness.rs`.
 
 use glam::Vec3;
 
@@ -15,9 +15,17 @@ pub const POINT_AT: Exercise = Exercise {
     function: "point_at",
     file: "src/course/exercises/ch02.rs",
 };
+/// Coding exercise 2.2.
+pub const T_CLOSEST: Exercise = Exercise {
+    number: "2.2",
+    chapter: "02",
+    chapter_title: "The ray",
+    function: "t_closest",
+    file: "src/course/exercises/ch02.rs",
+};
 
 /// Checks `point_at(o, d, t)`: the point r(t) = o + t d/|d|, `t` a distance.
-pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3) -> Outcome {
+pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static) -> Outcome {
     let cases: Vec<Case<(Vec3, Vec3, f32)>> = [
         (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 0.0),
         (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 5.0),
@@ -37,7 +45,7 @@ pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3) -> Outcome {
     run(
         &cases,
         |&(o, d, t)| Ray::new(o, d).expect("valid ray").at(t),
-        |(o, d, t)| f(o, d, t),
+        move |(o, d, t)| f(o, d, t),
         &[
             Mistake {
                 looks_like: &gives(&|&(o, d, t): &(Vec3, Vec3, f32)| Some(o + t * d)),
@@ -53,5 +61,77 @@ pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3) -> Outcome {
             },
         ],
         "r(t) = o + t d/|d|",
+    )
+}
+
+/// The arguments of `t_closest`: the ray and the point.
+type ClosestArgs = (Ray, Vec3);
+
+/// Checks `t_closest(ray, p)`: the `t` of the point of the ray's line closest to `p`,
+/// (p - o) . d for the unit direction d.
+pub fn check_t_closest(f: impl Fn(&Ray, Vec3) -> f32 + Send + Sync + 'static) -> Outcome {
+    let ray = |o, d| Ray::new(o, d).expect("valid ray");
+    let lesson = ray(v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0));
+    let cases: Vec<Case<ClosestArgs>> = [
+        ("on the ray, 5 ahead", lesson, v(5.0, 4.0, 0.0)),
+        ("the origin itself", lesson, v(1.0, 1.0, 0.0)),
+        (
+            "off the ray, beside the point at t = 5",
+            lesson,
+            v(2.0, 5.5, 0.0),
+        ),
+        ("off the ray, behind the origin", lesson, v(-2.0, 1.0, 2.0)),
+        (
+            "on the x axis, where the ray crosses y = 0",
+            lesson,
+            v(-1.0 / 3.0, 0.0, 0.0),
+        ),
+        (
+            "a ray along -Z, a point beside it",
+            ray(v(1.0, 2.0, 3.0), v(0.0, 0.0, -2.0)),
+            v(4.0, -2.0, -1.0),
+        ),
+    ]
+    .into_iter()
+    .map(|(what, ray, p)| {
+        let case = format!(
+            "ray from {} along {}, p = {}: {what}",
+            ray.origin().show(),
+            ray.direction().show(),
+            p.show()
+        );
+        (case, (ray, p))
+    })
+    .collect();
+    let on_line = |&(ray, p): &ClosestArgs| (p - ray.origin()).dot(ray.direction());
+    run(
+        &cases,
+        |&(ray, p)| ray.t_closest_to(p),
+        move |(ray, p)| f(&ray, p),
+        &[
+            Mistake {
+                looks_like: &gives(&|a: &ClosestArgs| Some(-on_line(a))),
+                hint: "the sign is wrong: t = (p - o) . d, from the origin to the point",
+            },
+            Mistake {
+                looks_like: &gives(&|&(ray, p): &ClosestArgs| Some((p - ray.origin()).length())),
+                hint: "|p - o| is the distance to p, not its t: the two agree only for a point \
+                       ahead on the ray. Project p - o onto the direction: t = (p - o) . d",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &ClosestArgs| Some(on_line(a).max(0.0))),
+                hint: "the line goes on behind the origin: a point behind it has a negative t; \
+                       do not clamp it to 0",
+            },
+            Mistake {
+                looks_like: &gives(&|&(ray, p): &ClosestArgs| {
+                    let to_p = p - ray.origin();
+                    (to_p.length() > 0.0).then(|| to_p.dot(ray.direction()) / to_p.length())
+                }),
+                hint: "dividing by |p - o| gives the cosine of the angle at o, not a distance: \
+                       d already has length 1, so t = (p - o) . d",
+            },
+        ],
+        "t = (p - o) . d: the projection of p - o onto the unit direction",
     )
 }

@@ -81,11 +81,13 @@ fn basis(&(u, v, w, _): &BasisArgs) -> Basis {
 
 /// Checks `to_world(u, v, w, b)`: a = B b, from coordinates in the basis [u v w] to
 /// world coordinates.
-pub fn check_to_world(f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3) -> Outcome {
+pub fn check_to_world(
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync + 'static,
+) -> Outcome {
     run(
         &basis_cases("b"),
         |a| basis(a).to_world(a.3),
-        |(u, v, w, b)| f(u, v, w, b),
+        move |(u, v, w, b)| f(u, v, w, b),
         &[Mistake {
             looks_like: &gives(&|a: &BasisArgs| Some(basis(a).to_local(a.3))),
             hint: "dot products with u, v, w compute B^T a, the way back (to_local). a = B b \
@@ -97,11 +99,13 @@ pub fn check_to_world(f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3) -> Outcome {
 
 /// Checks `to_local(u, v, w, a)`: b = B^T a, from world coordinates to coordinates
 /// in the orthonormal basis [u v w].
-pub fn check_to_local(f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3) -> Outcome {
+pub fn check_to_local(
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync + 'static,
+) -> Outcome {
     run(
         &basis_cases("a"),
         |a| basis(a).to_local(a.3),
-        |(u, v, w, a)| f(u, v, w, a),
+        move |(u, v, w, a)| f(u, v, w, a),
         &[Mistake {
             looks_like: &gives(&|a: &BasisArgs| Some(basis(a).to_world(a.3))),
             hint: "a.x u + a.y v + a.z w is B a, the other direction (to_world). The way back is \

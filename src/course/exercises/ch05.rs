@@ -1,10 +1,12 @@
-//! Chapter 05, An arbitrary orthographic camera: coding exercise 5.1.
+//! Chapter 05, An arbitrary orthographic camera: coding exercises 5.1 and 5.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch05`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch05`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 
 use glam::Vec3;
+
+use crate::camera::{Film, Frame};
 
 /// Coding exercise 5.1: the camera basis (u, v, w) of a camera looking along `d`
 /// with up vector `k`.
@@ -16,5 +18,18 @@ use glam::Vec3;
 pub fn camera_basis(d: Vec3, k: Vec3) -> (Vec3, Vec3, Vec3) {
     todo!(
         "Coding exercise 5.1 (chapter 05, An arbitrary orthographic camera): build u, v, w from d and k"
+    )
+}
+
+/// Coding exercise 5.2: the world-space ray (origin, unit direction) of pixel
+/// (`px`, `py`, row 0 at the top) of the orthographic camera placed by `frame`.
+///
+/// In camera space the ray starts at the pixel centre (x, y, 0), where
+/// `film.pixel_to_plane(px, py)` gives (x, y) (lesson 03), and goes along (0, 0, -1).
+/// `frame.basis()` is B, with `to_world` (lesson 04), and `frame.position()` is p.
+/// (`Frame::point_to_world` and `Frame::vector_to_world` are the crate's answer.)
+pub fn ortho_ray(film: &Film, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+    todo!(
+        "Coding exercise 5.2 (chapter 05, An arbitrary orthographic camera): carry the pixel's ray to the world"
     )
 }

@@ -1,11 +1,11 @@
-//! The check of chapter 05's coding exercise: the cases, the reference
-//! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch05.rs`, beside this file; the harness is `harness.rs`.
+//! The checks of chapter 05's coding exercises: the cases, the reference
+//! answer for each, and the hints for the typical mistakes. The student's functions
+//! are in `ch05.rs`, beside this file; the harness is `harness.rs`.
 
 use glam::Vec3;
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
-use crate::camera::camera_basis;
+use crate::camera::{Film, Frame, OrthoCamera, camera_basis};
 
 /// Coding exercise 5.1.
 pub const CAMERA_BASIS: Exercise = Exercise {
@@ -15,12 +15,20 @@ pub const CAMERA_BASIS: Exercise = Exercise {
     function: "camera_basis",
     file: "src/course/exercises/ch05.rs",
 };
+/// Coding exercise 5.2.
+pub const ORTHO_RAY: Exercise = Exercise {
+    number: "5.2",
+    chapter: "05",
+    chapter_title: "An arbitrary orthographic camera",
+    function: "ortho_ray",
+    file: "src/course/exercises/ch05.rs",
+};
 
 type Uvw = (Vec3, Vec3, Vec3);
 
 /// Checks `camera_basis(d, k)`: the camera basis (u, v, w) from a view direction `d`
 /// and an up vector `k`, neither necessarily of unit length.
-pub fn check_camera_basis(f: impl Fn(Vec3, Vec3) -> Uvw) -> Outcome {
+pub fn check_camera_basis(f: impl Fn(Vec3, Vec3) -> Uvw + Send + Sync + 'static) -> Outcome {
     let cases: Vec<Case<(Vec3, Vec3)>> = [
         (v(0.0, 0.0, -1.0), Vec3::Y),
         (v(-1.0, 0.0, -1.0), Vec3::Y),
@@ -45,7 +53,7 @@ pub fn check_camera_basis(f: impl Fn(Vec3, Vec3) -> Uvw) -> Outcome {
             let b = camera_basis(d, k).expect("valid camera");
             (b.u(), b.v(), b.w())
         },
-        |(d, k)| f(d, k),
+        move |(d, k)| f(d, k),
         &[
             Mistake {
                 looks_like: &gives(&wrong(true)),
@@ -77,5 +85,109 @@ pub fn check_camera_basis(f: impl Fn(Vec3, Vec3) -> Uvw) -> Outcome {
             },
         ],
         "w = -d/|d|, u = (k x w)/|k x w|, v = w x u",
+    )
+}
+
+// ANCHOR: ortho_ray
+/// A worked solution of exercise 5.2: the origin is a point, turned by B and moved
+/// to p; the direction is an arrow, only turned.
+pub fn ortho_ray_solution(film: &Film, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+    let origin = film.pixel_to_plane(px, py).extend(0.0);
+    let direction = Vec3::new(0.0, 0.0, -1.0);
+    let b = frame.basis();
+    (b.to_world(origin) + frame.position(), b.to_world(direction))
+}
+// ANCHOR_END: ortho_ray
+
+type OrthoArgs = (Film, Frame, u32, u32);
+
+/// Checks `ortho_ray(film, frame, px, py)`: the world-space (origin, unit direction)
+/// of the orthographic camera's ray of pixel (`px`, `py`).
+pub fn check_ortho_ray(
+    f: impl Fn(&Film, &Frame, u32, u32) -> (Vec3, Vec3) + Send + Sync + 'static,
+) -> Outcome {
+    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).expect("valid film");
+    let look = |p, d, k| Frame::look(p, d, k).expect("valid frame");
+    let lesson = look(v(6.0, 0.0, 6.0), v(-1.0, 0.0, -1.0), Vec3::Y);
+    let tilted = look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y);
+    let cases: Vec<Case<OrthoArgs>> = [
+        (Frame::AT_ORIGIN, 0, 0, "at the origin, looking down -Z"),
+        (
+            lesson,
+            0,
+            0,
+            "at (6, 0, 6) looking along (-1, 0, -1), up (0, 1, 0)",
+        ),
+        (
+            lesson,
+            3,
+            2,
+            "at (6, 0, 6) looking along (-1, 0, -1), up (0, 1, 0)",
+        ),
+        (
+            tilted,
+            1,
+            1,
+            "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)",
+        ),
+        (
+            tilted,
+            2,
+            0,
+            "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)",
+        ),
+    ]
+    .into_iter()
+    .map(|(frame, px, py, where_)| {
+        (
+            format!("pixel ({px}, {py}), 4x3 film over [-8, 8] x [-6, 6], camera {where_}"),
+            (film, frame, px, py),
+        )
+    })
+    .collect();
+    let local = |a: &OrthoArgs| (a.0.pixel_to_plane(a.2, a.3).extend(0.0), -Vec3::Z);
+    let b = |a: &OrthoArgs| a.1.basis();
+    run(
+        &cases,
+        |&(film, frame, px, py)| {
+            let ray = OrthoCamera::new(film, frame).ray(px, py);
+            (ray.origin(), ray.direction())
+        },
+        move |(film, frame, px, py)| f(&film, &frame, px, py),
+        &[
+            Mistake {
+                looks_like: &gives(&|a: &OrthoArgs| {
+                    let (o, d) = local(a);
+                    Some((b(a).to_world(o), b(a).to_world(d)))
+                }),
+                hint: "the origin is a point: after turning it with B, move it to the camera's \
+                       position, B o + p",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &OrthoArgs| {
+                    let (o, d) = local(a);
+                    let p = a.1.position();
+                    Some((b(a).to_world(o) + p, b(a).to_world(d) + p))
+                }),
+                hint: "the direction is an arrow, not a point: turn it with B, but do not add p \
+                       (the w = 0 of lesson 01)",
+            },
+            Mistake {
+                looks_like: &|_: &OrthoArgs, got: &(Vec3, Vec3)| got.1.close(&-Vec3::Z),
+                hint: "(0, 0, -1) is the direction in camera space: carry it to the world with \
+                       B, d_world = B (0, 0, -1) = -w",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &OrthoArgs| {
+                    let (o, d) = local(a);
+                    let p = a.1.position();
+                    Some((b(a).to_local(o) + p, b(a).to_local(d)))
+                }),
+                hint: "to_local computes B^T x, the way from the world into camera space; \
+                       camera space to the world is B x (to_world)",
+            },
+        ],
+        "origin B (x, y, 0) + p with (x, y) the pixel centre on the film; direction \
+         B (0, 0, -1)",
     )
 }

@@ -1,10 +1,10 @@
-//! Chapter 06, The pinhole camera: coding exercise 6.1.
+//! Chapter 06, The pinhole camera: coding exercises 6.1 and 6.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch06`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch06`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::camera::{Film, Frame};
 
@@ -20,4 +20,16 @@ pub fn pinhole_ray(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec
     todo!(
         "Coding exercise 6.1 (chapter 06, The pinhole camera): the ray from the eye through the screen point"
     )
+}
+
+/// Coding exercise 6.2: where the world point `x` lands in the image of the same
+/// pinhole camera, in continuous pixel coordinates (column, row from the top, as
+/// `film.plane_to_pixel` gives them for a point of the screen), or `None` if `x` is
+/// not in front of the eye.
+///
+/// `frame.point_to_camera(x)` gives x in camera space, (X, Y, Z); the camera looks
+/// down its -Z, so "in front" means Z < 0. (`PinholeCamera::project` is the crate's
+/// answer.)
+pub fn project(film: &Film, s: f32, frame: &Frame, x: Vec3) -> Option<Vec2> {
+    todo!("Coding exercise 6.2 (chapter 06, The pinhole camera): where a point lands in the image")
 }

@@ -1,8 +1,8 @@
-//! The check of chapter 06's coding exercise: the cases, the reference
-//! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch06.rs`, beside this file; the harness is `harness.rs`.
+//! The checks of chapter 06's coding exercises: the cases, the reference
+//! answer for each, and the hints for the typical mistakes. The student's functions
+//! are in `ch06.rs`, beside this file; the harness is `harness.rs`.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::camera::{Film, Frame, PinholeCamera};
@@ -15,12 +15,22 @@ pub const PINHOLE_RAY: Exercise = Exercise {
     function: "pinhole_ray",
     file: "src/course/exercises/ch06.rs",
 };
+/// Coding exercise 6.2.
+pub const PROJECT: Exercise = Exercise {
+    number: "6.2",
+    chapter: "06",
+    chapter_title: "The pinhole camera",
+    function: "project",
+    file: "src/course/exercises/ch06.rs",
+};
 
 type PinholeArgs = (Film, f32, Frame, u32, u32);
 
 /// Checks `pinhole_ray(film, s, frame, px, py)`: the world-space (origin, unit
 /// direction) of the pinhole ray of pixel (`px`, `py`), screen at distance `s`.
-pub fn check_pinhole_ray(f: impl Fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3)) -> Outcome {
+pub fn check_pinhole_ray(
+    f: impl Fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3) + Send + Sync + 'static,
+) -> Outcome {
     let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).expect("valid film");
     let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y).expect("valid frame");
     let origin = Frame::AT_ORIGIN;
@@ -71,7 +81,7 @@ pub fn check_pinhole_ray(f: impl Fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3
                 .ray(px, py);
             (ray.origin(), ray.direction())
         },
-        |(film, s, frame, px, py)| f(&film, s, &frame, px, py),
+        move |(film, s, frame, px, py)| f(&film, s, &frame, px, py),
         &[
             Mistake {
                 looks_like: &gives(&|a: &PinholeArgs| {
@@ -114,5 +124,127 @@ pub fn check_pinhole_ray(f: impl Fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3
         ],
         "screen point s = (x, y, -s) with (x, y) the pixel centre on the film; eye e = 0; \
          direction (s - e)/|s - e|; then origin B e + p, direction B d",
+    )
+}
+
+type ProjectArgs = (Film, f32, Frame, Vec3);
+
+/// Checks `project(film, s, frame, x)`: the continuous pixel coordinates where the
+/// world point `x` lands, or `None` if it is not in front of the eye.
+pub fn check_project(
+    f: impl Fn(&Film, f32, &Frame, Vec3) -> Option<Vec2> + Send + Sync + 'static,
+) -> Outcome {
+    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).expect("valid film");
+    let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y).expect("valid frame");
+    let origin = Frame::AT_ORIGIN;
+    let at_origin = "at the origin";
+    let at_p = "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)";
+    let cases: Vec<Case<ProjectArgs>> = [
+        (origin, 8.0, v(6.0, 0.0, -8.0), at_origin, "on the screen"),
+        (
+            origin,
+            8.0,
+            v(6.0, 0.0, -24.0),
+            at_origin,
+            "three times as far",
+        ),
+        (
+            origin,
+            8.0,
+            v(-2.0, 3.0, -4.0),
+            at_origin,
+            "nearer than the screen",
+        ),
+        (
+            origin,
+            4.0,
+            v(-2.0, 3.0, -4.0),
+            at_origin,
+            "on a screen at s = 4",
+        ),
+        (origin, 8.0, v(1.0, 1.0, 5.0), at_origin, "behind the eye"),
+        (
+            origin,
+            8.0,
+            v(1.0, 1.0, 0.0),
+            at_origin,
+            "level with the eye",
+        ),
+        (
+            placed,
+            8.0,
+            v(2.0, 0.0, -3.0),
+            at_p,
+            "on the floor, to the right",
+        ),
+        (
+            placed,
+            8.0,
+            Vec3::ZERO,
+            at_p,
+            "the origin, which the camera looks towards",
+        ),
+        (placed, 8.0, v(0.0, 3.0, 9.0), at_p, "behind the camera"),
+    ]
+    .into_iter()
+    .map(|(frame, s, x, camera, what)| {
+        (
+            format!(
+                "x = {} ({what}), 4x3 film over [-8, 8] x [-6, 6], s = {}, camera {camera}",
+                x.show(),
+                s.show()
+            ),
+            (film, s, frame, x),
+        )
+    })
+    .collect();
+    let local = |a: &ProjectArgs| a.2.point_to_camera(a.3);
+    // The screen point by similar triangles from the camera-space point `c`, with the
+    // depth `depth` and no test of the side.
+    let landing = |a: &ProjectArgs, c: Vec3, depth: f32| {
+        let on_screen = c.truncate() * (a.1 / depth);
+        Some(Some(a.0.plane_to_pixel(on_screen)))
+    };
+    run(
+        &cases,
+        |&(film, s, frame, x)| {
+            PinholeCamera::new(film, s, frame)
+                .expect("valid camera")
+                .project(x)
+        },
+        move |(film, s, frame, x)| f(&film, s, &frame, x),
+        &[
+            Mistake {
+                looks_like: &|a: &ProjectArgs, got: &Option<Vec2>| {
+                    got.is_some() && local(a).z >= 0.0
+                },
+                hint: "the point is not in front of the eye (Z >= 0 in camera space): it has no \
+                       image, return None (dividing by a depth of 0 or less gives infinities or \
+                       a mirrored point)",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &ProjectArgs| {
+                    Some(Some(a.0.plane_to_pixel(local(a).truncate())))
+                }),
+                hint: "that is the orthographic projection: a pinhole divides by the depth, \
+                       (s X / -Z, s Y / -Z), so that far things look small",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &ProjectArgs| landing(a, local(a), local(a).z)),
+                hint: "the depth of a point in front of the eye is -Z (the camera looks down its \
+                       -Z): divide by -Z, or the image comes out mirrored",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &ProjectArgs| landing(a, local(a), -local(a).z * a.1)),
+                hint: "scale by s / -Z: the screen lies at distance s from the eye",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &ProjectArgs| landing(a, a.3, -a.3.z)),
+                hint: "x is a world point: take it to camera space first, \
+                       frame.point_to_camera(x) = B^T (x - p)",
+            },
+        ],
+        "in camera space (X, Y, Z) = B^T (x - p); None unless Z < 0; the screen point \
+         (s X / -Z, s Y / -Z), in pixels by film.plane_to_pixel",
     )
 }

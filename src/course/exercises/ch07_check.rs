@@ -37,7 +37,9 @@ type PlaneArgs = (Vec3, Vec3, Vec3, Vec3);
 
 /// Checks `ray_plane_t(o, d, p0, n)`: the `t` where the line o + t d meets the plane
 /// through `p0` with normal `n` (`d` and `n` of unit length), `None` if parallel.
-pub fn check_ray_plane_t(f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Option<f32>) -> Outcome {
+pub fn check_ray_plane_t(
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Option<f32> + Send + Sync + 'static,
+) -> Outcome {
     let diagonal = v(1.0, 1.0, 1.0).normalize();
     let cases: Vec<Case<PlaneArgs>> = [
         (v(0.0, 3.0, 0.0), -Vec3::Y, Vec3::ZERO, Vec3::Y),
@@ -79,7 +81,7 @@ pub fn check_ray_plane_t(f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Option<f32>) -> O
                 .expect("valid plane")
                 .t(&Ray::new(o, d).expect("valid ray"))
         },
-        |(o, d, p0, n)| f(o, d, p0, n),
+        move |(o, d, p0, n)| f(o, d, p0, n),
         &[
             Mistake {
                 looks_like: &|a: &PlaneArgs, got: &Option<f32>| {
@@ -111,7 +113,9 @@ type SphereArgs = (Vec3, Vec3, Vec3, f32);
 /// Checks `ray_sphere_roots(o, d, c, r)`: both `t` where the line o + t d (`d` of
 /// unit length) meets the sphere, ascending, or `None` when it misses. The last cases
 /// are STABILITY S1's small sphere far away, which the school formula gets wrong.
-pub fn check_ray_sphere_roots(f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, f32)>) -> Outcome {
+pub fn check_ray_sphere_roots(
+    f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, f32)> + Send + Sync + 'static,
+) -> Outcome {
     let aim = v(0.3, 0.2, -1.0).normalize();
     let far = 1e4 * aim;
     let across = aim.cross(Vec3::Y).normalize();
@@ -152,7 +156,7 @@ pub fn check_ray_sphere_roots(f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, 
     run(
         &cases,
         reference,
-        |(o, d, c, r)| f(o, d, c, r),
+        move |(o, d, c, r)| f(o, d, c, r),
         &[
             Mistake {
                 looks_like: &gives(&|a: &SphereArgs| Some(reference(a).map(|(t0, t1)| (t1, t0)))),
@@ -211,7 +215,7 @@ fn cramer(&(o, d, v0, v1, v2): &TriangleArgs) -> (f64, f64, f64) {
 /// every one of them, as the crate's does. (With rounding, Moller-Trumbore can still
 /// let such a ray through: STABILITY S4, S5, which the watertight test fixes.)
 pub fn check_moller_trumbore(
-    f: impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)>,
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)> + Send + Sync + 'static,
 ) -> Outcome {
     let down = -Vec3::Z;
     let unit = (Vec3::ZERO, Vec3::X, Vec3::Y);
@@ -266,7 +270,7 @@ pub fn check_moller_trumbore(
     run(
         &cases,
         reference,
-        |(o, d, v0, v1, v2)| f(o, d, v0, v1, v2),
+        move |(o, d, v0, v1, v2)| f(o, d, v0, v1, v2),
         &[
             Mistake {
                 looks_like: &|a: &TriangleArgs, got: &Option<(f32, f32, f32)>| {

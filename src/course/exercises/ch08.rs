@@ -1,11 +1,13 @@
-//! Chapter 08, Ray casting: coding exercise 8.1.
+//! Chapter 08, Ray casting: coding exercises 8.1 and 8.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch08`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch08`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 
+use glam::Vec3;
+
 use crate::ray::{Interval, Ray};
-use crate::scene::SceneHit;
+use crate::scene::{PointLight, SceneHit};
 use crate::shapes::Shape;
 
 /// Coding exercise 8.1: the closest hit of `ray` over all `shapes`, counting only
@@ -16,4 +18,19 @@ use crate::shapes::Shape;
 /// range (a `Hit`, whose field `t` is the distance).
 pub fn closest(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
     todo!("Coding exercise 8.1 (chapter 08, Ray casting): the closest-hit loop over every shape")
+}
+
+/// Coding exercise 8.2: Lambert's cosine law. The colour of a surface point `p` with
+/// unit normal `n` (already turned towards the viewer) and colour `albedo`, lit by
+/// the point `light` (`light.position`, `light.intensity`), which the shadow ray has
+/// found `visible` or not:
+///
+/// albedo (AMBIENT + V I cos(theta) / d^2) if cos(theta) > 0, albedo AMBIENT otherwise,
+///
+/// with d the distance from `p` to the light, theta the angle between `n` and the unit
+/// direction l from `p` to the light, and V = 1 if `visible`, else 0.
+/// `crate::lighting::AMBIENT` is the ambient share, 0.1. (`lighting::lambert` is the
+/// crate's answer.)
+pub fn lambert(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+    todo!("Coding exercise 8.2 (chapter 08, Ray casting): Lambert's cosine law from a point light")
 }

@@ -1,8 +1,10 @@
-//! Chapter 09, The rasterization pipeline: coding exercise 9.1.
+//! Chapter 09, The rasterization pipeline: coding exercises 9.1 and 9.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch09`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch09`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
+
+use crate::raster::ScreenVertex;
 
 /// Coding exercise 9.1: does the triangle `a`, `b`, `c` cover the point `p` under the
 /// top-left rule? All four are on the rasterizer's integer sub-pixel grid, as
@@ -20,5 +22,20 @@ pub fn covers(a: (i64, i64), b: (i64, i64), c: (i64, i64), p: (i64, i64)) -> boo
     todo!(
         "Coding exercise 9.1 (chapter 09, The rasterization pipeline): the inside test, \
          edge functions and the top-left rule"
+    )
+}
+
+/// Coding exercise 9.2: perspective-correct interpolation. The weights with which a
+/// fragment mixes the attributes of the triangle's `vertices`, from its screen-space
+/// barycentric weights `b` (`b[k]` belongs to `vertices[k]`; they sum to 1).
+///
+/// An attribute a is not affine on the screen, but a/w and 1/w are: interpolate both
+/// with `b` and divide, a = (sum_k b_k a_k / w_k) / (sum_k b_k / w_k). So the weight
+/// of vertex k is b_k (1/w_k) / sum_j b_j (1/w_j). Each vertex carries its 1/w as
+/// `vertices[k].inv_w` (w = -Z, the depth in front of the camera).
+/// (`raster::rasterize::perspective_weights` is the crate's answer.)
+pub fn perspective_weights(b: [f32; 3], vertices: &[ScreenVertex; 3]) -> [f32; 3] {
+    todo!(
+        "Coding exercise 9.2 (chapter 09, The rasterization pipeline): perspective-correct weights"
     )
 }

@@ -1,9 +1,12 @@
-//! The check of chapter 09's coding exercise: the cases, the reference
-//! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch09.rs`, beside this file; the harness is `harness.rs`.
+//! The checks of chapter 09's coding exercises: the cases, the reference
+//! answer for each, and the hints for the typical mistakes. The student's functions
+//! are in `ch09.rs`, beside this file; the harness is `harness.rs`.
 
-use super::harness::{Case, Exercise, Mistake, Outcome, run};
-use crate::raster::rasterize::covers;
+use glam::Vec2;
+
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
+use crate::raster::rasterize::{covers, perspective_weights};
+use crate::raster::{ScreenVertex, Varyings};
 
 /// Coding exercise 9.1.
 pub const COVERS: Exercise = Exercise {
@@ -11,6 +14,14 @@ pub const COVERS: Exercise = Exercise {
     chapter: "09",
     chapter_title: "The rasterization pipeline",
     function: "covers",
+    file: "src/course/exercises/ch09.rs",
+};
+/// Coding exercise 9.2.
+pub const PERSPECTIVE_WEIGHTS: Exercise = Exercise {
+    number: "9.2",
+    chapter: "09",
+    chapter_title: "The rasterization pipeline",
+    function: "perspective_weights",
     file: "src/course/exercises/ch09.rs",
 };
 
@@ -89,7 +100,9 @@ fn covers_wrongly(rule: Inside, (a, b, c, p): CoversArgs) -> bool {
 
 /// Checks `covers(a, b, c, p)`: does the triangle a, b, c (either winding, possibly
 /// of zero area) cover the point p under the top-left rule?
-pub fn check_covers(f: impl Fn(Fixed, Fixed, Fixed, Fixed) -> bool) -> Outcome {
+pub fn check_covers(
+    f: impl Fn(Fixed, Fixed, Fixed, Fixed) -> bool + Send + Sync + 'static,
+) -> Outcome {
     // Two triangles sharing the diagonal from (0, 0) to (8, 8), both counter-clockwise
     // on the image (positive area): `lower` has a left and a bottom edge, `upper` a
     // top and a right edge; the diagonal is lower's right edge and upper's left edge.
@@ -225,7 +238,7 @@ pub fn check_covers(f: impl Fn(Fixed, Fixed, Fixed, Fixed) -> bool) -> Outcome {
     run(
         &cases,
         reference,
-        |(a, b, c, p)| f(a, b, c, p),
+        move |(a, b, c, p)| f(a, b, c, p),
         &[
             Mistake {
                 looks_like: &strict,
@@ -268,5 +281,100 @@ pub fn check_covers(f: impl Fn(Fixed, Fixed, Fixed, Fixed) -> bool) -> Outcome {
          if the area E_ab(c) is 0; swap b and c if it is negative; then p is covered if on each \
          edge b -> c, c -> a, a -> b, E(p) > 0, or E(p) = 0 and the edge is top-left \
          (v_y > u_y, or v_y = u_y and v_x < u_x)",
+    )
+}
+
+/// The arguments of `perspective_weights`: the screen weights and the vertices.
+type WeightsArgs = ([f32; 3], [ScreenVertex; 3]);
+
+/// The vertices' 1/w.
+fn inv_w(a: &WeightsArgs) -> [f32; 3] {
+    a.1.map(|v| v.inv_w)
+}
+
+/// `b_k x_k / sum_j b_j y_j`: the weights with `x` on top and `y` below.
+fn ratio(b: [f32; 3], x: [f32; 3], y: [f32; 3]) -> [f32; 3] {
+    let sum: f32 = (0..3).map(|k| b[k] * y[k]).sum();
+    [0, 1, 2].map(|k| b[k] * x[k] / sum)
+}
+
+/// Checks `perspective_weights(b, vertices)`: b_k (1/w_k) / sum_j b_j (1/w_j).
+pub fn check_perspective_weights(
+    f: impl Fn([f32; 3], &[ScreenVertex; 3]) -> [f32; 3] + Send + Sync + 'static,
+) -> Outcome {
+    let vertex = |w: f32| ScreenVertex {
+        pixel: Vec2::ZERO,
+        depth: 0.5,
+        inv_w: 1.0 / w,
+        varyings: Varyings::default(),
+    };
+    let cases: Vec<Case<WeightsArgs>> = [
+        (
+            "the midpoint of the edge from w = 1 to w = 4",
+            [0.5, 0.5, 0.0],
+            [1.0, 4.0, 2.0],
+        ),
+        (
+            "the centre of a triangle parallel to the screen",
+            [1.0 / 3.0; 3],
+            [2.0, 2.0, 2.0],
+        ),
+        (
+            "an orthographic camera, every w = 1",
+            [0.2, 0.3, 0.5],
+            [1.0, 1.0, 1.0],
+        ),
+        ("a receding triangle", [0.2, 0.3, 0.5], [2.0, 5.0, 8.0]),
+        ("on a vertex", [0.0, 1.0, 0.0], [1.5, 3.0, 9.0]),
+        (
+            "one vertex a hundred times as far",
+            [0.4, 0.4, 0.2],
+            [1.0, 100.0, 10.0],
+        ),
+    ]
+    .into_iter()
+    .map(|(what, b, w)| {
+        let case = format!("{what}: b = {}, w = {}", b.show(), w.show());
+        (case, (b, w.map(vertex)))
+    })
+    .collect();
+    run(
+        &cases,
+        |a| perspective_weights(a.0, inv_w(a)),
+        move |(b, vertices)| f(b, &vertices),
+        &[
+            Mistake {
+                looks_like: &gives(&|a: &WeightsArgs| Some(a.0)),
+                hint: "those are the screen weights b, right only when every w is the same: \
+                       under perspective an attribute is not affine on the screen, a/w and \
+                       1/w are. Weight vertex k by b_k (1/w_k), then divide by the sum",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &WeightsArgs| {
+                    let w = inv_w(a).map(|i| 1.0 / i);
+                    Some(ratio(a.0, w, w))
+                }),
+                hint: "inv_w is 1/w: multiply by it, so that a far vertex (large w) counts less, \
+                       b_k (1/w_k) / sum_j b_j (1/w_j)",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &WeightsArgs| {
+                    let i = inv_w(a);
+                    Some([0, 1, 2].map(|k| a.0[k] * i[k]))
+                }),
+                hint: "the weights must sum to 1: divide each b_k (1/w_k) by \
+                       sum_j b_j (1/w_j)",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &WeightsArgs| {
+                    let i = inv_w(a);
+                    let sum: f32 = i.iter().sum();
+                    Some([0, 1, 2].map(|k| a.0[k] * i[k] / sum))
+                }),
+                hint: "divide by sum_j b_j (1/w_j), the interpolated 1/w at the fragment, not \
+                       by the sum of the vertices' 1/w",
+            },
+        ],
+        "weight_k = b_k inv_w_k / (b_0 inv_w_0 + b_1 inv_w_1 + b_2 inv_w_2)",
     )
 }

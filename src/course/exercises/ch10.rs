@@ -1,7 +1,7 @@
-//! Chapter 10, Path tracing: coding exercise 10.1.
+//! Chapter 10, Path tracing: coding exercises 10.1 and 10.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch10`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch10`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 
 use glam::{Vec2, Vec3};
@@ -17,4 +17,16 @@ pub fn cosine_sample(u: Vec2) -> (Vec3, f32) {
     todo!(
         "Coding exercise 10.1 (chapter 10, Path tracing): a cosine-weighted direction and its pdf"
     )
+}
+
+/// Coding exercise 10.2: the factor by which one bounce multiplies a path's
+/// throughput at a matte (Lambertian) surface, f_r cos(theta) / pdf.
+///
+/// The surface has colour `albedo` and unit normal `n`; the path leaves along the
+/// unit direction `wi`, which was drawn with density `pdf` (per unit solid angle).
+/// Lambert's BRDF is f_r = albedo / pi (`material::diffuse_brdf`), and theta is the
+/// angle between `n` and `wi`. A direction below the surface (cos(theta) <= 0)
+/// carries nothing, and neither does a direction of density 0 (never divide by it).
+pub fn bounce_weight(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
+    todo!("Coding exercise 10.2 (chapter 10, Path tracing): the throughput factor of a bounce")
 }

@@ -1,8 +1,8 @@
-//! The check of chapter 10's coding exercise: the cases, the reference
-//! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch10.rs`, beside this file; the harness is `harness.rs`.
+//! The checks of chapter 10's coding exercises: the cases, the reference
+//! answer for each, and the hints for the typical mistakes. The student's functions
+//! are in `ch10.rs`, beside this file; the harness is `harness.rs`.
 //!
-//! The check runs in two rounds. First three statistics over 4096 directions from a
+//! The check of exercise 10.1 runs in two rounds. First three statistics over 4096 directions from a
 //! fixed random stream (so the check is never flaky): how many directions are not of
 //! unit length or lie below the horizon, the mean of cos(theta), and an estimate of
 //! the integral of cos(theta) / pi over the hemisphere (1) with the student's own pdf.
@@ -13,7 +13,8 @@ use std::f32::consts::PI;
 
 use glam::{Vec2, Vec3};
 
-use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
+use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
+use crate::material::diffuse_brdf;
 use crate::pathtrace::Rng;
 use crate::sampling::cosine_hemisphere;
 
@@ -23,6 +24,14 @@ pub const COSINE_SAMPLE: Exercise = Exercise {
     chapter: "10",
     chapter_title: "Path tracing: the rendering equation",
     function: "cosine_sample",
+    file: "src/course/exercises/ch10.rs",
+};
+/// Coding exercise 10.2.
+pub const BOUNCE_WEIGHT: Exercise = Exercise {
+    number: "10.2",
+    chapter: "10",
+    chapter_title: "Path tracing: the rendering equation",
+    function: "bounce_weight",
     file: "src/course/exercises/ch10.rs",
 };
 
@@ -79,7 +88,7 @@ fn statistic(f: &dyn Fn(Vec2) -> (Vec3, f32), measure: Measure) -> Statistic {
 }
 
 /// Checks `cosine_sample(u)`: a cosine-weighted direction around +Z and its pdf.
-pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32)) -> Outcome {
+pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32) + Send + Sync + 'static) -> Outcome {
     let stats: Vec<Case<Measure>> = vec![
         (
             format!(
@@ -111,10 +120,13 @@ pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32)) -> Outcome {
     let no_pi = integral_near(1.0 / PI);
     let uniform_pdf = integral_near(4.0 / 3.0);
     let bad = |m: &Measure, _: &Statistic| *m == Measure::Bad;
+    // Both rounds run `f`, each on a thread of its own: they share it.
+    let f = std::sync::Arc::new(f);
+    let first = std::sync::Arc::clone(&f);
     let outcome = run(
         &stats,
         |m| statistic(&cosine_sample_reference, *m),
-        |m| statistic(&f, m),
+        move |m| statistic(&*first, m),
         &[
             Mistake {
                 looks_like: &bad,
@@ -164,7 +176,7 @@ pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32)) -> Outcome {
     run(
         &cases,
         |u| cosine_sample_reference(*u),
-        &f,
+        move |u| f(u),
         &[
             Mistake {
                 looks_like: &swapped,
@@ -176,5 +188,135 @@ pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32)) -> Outcome {
             },
         ],
         "a correct cosine sampler, but not the crate's mapping: take r = sqrt(u.x), phi = 2 pi u.y, x = r cos(phi), y = r sin(phi), z = sqrt(1 - u.x)",
+    )
+}
+
+// ANCHOR: bounce_weight
+/// A worked solution of exercise 10.2: f_r cos(theta) / pdf with Lambert's
+/// f_r = albedo / pi, and nothing for a direction below the surface or of density 0.
+pub fn bounce_weight_solution(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
+    let cos_theta = n.dot(wi);
+    if cos_theta <= 0.0 || pdf <= 0.0 {
+        return Vec3::ZERO;
+    }
+    diffuse_brdf(albedo) * cos_theta / pdf
+}
+// ANCHOR_END: bounce_weight
+
+/// The arguments of `bounce_weight`: albedo, n, wi, pdf.
+type BounceArgs = (Vec3, Vec3, Vec3, f32);
+
+/// Checks `bounce_weight(albedo, n, wi, pdf)`: f_r cos(theta) / pdf for Lambert's
+/// f_r = albedo / pi, zero below the surface and for a density of 0.
+pub fn check_bounce_weight(
+    f: impl Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static,
+) -> Outcome {
+    let grey = Vec3::splat(0.5);
+    let red = v(0.75, 0.25, 0.25);
+    let up = Vec3::Z;
+    let tilted = v(0.0, 0.6, 0.8);
+    let slanted = v(0.6, 0.0, 0.8);
+    let cases: Vec<Case<BounceArgs>> = [
+        ("cosine sampling, pdf = cos/pi", grey, up, slanted, 0.8 / PI),
+        (
+            "uniform sampling, pdf = 1/(2 pi)",
+            red,
+            up,
+            slanted,
+            1.0 / (2.0 * PI),
+        ),
+        (
+            "uniform sampling, straight up",
+            red,
+            up,
+            up,
+            1.0 / (2.0 * PI),
+        ),
+        (
+            "another density (light sampling)",
+            red,
+            tilted,
+            v(0.0, 0.0, 1.0),
+            2.5,
+        ),
+        (
+            "cosine sampling around a tilted normal",
+            grey,
+            tilted,
+            tilted,
+            1.0 / PI,
+        ),
+        (
+            "a direction below the surface",
+            red,
+            up,
+            v(0.6, 0.0, -0.8),
+            1.0 / (2.0 * PI),
+        ),
+        (
+            "a direction of density 0, at the horizon",
+            grey,
+            up,
+            v(1.0, 0.0, 0.0),
+            0.0,
+        ),
+    ]
+    .into_iter()
+    .map(|(what, albedo, n, wi, pdf)| {
+        let case = format!(
+            "{what}: albedo = {}, n = {}, wi = {}, pdf = {}",
+            albedo.show(),
+            n.show(),
+            wi.show(),
+            pdf.show()
+        );
+        (case, (albedo, n, wi, pdf))
+    })
+    .collect();
+    let plain = |&(albedo, n, wi, pdf): &BounceArgs| albedo / PI * n.dot(wi) / pdf;
+    let right = |&(albedo, n, wi, pdf): &BounceArgs| bounce_weight_solution(albedo, n, wi, pdf);
+    run(
+        &cases,
+        right,
+        move |(albedo, n, wi, pdf)| f(albedo, n, wi, pdf),
+        &[
+            Mistake {
+                looks_like: &|_: &BounceArgs, got: &Vec3| !got.is_finite(),
+                hint: "never divide by a density of 0: a direction the sampler cannot draw \
+                       carries nothing, return zero (an infinity or a NaN would spread to the \
+                       whole pixel)",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &BounceArgs| Some(plain(a))),
+                hint: "a direction below the surface (cos(theta) <= 0) carries nothing: a \
+                       surface that reflects does not send light through itself, return zero",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &BounceArgs| Some(right(a) * PI)),
+                hint: "Lambert's BRDF is albedo / pi, not the albedo: the cosine integrates to \
+                       pi over the hemisphere, so without the 1/pi a white surface reflects pi \
+                       times the light it receives",
+            },
+            Mistake {
+                looks_like: &|a: &BounceArgs, got: &Vec3| right(a) != Vec3::ZERO && got.close(&a.0),
+                hint: "the factor is the albedo only for cosine sampling, where pdf = cos/pi \
+                       cancels f_r cos: compute f_r cos(theta) / pdf for the pdf you are given",
+            },
+            Mistake {
+                looks_like: &gives(&|&(albedo, _, _, pdf): &BounceArgs| {
+                    (pdf > 0.0).then(|| albedo / PI / pdf)
+                }),
+                hint: "the cosine is missing: f_r cos(theta) / pdf, with cos(theta) = n . wi",
+            },
+            Mistake {
+                looks_like: &gives(&|&(albedo, n, wi, pdf): &BounceArgs| {
+                    Some(albedo / PI * n.dot(wi).max(0.0) * pdf)
+                }),
+                hint: "divide by the pdf, do not multiply: a direction drawn often (high pdf) \
+                       must count less",
+            },
+        ],
+        "f_r cos(theta) / pdf = (albedo / pi) (n . wi) / pdf, and zero when n . wi <= 0 or \
+         pdf <= 0",
     )
 }

@@ -1,11 +1,13 @@
-//! Chapter 11, Speed against accuracy: coding exercise 11.1.
+//! Chapter 11, Speed against accuracy: coding exercises 11.1 and 11.2.
 //!
-//! Check it with `cargo test --features exercises --test exercises ch11`.
-// The parameters are unused until you write the body.
+//! Check them with `cargo test --features exercises --test exercises ch11`.
+// The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 
-use crate::ray::Interval;
 use glam::Vec3;
+
+use crate::ray::Interval;
+use crate::shapes::Aabb;
 
 /// Coding exercise 11.1: the slab test with a precomputed `1/d`. The interval
 /// `[t0, t1]` of the ray `o + t d` inside the closed box `[min, max]`, clipped to
@@ -23,4 +25,24 @@ pub fn slab(o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, range: Interval) -> Opti
         "Coding exercise 11.1 (chapter 11, Speed against accuracy): the slab test \
          with a precomputed 1/d"
     )
+}
+
+/// Coding exercise 11.2: the surface area heuristic. The expected cost, in primitive
+/// tests, of splitting the BVH node whose box is `node` into a left child (box `left`,
+/// `left_count` primitives) and a right child (box `right`, `right_count` primitives):
+///
+/// C_trav + (A(L) N(L) + A(R) N(R)) / A(node),
+///
+/// where A is a box's surface area (`Aabb::surface_area`), N a primitive count and
+/// C_trav = `crate::bvh::build::TRAVERSAL_COST` the cost of visiting a node. A ray that
+/// hits the node's box hits a child's box with probability about A(child) / A(node).
+/// (`bvh::build::split_cost` is the crate's answer, from the areas.)
+pub fn sah_cost(
+    node: &Aabb,
+    left: &Aabb,
+    left_count: usize,
+    right: &Aabb,
+    right_count: usize,
+) -> f32 {
+    todo!("Coding exercise 11.2 (chapter 11, Speed against accuracy): the SAH cost of a split")
 }

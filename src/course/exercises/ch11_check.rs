@@ -1,6 +1,7 @@
-//! The check of chapter 11's coding exercise: the cases, the reference
-//! answer for each, and the hints for the typical mistakes. The student's function
-//! is in `ch11.rs`, beside this file; the harness is `harness.rs`.
+//! The check of chapter 11's first coding exercise, the slab test: the cases, the
+//! reference answer for each, and the hints for the typical mistakes. The student's
+//! function is in `ch11.rs`, beside this file (the second exercise's check is
+//! `ch11_sah_check.rs`); the harness is `harness.rs`.
 
 use glam::Vec3;
 
@@ -152,7 +153,9 @@ fn same(a: &SlabAnswer, b: &SlabAnswer) -> bool {
 /// the closed box, clipped to `[range.min, range.max]`, against the crate's [`Aabb::slab`],
 /// on rays parallel to slabs (`inv_d` infinite), lying in a face's plane (0 * inf =
 /// NaN), starting inside, touching a flat box, and with d < 0 and d = -0.
-pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer) -> Outcome {
+pub fn check_slab(
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer + Send + Sync + 'static,
+) -> Outcome {
     let cube = (v(-1.0, -1.0, -1.0), v(1.0, 1.0, 1.0));
     let flat = (v(-1.0, 0.0, -1.0), v(1.0, 0.0, 1.0));
     let inf = f32::INFINITY;
@@ -329,7 +332,7 @@ pub fn check_slab(f: impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer) ->
     run(
         &cases,
         reference,
-        |a| f(a.ray.origin(), a.inv_d, a.min, a.max, a.range),
+        move |a| f(a.ray.origin(), a.inv_d, a.min, a.max, a.range),
         &[
             Mistake {
                 looks_like: &divides,

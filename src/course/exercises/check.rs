@@ -13,22 +13,32 @@ pub use super::ch08_check::*;
 pub use super::ch09_check::*;
 pub use super::ch10_check::*;
 pub use super::ch11_check::*;
+pub use super::ch11_sah_check::*;
 pub use super::harness::*;
 
 /// Every coding exercise, in book order.
-pub const ALL: [Exercise; 14] = [
+pub const ALL: [Exercise; 23] = [
     ROTATION_Y,
+    COMPOSE,
     POINT_AT,
+    T_CLOSEST,
     PIXEL_TO_PLANE,
+    PLANE_TO_PIXEL,
     TO_WORLD,
     TO_LOCAL,
     CAMERA_BASIS,
+    ORTHO_RAY,
     PINHOLE_RAY,
+    PROJECT,
     RAY_PLANE_T,
     RAY_SPHERE_ROOTS,
     MOLLER_TRUMBORE,
     CLOSEST,
+    LAMBERT,
     COVERS,
+    PERSPECTIVE_WEIGHTS,
     COSINE_SAMPLE,
+    BOUNCE_WEIGHT,
     SLAB,
+    SAH_COST,
 ];

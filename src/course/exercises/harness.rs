@@ -8,9 +8,11 @@
 //! still a `todo!()`.
 //!
 //! This file is the harness: how an answer is compared and printed, and how a
-//! student's function is run (a panic or a `todo!()` is caught). Each chapter's
-//! check sits next to the student's file it checks, in `chNN_check.rs` beside
-//! `chNN.rs`; `check.rs` lists them all.
+//! student's function is run: on a thread of its own, each case within
+//! [`CASE_TIME_LIMIT`], so that an endless loop fails the check instead of hanging
+//! `cargo test`, and with its panics caught (a `todo!()` means "not started").
+//! Each chapter's check sits next to the student's file it checks, in
+//! `chNN_check.rs` beside `chNN.rs`; `check.rs` lists them all.
 //!
 //! This module is compiled without the `exercises` feature too: the default test
 //! suite runs every check against the reference implementation (it must pass) and
@@ -20,7 +22,8 @@
 use std::cell::Cell;
 use std::fmt;
 use std::panic::{self, AssertUnwindSafe};
-use std::sync::Once;
+use std::sync::{Once, mpsc};
+use std::time::Duration;
 
 use glam::{Mat4, Vec2, Vec3};
 
@@ -108,7 +111,7 @@ impl Exercise {
     /// One line of a summary table: number, chapter, function, status.
     pub fn row(&self, outcome: &Outcome) -> String {
         format!(
-            "{:<5} ch{}  {:<18} {}",
+            "{:<5} ch{}  {:<20} {}",
             self.number,
             self.chapter,
             self.function,
@@ -203,6 +206,16 @@ impl Answer for Mat4 {
     }
 }
 
+impl<T: Answer, const N: usize> Answer for [T; N] {
+    fn close(&self, other: &[T; N]) -> bool {
+        self.iter().zip(other).all(|(a, b)| a.close(b))
+    }
+    fn show(&self) -> String {
+        let items: Vec<String> = self.iter().map(Answer::show).collect();
+        format!("[{}]", items.join(", "))
+    }
+}
+
 impl<T: Answer> Answer for Option<T> {
     fn close(&self, other: &Option<T>) -> bool {
         match (self, other) {
@@ -240,8 +253,13 @@ impl<A: Answer, B: Answer, C: Answer> Answer for (A, B, C) {
 // ---------------------------------------------------------------------------
 // Running an implementation.
 
+/// How long one case may run before the check gives up on it: an answer that takes
+/// longer is almost certainly stuck in a loop that never ends. Every case of every
+/// check takes well under a second with a right answer, even in a debug build.
+pub const CASE_TIME_LIMIT: Duration = Duration::from_secs(5);
+
 thread_local! {
-    /// True while this thread runs a student's function: its panics are reported in
+    /// True on a thread that runs a student's function: its panics are reported in
     /// the outcome, not printed.
     static QUIET: Cell<bool> = const { Cell::new(false) };
 }
@@ -250,9 +268,11 @@ static INSTALL_HOOK: Once = Once::new();
 
 /// Runs `f`, catching a panic and returning its message.
 ///
-/// The panic hook is replaced once by one that stays silent on a thread while it
-/// runs a check and otherwise calls the previous hook. (Swapping the hook in and out
-/// around every call would race between tests running in parallel.)
+/// The panic hook is replaced once by one that stays silent on a thread that runs a
+/// student's function and otherwise calls the previous hook. (Swapping the hook in
+/// and out around every call would race between tests running in parallel.) A
+/// panic on another thread the function started (a rayon closure, say) still
+/// reaches the function, and so the outcome, but its message is printed there too.
 fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
     INSTALL_HOOK.call_once(|| {
         let previous = panic::take_hook();
@@ -276,6 +296,53 @@ fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
     })
 }
 
+/// A student's function on a thread of its own, answering one case at a time, so
+/// that the check can stop waiting for an answer that never comes.
+///
+/// A function stuck in an endless loop cannot be stopped from outside: its thread
+/// is left behind, still running, and ends with the test program. (Endless
+/// recursion is another matter: it overflows the stack, which aborts the whole
+/// program; no thread can catch that.)
+struct Worker<A, R> {
+    cases: mpsc::Sender<A>,
+    answers: mpsc::Receiver<Result<R, String>>,
+}
+
+impl<A: Send + 'static, R: Send + 'static> Worker<A, R> {
+    fn start(student: impl Fn(A) -> R + Send + 'static) -> Worker<A, R> {
+        let (cases, inbox) = mpsc::channel::<A>();
+        let (outbox, answers) = mpsc::channel();
+        let worker = move || {
+            // Ends when the check drops its sender, or stops listening.
+            for args in inbox {
+                if outbox.send(quietly(|| student(args))).is_err() {
+                    break;
+                }
+            }
+        };
+        // If no thread can be started, the receiver reports the closed channel.
+        let _ = std::thread::Builder::new()
+            .name("exercise".into())
+            .spawn(worker);
+        Worker { cases, answers }
+    }
+
+    /// The answer to `args`: `Ok` with the function's answer or `Err` with its panic
+    /// message; `None` if none came within [`CASE_TIME_LIMIT`].
+    fn answer(&self, args: A) -> Option<Result<R, String>> {
+        if self.cases.send(args).is_err() {
+            return Some(Err("the check could not start a thread to run it".into()));
+        }
+        match self.answers.recv_timeout(CASE_TIME_LIMIT) {
+            Ok(answer) => Some(answer),
+            Err(mpsc::RecvTimeoutError::Timeout) => None,
+            Err(mpsc::RecvTimeoutError::Disconnected) => {
+                Some(Err("the thread running it ended without an answer".into()))
+            }
+        }
+    }
+}
+
 /// A typical mistake: does the answer `got` for these arguments look like it?
 pub(crate) struct Mistake<'a, A, R> {
     pub(crate) looks_like: &'a dyn Fn(&A, &R) -> bool,
@@ -292,27 +359,47 @@ pub(crate) fn gives<'a, A, R: Answer>(
 /// One case: its description and its arguments.
 pub(crate) type Case<A> = (String, A);
 
-/// Runs `student` on every case and compares with `reference`.
-pub(crate) fn run<A: Clone, R: Answer>(
+/// Runs `student` on every case, each within [`CASE_TIME_LIMIT`], and compares with
+/// `reference`. A panic, or a case that does not finish in time, fails the check and
+/// names the case; a `todo!()` means the exercise is not started.
+pub(crate) fn run<A, R>(
     cases: &[Case<A>],
     reference: impl Fn(&A) -> R,
-    student: impl Fn(A) -> R,
+    student: impl Fn(A) -> R + Send + 'static,
     mistakes: &[Mistake<'_, A, R>],
     hint: &str,
-) -> Outcome {
-    for (case, args) in cases {
+) -> Outcome
+where
+    A: Clone + Send + 'static,
+    R: Answer + Send + 'static,
+{
+    let worker = Worker::start(student);
+    for (n, (case, args)) in cases.iter().enumerate() {
         let expected = reference(args);
-        let got = match quietly(|| student(args.clone())) {
-            Ok(got) => got,
-            Err(message) if message.contains("not yet implemented") => {
+        let got = match worker.answer(args.clone()) {
+            Some(Ok(got)) => got,
+            Some(Err(message)) if message.contains("not yet implemented") => {
                 return Outcome::NotStarted;
             }
-            Err(message) => {
+            Some(Err(message)) => {
                 return Outcome::Fail {
                     case: case.clone(),
                     expected: expected.show(),
                     got: format!("a panic: {message}"),
                     hint: format!("the function must not panic on this input. {hint}"),
+                };
+            }
+            None => {
+                let limit = CASE_TIME_LIMIT.as_secs();
+                return Outcome::Fail {
+                    case: case.clone(),
+                    expected: expected.show(),
+                    got: format!("no answer within {limit} s"),
+                    hint: format!(
+                        "case {} ({case}) did not finish within {limit} s: an infinite loop? \
+                         Look for a loop whose condition never changes. {hint}",
+                        n + 1
+                    ),
                 };
             }
         };

@@ -1,10 +1,14 @@
-//! Coding exercises: one file per chapter, in which the student writes the function
-//! the lesson is about.
+//! Coding exercises: one file per chapter, in which the student writes the functions
+//! the lesson is about, two or more per lesson ([`check::ALL`] lists them).
 //!
 //! The files `chNN.rs` hold the student's functions, each a `todo!()` to begin with;
 //! they are compiled only with the `exercises` feature. [`check`] holds the checks,
 //! which compare an implementation with the crate's reference code and are always
-//! compiled (the default tests run them against the reference). Check your work with
+//! compiled (the default tests run them against the reference and against typical
+//! wrong answers). A check runs the student's function on a thread of its own, each
+//! case within [`harness::CASE_TIME_LIMIT`], and catches its panics. `--mine`
+//! ([`crate::course::mine`]) draws a lesson's picture with a passing function. Check
+//! your work with
 //!
 //! ```text
 //! cargo test --features exercises --test exercises          # every exercise
@@ -22,6 +26,7 @@ pub mod ch08_check;
 pub mod ch09_check;
 pub mod ch10_check;
 pub mod ch11_check;
+pub mod ch11_sah_check;
 pub mod check;
 pub mod harness;
 
@@ -54,12 +59,17 @@ pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
     use check::*;
     vec![
         (ROTATION_Y, check_rotation_y(ch01::rotation_y)),
+        (COMPOSE, check_compose(ch01::compose)),
         (POINT_AT, check_point_at(ch02::point_at)),
+        (T_CLOSEST, check_t_closest(ch02::t_closest)),
         (PIXEL_TO_PLANE, check_pixel_to_plane(ch03::pixel_to_plane)),
+        (PLANE_TO_PIXEL, check_plane_to_pixel(ch03::plane_to_pixel)),
         (TO_WORLD, check_to_world(ch04::to_world)),
         (TO_LOCAL, check_to_local(ch04::to_local)),
         (CAMERA_BASIS, check_camera_basis(ch05::camera_basis)),
+        (ORTHO_RAY, check_ortho_ray(ch05::ortho_ray)),
         (PINHOLE_RAY, check_pinhole_ray(ch06::pinhole_ray)),
+        (PROJECT, check_project(ch06::project)),
         (RAY_PLANE_T, check_ray_plane_t(ch07::ray_plane_t)),
         (
             RAY_SPHERE_ROOTS,
@@ -70,8 +80,15 @@ pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
             check_moller_trumbore(ch07::moller_trumbore),
         ),
         (CLOSEST, check_closest(ch08::closest)),
+        (LAMBERT, check_lambert(ch08::lambert)),
         (COVERS, check_covers(ch09::covers)),
+        (
+            PERSPECTIVE_WEIGHTS,
+            check_perspective_weights(ch09::perspective_weights),
+        ),
         (COSINE_SAMPLE, check_cosine_sample(ch10::cosine_sample)),
+        (BOUNCE_WEIGHT, check_bounce_weight(ch10::bounce_weight)),
         (SLAB, check_slab(ch11::slab)),
+        (SAH_COST, check_sah_cost(ch11::sah_cost)),
     ]
 }

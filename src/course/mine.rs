@@ -1,0 +1,179 @@
+//! `--mine`: a lesson's picture drawn a second time, with the student's own code.
+//!
+//! Each `my_*` function gives the student's function of one coding exercise (from
+//! `src/course/exercises/chNN.rs`) once its check passes. Otherwise it is an error
+//! whose message says what to do: the check's report (the case, expected, got and
+//! hint), or, without the `exercises` feature, one line with the command that turns
+//! it on. The examples' `--mine` flags call these; the pictures themselves are the
+//! examples' own, drawn with the function given.
+
+use glam::{Mat4, Vec2, Vec3};
+
+use crate::camera::{Film, Frame};
+#[cfg(feature = "exercises")]
+use crate::course::exercises as ch;
+use crate::course::exercises::check::{self, Exercise};
+use crate::lighting::AMBIENT;
+use crate::offset::Offset;
+use crate::ray::{Interval, Ray};
+use crate::scene::{PointLight, Scene, SceneHit};
+use crate::shapes::Shape;
+use crate::transform::Transform;
+use crate::{Error, Result};
+
+/// The signature of coding exercise 1.2, `compose(first, second)`.
+pub type Compose = fn(&Transform, &Transform) -> Mat4;
+
+/// The signature of coding exercise 3.1, `pixel_to_plane(film, px, py)`.
+pub type PixelToPlane = fn(&Film, u32, u32) -> Vec2;
+
+/// The signature of coding exercise 6.1, `pinhole_ray(film, s, frame, px, py)`.
+pub type PinholeRay = fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3);
+
+/// The signature of coding exercise 8.1, `closest(ray, shapes, range)`.
+pub type Closest = fn(&Ray, &[Shape], Interval) -> Option<SceneHit>;
+
+/// The signature of coding exercise 8.2, `lambert(p, n, albedo, light, visible)`.
+pub type Lambert = fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3;
+
+/// The student's `compose` for lesson 01's `--mine` (coding exercise 1.2).
+pub fn my_compose() -> Result<Compose> {
+    #[cfg(feature = "exercises")]
+    {
+        passing(
+            check::COMPOSE,
+            check::check_compose(ch::ch01::compose),
+            ch::ch01::compose,
+        )
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(feature_off(
+        check::COMPOSE,
+        "cargo run --features exercises --example 01_transforms -- --mine",
+    ))
+}
+
+/// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.1).
+pub fn my_pixel_to_plane() -> Result<PixelToPlane> {
+    #[cfg(feature = "exercises")]
+    {
+        passing(
+            check::PIXEL_TO_PLANE,
+            check::check_pixel_to_plane(ch::ch03::pixel_to_plane),
+            ch::ch03::pixel_to_plane,
+        )
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(feature_off(
+        check::PIXEL_TO_PLANE,
+        "cargo run --features exercises --example 03_ortho_camera -- --mine",
+    ))
+}
+
+/// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.1).
+pub fn my_pinhole_ray() -> Result<PinholeRay> {
+    #[cfg(feature = "exercises")]
+    {
+        passing(
+            check::PINHOLE_RAY,
+            check::check_pinhole_ray(ch::ch06::pinhole_ray),
+            ch::ch06::pinhole_ray,
+        )
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(feature_off(
+        check::PINHOLE_RAY,
+        "cargo run --features exercises --example 06_pinhole_camera -- --mine",
+    ))
+}
+
+/// The student's `closest` for lesson 08's `--mine` (coding exercise 8.1).
+pub fn my_closest() -> Result<Closest> {
+    #[cfg(feature = "exercises")]
+    {
+        passing(
+            check::CLOSEST,
+            check::check_closest(ch::ch08::closest),
+            ch::ch08::closest,
+        )
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(feature_off(
+        check::CLOSEST,
+        "cargo run --release --features exercises --example 08_ray_casting -- --mine",
+    ))
+}
+
+/// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.2).
+pub fn my_lambert() -> Result<Lambert> {
+    #[cfg(feature = "exercises")]
+    {
+        passing(
+            check::LAMBERT,
+            check::check_lambert(ch::ch08::lambert),
+            ch::ch08::lambert,
+        )
+    }
+    #[cfg(not(feature = "exercises"))]
+    Err(feature_off(
+        check::LAMBERT,
+        "cargo run --release --features exercises --example 08_ray_casting -- --mine",
+    ))
+}
+
+/// For a lesson whose `--mine` draws several pictures, one per exercise: `Some` of
+/// the student's function when its exercise passes; `None` when it does not, after
+/// printing the check's report on stderr, so that the pictures of the exercises that
+/// pass are still drawn. Without the `exercises` feature, the error.
+pub fn if_passing<F>(mine: Result<F>) -> Result<Option<F>> {
+    match mine {
+        Ok(f) => Ok(Some(f)),
+        Err(Error::Exercise { report }) if cfg!(feature = "exercises") => {
+            eprintln!("{report}\n(its --mine picture is not drawn)\n");
+            Ok(None)
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// Lesson 08's lit colour along `ray` (`raycast::lit` with the scaled offset), with
+/// the Lambert formula `lambert` in place of the crate's: the closest hit, a shadow
+/// ray to the scene's point light, then `lambert` at the hit.
+pub fn lit_with(scene: &Scene, ray: &Ray, lambert: Lambert) -> Vec3 {
+    let Some(found) = scene.closest(ray, Interval::AHEAD) else {
+        return scene.background();
+    };
+    let (hit, colour) = (found.hit, scene.object(&found).colour());
+    let Some(light) = scene.point_light() else {
+        return colour * AMBIENT;
+    };
+    let (origin, t_min) = Offset::Scaled.start(hit.point, hit.error, hit.facing());
+    let distance = (light.position - hit.point).length();
+    let visible = Ray::new(origin, light.position - origin)
+        .is_ok_and(|r| !scene.occluded(&r, Interval::new(t_min, distance)));
+    lambert(hit.point, hit.facing(), colour, &light, visible)
+}
+
+/// The student's function `f` of `exercise` if its check's `outcome` is a pass;
+/// otherwise the check's report as the error.
+#[cfg(feature = "exercises")]
+fn passing<F>(exercise: Exercise, outcome: check::Outcome, f: F) -> Result<F> {
+    match outcome {
+        check::Outcome::Pass => Ok(f),
+        outcome => Err(Error::Exercise {
+            report: exercise.report(&outcome),
+        }),
+    }
+}
+
+/// `--mine` without the `exercises` feature: one line with the `command` that turns
+/// it on.
+#[cfg(not(feature = "exercises"))]
+fn feature_off(exercise: Exercise, command: &str) -> Error {
+    Error::Exercise {
+        report: format!(
+            "--mine runs your code for coding exercise {}; turn the exercises on: {command}",
+            exercise.number
+        ),
+    }
+}

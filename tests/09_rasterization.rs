@@ -14,9 +14,9 @@ use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Error;
 use render_lessons::raster::{
-    ClipVertex, Cull, DepthRange, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Model, Pipeline,
-    RasterSettings, ScreenVertex, Shading, ShadowMap, Shadows, Varyings, clip_triangle, rasterize,
-    rasterize_triangle,
+    CameraTransforms, ClipVertex, Cull, DepthRange, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh,
+    Model, RasterSettings, ScreenVertex, Shading, ShadowMap, Shadows, Varyings, clip_triangle,
+    rasterize, rasterize_triangle,
 };
 use render_lessons::raster::{TOLERANCE, agreement, reference};
 use render_lessons::scene::{PointLight, Scene};
@@ -108,7 +108,7 @@ fn lecture_tables() {
 }
 
 fn projection_table(camera: &Camera, points: &[Vec3]) -> String {
-    let pipeline = Pipeline::new(camera, DEPTH).unwrap();
+    let pipeline = CameraTransforms::new(camera, DEPTH).unwrap();
     let mut out = String::new();
     for &p in points {
         let clip = pipeline.to_clip(&Transform::IDENTITY, p);
@@ -158,7 +158,7 @@ fn projection_matches_the_cameras() {
         PinholeCamera::at_origin(film(), 1.0).unwrap().into(),
         OrthoCamera::at_origin(film()).into(),
     ] {
-        let pipeline = Pipeline::new(&camera, DEPTH).unwrap();
+        let pipeline = CameraTransforms::new(&camera, DEPTH).unwrap();
         for i in 0..200 {
             let f = i as f32;
             let p = Vec3::new(
@@ -369,7 +369,7 @@ fn interpolation_is_perspective_correct() {
         PinholeCamera::at_origin(Film::new(64, 64, (-1.0, 1.0), (-1.0, 1.0)).unwrap(), 1.0)
             .unwrap()
             .into();
-    let pipeline = Pipeline::new(&camera, DEPTH).unwrap();
+    let pipeline = CameraTransforms::new(&camera, DEPTH).unwrap();
     let corners = [
         Vec3::new(-1.0, -1.0, -1.5),
         Vec3::new(1.0, -1.0, -1.5),
@@ -435,7 +435,7 @@ fn interpolation_is_perspective_correct() {
 #[test]
 fn near_plane_clipping() {
     let camera: Camera = PinholeCamera::at_origin(film(), 1.0).unwrap().into();
-    let pipeline = Pipeline::new(&camera, DEPTH).unwrap();
+    let pipeline = CameraTransforms::new(&camera, DEPTH).unwrap();
     let v = |p: Vec3| ClipVertex {
         clip: pipeline.to_clip(&Transform::IDENTITY, p),
         varyings: Varyings {

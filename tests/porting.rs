@@ -25,7 +25,7 @@ use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
 use glam::{Mat4, Vec3};
 use render_lessons::camera::{Frame, PinholeCamera};
-use render_lessons::raster::pipeline;
+use render_lessons::raster::projection;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Aabb, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
 use render_lessons::transform::{Transform, from_rows};
@@ -219,7 +219,7 @@ fn camera_to_world_undoes_world_to_camera() {
 fn pipeline_view_is_the_frames_world_to_camera() {
     let frame = Frame::look_at(v(1.0, 3.0, 2.0), v(4.0, -2.0, 8.0), v(1.0, 1.0, 0.0)).unwrap();
     assert_eq!(
-        pipeline::view(&frame).unwrap(),
+        projection::view(&frame).unwrap(),
         frame.world_to_camera().unwrap()
     );
 }

@@ -3,17 +3,14 @@
 //! z-buffer -> per-pixel shading. The same scenes as the ray caster of lesson 08,
 //! drawn triangle by triangle instead of ray by ray.
 //!
-//! The work runs in two parallel stages: vertices and triangles (transform, light,
-//! clip, project), then bands of rows, each band drawing every triangle in list
-//! order into its own rows. A pixel is only ever touched by one band, always in the
-//! same triangle order, so the image is the same bit for bit whatever the number of
-//! threads.
+//! [`pipeline`] runs the stages in order; each stage has a file of its own.
 
 pub mod clip;
 pub mod compare;
 pub mod mesh;
 pub mod obj;
 pub mod pipeline;
+pub mod projection;
 pub mod rasterize;
 pub mod shade;
 pub mod shadow_map;
@@ -26,7 +23,8 @@ pub use clip::clip_triangle;
 pub use compare::{Agreement, Reference, TOLERANCE, agreement, difference, reference};
 pub use mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
 pub use obj::{FaceCounts, LoadedMesh, fan};
-pub use pipeline::{DepthRange, Pipeline};
+pub use pipeline::{BAND_ROWS, rasterize, viewer};
+pub use projection::{CameraTransforms, DepthRange};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};
 pub use shade::{Shading, Viewer, shade};
 pub use shadow_map::{ShadowMap, Shadows};
@@ -37,20 +35,11 @@ pub use tessellate::{
 };
 pub use vertex::{ClipVertex, Varyings};
 
-use std::ops::Range;
-
 use glam::Vec3;
-use rayon::prelude::*;
 
-use crate::camera::Camera;
-use crate::error::{Result, finite3};
-use crate::framebuffer::Framebuffer;
-use crate::render::in_pool;
-use crate::scene::{Object, PointLight};
+use crate::error::Result;
+use crate::scene::Object;
 use crate::transform::Transform;
-
-/// Rows per band of the parallel fragment stage.
-pub const BAND_ROWS: u32 = 16;
 
 /// A mesh placed in the world by a model transform, with one colour (linear RGB albedo).
 #[derive(Clone, Debug, PartialEq)]
@@ -126,218 +115,3 @@ impl Default for RasterSettings {
         }
     }
 }
-
-/// The viewer as lighting needs it.
-pub fn viewer(camera: &Camera) -> Viewer {
-    match camera.pinhole() {
-        Some(c) => Viewer::Point(c.frame().position()),
-        None => Viewer::Direction(camera.frame().basis().w()),
-    }
-}
-
-/// What lighting needs besides the surface: the light, the viewer, and the shadow
-/// map if there is one.
-struct Lights<'a> {
-    light: &'a PointLight,
-    viewer: Viewer,
-    shadow_map: Option<&'a ShadowMap>,
-}
-
-impl Lights<'_> {
-    /// Lambert's law at `p`, the light visible unless the shadow map says otherwise.
-    fn shade(&self, p: Vec3, n: Vec3, albedo: Vec3) -> Vec3 {
-        shade(p, n, albedo, self.light, &self.viewer, || {
-            self.shadow_map.is_none_or(|m| m.lit(p, n))
-        })
-    }
-}
-
-// ANCHOR: rasterize
-/// The image of `instances` seen by `camera` and lit by `light`: Lecture 2's
-/// pipeline, with a shadow map first if `settings` asks for one. `threads` = `None`
-/// uses every core; the image does not depend on it.
-pub fn rasterize(
-    instances: &[Model],
-    camera: &Camera,
-    light: &PointLight,
-    settings: &RasterSettings,
-    threads: Option<usize>,
-) -> Result<Framebuffer> {
-    finite3("background", settings.background)?;
-    finite3("light position", light.position)?;
-    finite3("light intensity", light.intensity)?;
-    let pipeline = Pipeline::new(camera, settings.depth)?;
-    let (width, height) = (camera.film().width(), camera.film().height());
-    let mut colours = vec![settings.background; width as usize * height as usize];
-    in_pool(threads, || -> Result<()> {
-        let shadow_map = match &settings.shadows {
-            Some(shadows) => Some(ShadowMap::build(instances, light, shadows)?),
-            None => None,
-        };
-        let shadow_map = shadow_map.as_ref();
-        let triangles = setup(instances, &pipeline, camera, light, settings, shadow_map)?;
-        let lights = Lights {
-            light,
-            viewer: viewer(camera),
-            shadow_map,
-        };
-        in_bands(
-            &triangles,
-            width,
-            height,
-            &mut colours,
-            |mine, rows, pixels| {
-                draw_band(&triangles, mine, rows, width, pixels, &lights, settings);
-            },
-        );
-        Ok(())
-    })??;
-    Framebuffer::from_pixels(width, height, colours)
-}
-// ANCHOR_END: rasterize
-
-/// Vertex and triangle stage: every instance's vertices transformed (and lit, for
-/// Gouraud shading), its triangles clipped and projected to screen triangles, in order.
-fn setup(
-    instances: &[Model],
-    pipeline: &Pipeline,
-    camera: &Camera,
-    light: &PointLight,
-    settings: &RasterSettings,
-    shadow_map: Option<&ShadowMap>,
-) -> Result<Vec<[ScreenVertex; 3]>> {
-    let lights = Lights {
-        light,
-        viewer: viewer(camera),
-        shadow_map,
-    };
-    let mut screen = Vec::new();
-    for instance in instances {
-        let vertices = transform_vertices(instance, pipeline, &lights, settings.shading)?;
-        let triangles: Vec<_> = instance
-            .mesh
-            .triangles
-            .par_iter()
-            .flat_map_iter(|t| {
-                let t = t.map(|i| vertices[i as usize]);
-                clip_triangle(&t).into_iter().filter_map(|c| {
-                    let [a, b, c] = c.map(|v| ScreenVertex::from_clip(pipeline, &v));
-                    Some([a?, b?, c?])
-                })
-            })
-            .collect();
-        screen.extend(triangles);
-    }
-    Ok(screen)
-}
-
-// ANCHOR: vertex_stage
-/// The vertex stage: world position (model matrix), world normal (inverse transpose
-/// of the model matrix), clip position (projection x view), and the colour to
-/// interpolate: lit here for Gouraud shading, the albedo for per-pixel shading.
-fn transform_vertices(
-    instance: &Model,
-    pipeline: &Pipeline,
-    lights: &Lights,
-    shading: Shading,
-) -> Result<Vec<ClipVertex>> {
-    let albedo = finite3("colour", instance.colour)?;
-    let normal_matrix = instance.model.inverse()?.matrix().transpose();
-    let mesh = &instance.mesh;
-    Ok((0..mesh.positions.len())
-        .into_par_iter()
-        .map(|i| {
-            let world = instance.model.point(mesh.positions[i]);
-            let normal = normal_matrix
-                .transform_vector3(mesh.normals[i])
-                .normalize_or_zero();
-            let colour = match shading {
-                Shading::PerVertex => lights.shade(world, normal, albedo),
-                Shading::PerPixel => albedo,
-            };
-            ClipVertex {
-                clip: pipeline.to_clip(&Transform::IDENTITY, world),
-                varyings: Varyings {
-                    world,
-                    normal,
-                    colour,
-                },
-            }
-        })
-        .collect())
-}
-// ANCHOR_END: vertex_stage
-
-/// Splits `buffer` (`width` x `height`, row by row) into bands of [`BAND_ROWS`]
-/// rows and calls `draw(mine, rows, band)` for each, in parallel, where `mine` lists
-/// (in order) the triangles whose rows may touch the band. Sorting triangles into
-/// bands first means a band never even looks at the triangles far from it.
-fn in_bands<T: Send>(
-    triangles: &[[ScreenVertex; 3]],
-    width: u32,
-    height: u32,
-    buffer: &mut [T],
-    draw: impl Fn(&[u32], Range<u32>, &mut [T]) + Sync,
-) {
-    let bands = height.div_ceil(BAND_ROWS) as usize;
-    let mut bins = vec![Vec::new(); bands];
-    for (k, t) in triangles.iter().enumerate() {
-        let lo = t.iter().map(|v| v.pixel.y).fold(f32::INFINITY, f32::min);
-        let hi = t
-            .iter()
-            .map(|v| v.pixel.y)
-            .fold(f32::NEG_INFINITY, f32::max);
-        // One row of margin: pixel centres sit half a row inside.
-        if !(hi >= -1.0 && lo <= height as f32 + 1.0) {
-            continue;
-        }
-        let row = |y: f32| (y.clamp(0.0, (height - 1) as f32) as u32 / BAND_ROWS) as usize;
-        for bin in &mut bins[row(lo - 1.0)..=row(hi + 1.0)] {
-            bin.push(k as u32);
-        }
-    }
-    buffer
-        .par_chunks_mut(width as usize * BAND_ROWS as usize)
-        .zip(bins.par_iter())
-        .enumerate()
-        .for_each(|(i, (band, mine))| {
-            let first = i as u32 * BAND_ROWS;
-            draw(mine, first..(first + BAND_ROWS).min(height), band);
-        });
-}
-
-// ANCHOR: draw_band
-/// The fragment stage for one band of rows: its triangles in order, a z-buffer
-/// with the test "nearer than what is there" (depth less-than), and the shading.
-fn draw_band(
-    triangles: &[[ScreenVertex; 3]],
-    mine: &[u32],
-    rows: Range<u32>,
-    width: u32,
-    pixels: &mut [Vec3],
-    lights: &Lights,
-    settings: &RasterSettings,
-) {
-    let mut depth = vec![f32::INFINITY; pixels.len()];
-    let first_row = rows.start;
-    for &k in mine {
-        rasterize_triangle(
-            &triangles[k as usize],
-            settings.cull,
-            width,
-            rows.clone(),
-            |f| {
-                let i = ((f.y - first_row) * width + f.x) as usize;
-                if f.depth < depth[i] {
-                    depth[i] = f.depth;
-                    let v = f.varyings;
-                    pixels[i] = match settings.shading {
-                        Shading::PerVertex => v.colour,
-                        Shading::PerPixel => lights.shade(v.world, v.normal, v.colour),
-                    };
-                }
-            },
-        );
-    }
-}
-// ANCHOR_END: draw_band

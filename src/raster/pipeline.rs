@@ -1,208 +1,245 @@
-//! Transform (Lecture 2, "Rasterization Pipeline: Transform"): every vertex goes
-//! model -> world -> camera -> clip space by 4x4 matrices, then through the
-//! perspective divide to normalised device coordinates (NDC) and by the viewport to
-//! pixels.
+//! The pipeline of Lecture 2 ("Rasterization Pipeline"), stage after stage: modeling
+//! (a vertex list and a triangle list) -> transform -> lighting -> primitive
+//! rasterization with a z-buffer -> per-pixel shading. Each stage has its own file
+//! ([`super::projection`], [`super::shade`], [`super::clip`], [`super::rasterize`]);
+//! this one runs them in order.
 //!
-//! Conventions: camera space looks down -Z (as the cameras of lesson 05/06); NDC is
-//! the cube [-1, 1]^3 with the near plane at z = -1 and the far plane at z = +1 (the
-//! OpenGL convention); pixels count columns from the left and rows from the top, and
-//! the centre of pixel (i, j) is (i + 0.5, j + 0.5), as in [`Film::plane_to_pixel`].
-//! So a vertex lands on exactly the continuous pixel position that
-//! `PinholeCamera::project` and `OrthoCamera::project` give it.
+//! The work runs in two parallel stages: vertices and triangles (transform, light,
+//! clip, project), then bands of rows, each band drawing every triangle in list
+//! order into its own rows. A pixel is only ever touched by one band, always in the
+//! same triangle order, so the image is the same bit for bit whatever the number of
+//! threads.
 
-use glam::{Vec3, Vec4};
+use std::ops::Range;
 
-use crate::camera::{Camera, Film, Frame};
-use crate::error::{Error, Result, finite, positive};
-use crate::transform::{Transform, from_rows};
+use glam::Vec3;
+use rayon::prelude::*;
 
-/// Where the depth range starts and ends, as distances in front of the camera.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DepthRange {
-    /// Distance to the near plane (> 0 for a pinhole camera, >= 0 for orthographic).
-    pub near: f32,
-    /// Distance to the far plane (> near).
-    pub far: f32,
+use super::{
+    CameraTransforms, ClipVertex, Model, RasterSettings, ScreenVertex, Shading, ShadowMap,
+    Varyings, Viewer, clip_triangle, rasterize_triangle, shade,
+};
+use crate::camera::Camera;
+use crate::error::{Result, finite3};
+use crate::framebuffer::Framebuffer;
+use crate::render::in_pool;
+use crate::scene::PointLight;
+use crate::transform::Transform;
+
+/// Rows per band of the parallel fragment stage.
+pub const BAND_ROWS: u32 = 16;
+
+/// The viewer as lighting needs it.
+pub fn viewer(camera: &Camera) -> Viewer {
+    match camera.pinhole() {
+        Some(c) => Viewer::Point(c.frame().position()),
+        None => Viewer::Direction(camera.frame().basis().w()),
+    }
 }
 
-/// The three matrices of one camera, and the film they map onto.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pipeline {
-    view: Transform,
-    projection: Transform,
-    viewport: Transform,
-    film: Film,
+/// What lighting needs besides the surface: the light, the viewer, and the shadow
+/// map if there is one.
+struct Lights<'a> {
+    light: &'a PointLight,
+    viewer: Viewer,
+    shadow_map: Option<&'a ShadowMap>,
 }
 
-impl Pipeline {
-    /// The view, projection and viewport matrices that reproduce `camera`.
-    pub fn new(camera: &Camera, depth: DepthRange) -> Result<Pipeline> {
-        let film = *camera.film();
-        let projection = match camera.pinhole() {
-            Some(c) => perspective(&film, c.screen_distance(), depth)?,
-            None => orthographic(&film, depth)?,
+impl Lights<'_> {
+    /// Lambert's law at `p`, the light visible unless the shadow map says otherwise.
+    fn shade(&self, p: Vec3, n: Vec3, albedo: Vec3) -> Vec3 {
+        shade(p, n, albedo, self.light, &self.viewer, || {
+            self.shadow_map.is_none_or(|m| m.lit(p, n))
+        })
+    }
+}
+
+// ANCHOR: rasterize
+/// The image of `models` seen by `camera` and lit by `light`: Lecture 2's
+/// pipeline, with a shadow map first if `settings` asks for one. `threads` = `None`
+/// uses every core; the image does not depend on it.
+pub fn rasterize(
+    models: &[Model],
+    camera: &Camera,
+    light: &PointLight,
+    settings: &RasterSettings,
+    threads: Option<usize>,
+) -> Result<Framebuffer> {
+    finite3("background", settings.background)?;
+    finite3("light position", light.position)?;
+    finite3("light intensity", light.intensity)?;
+    let transforms = CameraTransforms::new(camera, settings.depth)?;
+    let (width, height) = (camera.film().width(), camera.film().height());
+    let mut colours = vec![settings.background; width as usize * height as usize];
+    in_pool(threads, || -> Result<()> {
+        let shadow_map = match &settings.shadows {
+            Some(shadows) => Some(ShadowMap::build(models, light, shadows)?),
+            None => None,
         };
-        Ok(Pipeline {
-            view: view(camera.frame())?,
-            projection,
-            viewport: viewport(&film)?,
-            film,
+        let shadow_map = shadow_map.as_ref();
+        let triangles = setup(models, &transforms, camera, light, settings, shadow_map)?;
+        let lights = Lights {
+            light,
+            viewer: viewer(camera),
+            shadow_map,
+        };
+        in_bands(
+            &triangles,
+            width,
+            height,
+            &mut colours,
+            |mine, rows, pixels| {
+                draw_band(&triangles, mine, rows, width, pixels, &lights, settings);
+            },
+        );
+        Ok(())
+    })??;
+    Framebuffer::from_pixels(width, height, colours)
+}
+// ANCHOR_END: rasterize
+
+/// Vertex and triangle stage: every model's vertices transformed (and lit, for
+/// Gouraud shading), its triangles clipped and projected to screen triangles, in order.
+pub(super) fn setup(
+    models: &[Model],
+    transforms: &CameraTransforms,
+    camera: &Camera,
+    light: &PointLight,
+    settings: &RasterSettings,
+    shadow_map: Option<&ShadowMap>,
+) -> Result<Vec<[ScreenVertex; 3]>> {
+    let lights = Lights {
+        light,
+        viewer: viewer(camera),
+        shadow_map,
+    };
+    let mut screen = Vec::new();
+    for model in models {
+        let vertices = transform_vertices(model, transforms, &lights, settings.shading)?;
+        let triangles: Vec<_> = model
+            .mesh
+            .triangles
+            .par_iter()
+            .flat_map_iter(|t| {
+                let t = t.map(|i| vertices[i as usize]);
+                clip_triangle(&t).into_iter().filter_map(|c| {
+                    let [a, b, c] = c.map(|v| ScreenVertex::from_clip(transforms, &v));
+                    Some([a?, b?, c?])
+                })
+            })
+            .collect();
+        screen.extend(triangles);
+    }
+    Ok(screen)
+}
+
+// ANCHOR: vertex_stage
+/// The vertex stage: world position (model matrix), world normal (inverse transpose
+/// of the model matrix), clip position (projection x view), and the colour to
+/// interpolate: lit here for Gouraud shading, the albedo for per-pixel shading.
+fn transform_vertices(
+    model: &Model,
+    transforms: &CameraTransforms,
+    lights: &Lights,
+    shading: Shading,
+) -> Result<Vec<ClipVertex>> {
+    let albedo = finite3("colour", model.colour)?;
+    let normal_matrix = model.model.inverse()?.matrix().transpose();
+    let mesh = &model.mesh;
+    Ok((0..mesh.positions.len())
+        .into_par_iter()
+        .map(|i| {
+            let world = model.model.point(mesh.positions[i]);
+            let normal = normal_matrix
+                .transform_vector3(mesh.normals[i])
+                .normalize_or_zero();
+            let colour = match shading {
+                Shading::PerVertex => lights.shade(world, normal, albedo),
+                Shading::PerPixel => albedo,
+            };
+            ClipVertex {
+                clip: transforms.to_clip(&Transform::IDENTITY, world),
+                varyings: Varyings {
+                    world,
+                    normal,
+                    colour,
+                },
+            }
         })
-    }
+        .collect())
+}
+// ANCHOR_END: vertex_stage
 
-    /// World to camera space.
-    pub fn view(&self) -> Transform {
-        self.view
-    }
-
-    /// Camera to clip space.
-    pub fn projection(&self) -> Transform {
-        self.projection
-    }
-
-    /// NDC to pixels (and depth in [0, 1]).
-    pub fn viewport(&self) -> Transform {
-        self.viewport
-    }
-
-    /// The film the viewport maps onto.
-    pub fn film(&self) -> &Film {
-        &self.film
-    }
-
-    // ANCHOR: to_clip
-    /// A model-space point in clip space: P V M (x, y, z, 1).
-    pub fn to_clip(&self, model: &Transform, p: Vec3) -> Vec4 {
-        let world = model.point(p);
-        self.projection.apply(self.view.apply(world.extend(1.0)))
-    }
-    // ANCHOR_END: to_clip
-
-    // ANCHOR: to_screen
-    /// A clip-space point in pixels: divide by w (clip -> NDC), then the viewport.
-    /// The result is (column, row from the top, depth in [0, 1]), or `None` when
-    /// w <= 0: such a point is not in front of the camera and must be clipped first.
-    pub fn to_screen(&self, clip: Vec4) -> Option<Vec3> {
-        if clip.w <= 0.0 || !clip.is_finite() {
-            return None;
+/// Splits `buffer` (`width` x `height`, row by row) into bands of [`BAND_ROWS`]
+/// rows and calls `draw(mine, rows, band)` for each, in parallel, where `mine` lists
+/// (in order) the triangles whose rows may touch the band. Sorting triangles into
+/// bands first means a band never even looks at the triangles far from it.
+pub(super) fn in_bands<T: Send>(
+    triangles: &[[ScreenVertex; 3]],
+    width: u32,
+    height: u32,
+    buffer: &mut [T],
+    draw: impl Fn(&[u32], Range<u32>, &mut [T]) + Sync,
+) {
+    let bands = height.div_ceil(BAND_ROWS) as usize;
+    let mut bins = vec![Vec::new(); bands];
+    for (k, t) in triangles.iter().enumerate() {
+        let lo = t.iter().map(|v| v.pixel.y).fold(f32::INFINITY, f32::min);
+        let hi = t
+            .iter()
+            .map(|v| v.pixel.y)
+            .fold(f32::NEG_INFINITY, f32::max);
+        // One row of margin: pixel centres sit half a row inside.
+        if !(hi >= -1.0 && lo <= height as f32 + 1.0) {
+            continue;
         }
-        let ndc = clip.truncate() / clip.w;
-        Some(self.viewport.point(ndc))
+        let row = |y: f32| (y.clamp(0.0, (height - 1) as f32) as u32 / BAND_ROWS) as usize;
+        for bin in &mut bins[row(lo - 1.0)..=row(hi + 1.0)] {
+            bin.push(k as u32);
+        }
     }
-    // ANCHOR_END: to_screen
-}
-
-// ANCHOR: view
-/// World to camera space for a camera with position p and basis [u v w]: the inverse
-/// of x_world = B x_cam + p, i.e. x_cam = B^T (x_world - p). Row by row:
-///
-/// ```text
-/// | u_x u_y u_z  -u.p |
-/// | v_x v_y v_z  -v.p |
-/// | w_x w_y w_z  -w.p |
-/// |  0   0   0     1  |
-/// ```
-///
-/// The matrix belongs to the camera, so the frame builds it
-/// ([`Frame::world_to_camera`]); the pipeline only asks for it.
-pub fn view(frame: &Frame) -> Result<Transform> {
-    frame.world_to_camera()
-}
-// ANCHOR_END: view
-
-fn depth_range(depth: DepthRange, near_min_exclusive: bool) -> Result<(f32, f32)> {
-    let near = finite("near", depth.near)?;
-    let far = finite("far", depth.far)?;
-    if near_min_exclusive {
-        positive("near", near)?;
-    } else if near < 0.0 {
-        return Err(Error::NotPositive {
-            param: "near",
-            value: near,
+    buffer
+        .par_chunks_mut(width as usize * BAND_ROWS as usize)
+        .zip(bins.par_iter())
+        .enumerate()
+        .for_each(|(i, (band, mine))| {
+            let first = i as u32 * BAND_ROWS;
+            draw(mine, first..(first + BAND_ROWS).min(height), band);
         });
+}
+
+// ANCHOR: draw_band
+/// The fragment stage for one band of rows: its triangles in order, a z-buffer
+/// with the test "nearer than what is there" (depth less-than), and the shading.
+fn draw_band(
+    triangles: &[[ScreenVertex; 3]],
+    mine: &[u32],
+    rows: Range<u32>,
+    width: u32,
+    pixels: &mut [Vec3],
+    lights: &Lights,
+    settings: &RasterSettings,
+) {
+    let mut depth = vec![f32::INFINITY; pixels.len()];
+    let first_row = rows.start;
+    for &k in mine {
+        rasterize_triangle(
+            &triangles[k as usize],
+            settings.cull,
+            width,
+            rows.clone(),
+            |f| {
+                let i = ((f.y - first_row) * width + f.x) as usize;
+                if f.depth < depth[i] {
+                    depth[i] = f.depth;
+                    let v = f.varyings;
+                    pixels[i] = match settings.shading {
+                        Shading::PerVertex => v.colour,
+                        Shading::PerPixel => lights.shade(v.world, v.normal, v.colour),
+                    };
+                }
+            },
+        );
     }
-    if far > near && (far - near).is_finite() {
-        Ok((near, far))
-    } else {
-        Err(Error::EmptyRange {
-            param: "near .. far",
-            min: near,
-            max: far,
-        })
-    }
 }
-
-// ANCHOR: perspective
-/// The perspective projection of [`crate::camera::PinholeCamera`]: its screen at
-/// z = -s spans [l, r] x [b, t] (the film's extents), depth runs from n to f.
-/// A camera-space point (x, y, z) lands on the screen at x s/(-z), which the NDC
-/// maps to 2 (x s/(-z) - l)/(r - l) - 1; multiplying through by w = -z gives
-///
-/// ```text
-/// | 2s/(r-l)    0       (r+l)/(r-l)        0       |
-/// |    0     2s/(t-b)   (t+b)/(t-b)        0       |
-/// |    0        0      -(f+n)/(f-n)   -2fn/(f-n)   |
-/// |    0        0           -1             0       |
-/// ```
-///
-/// (the frustum matrix of OpenGL's glFrustum with the screen at distance s instead
-/// of the near plane: only the ratio l/s matters, so the image is the same).
-pub fn perspective(film: &Film, s: f32, depth: DepthRange) -> Result<Transform> {
-    let s = positive("screen distance", s)?;
-    let (n, f) = depth_range(depth, true)?;
-    let ((l, r), (b, t)) = (film.x_extent(), film.y_extent());
-    Transform::from_matrix(from_rows([
-        [2.0 * s / (r - l), 0.0, (r + l) / (r - l), 0.0],
-        [0.0, 2.0 * s / (t - b), (t + b) / (t - b), 0.0],
-        [0.0, 0.0, -(f + n) / (f - n), -2.0 * f * n / (f - n)],
-        [0.0, 0.0, -1.0, 0.0],
-    ]))
-}
-// ANCHOR_END: perspective
-
-// ANCHOR: orthographic
-/// The orthographic projection of [`crate::camera::OrthoCamera`]: the camera plane's
-/// rectangle [l, r] x [b, t] goes to [-1, 1]^2 without any division, depth n .. f
-/// to -1 .. 1:
-///
-/// ```text
-/// | 2/(r-l)     0         0       -(r+l)/(r-l) |
-/// |    0     2/(t-b)      0       -(t+b)/(t-b) |
-/// |    0        0     -2/(f-n)    -(f+n)/(f-n) |
-/// |    0        0         0             1      |
-/// ```
-pub fn orthographic(film: &Film, depth: DepthRange) -> Result<Transform> {
-    let (n, f) = depth_range(depth, false)?;
-    let ((l, r), (b, t)) = (film.x_extent(), film.y_extent());
-    Transform::from_matrix(from_rows([
-        [2.0 / (r - l), 0.0, 0.0, -(r + l) / (r - l)],
-        [0.0, 2.0 / (t - b), 0.0, -(t + b) / (t - b)],
-        [0.0, 0.0, -2.0 / (f - n), -(f + n) / (f - n)],
-        [0.0, 0.0, 0.0, 1.0],
-    ]))
-}
-// ANCHOR_END: orthographic
-
-// ANCHOR: viewport
-/// NDC to pixels for a `W` x `H` image, rows counted from the top (so NDC y = +1,
-/// the top of the film, becomes row 0), and depth from [-1, 1] to [0, 1]:
-///
-/// ```text
-/// | W/2    0     0    W/2 |
-/// |  0   -H/2    0    H/2 |
-/// |  0     0    1/2   1/2 |
-/// |  0     0     0     1  |
-/// ```
-///
-/// x = -1 is the left edge of column 0 and the centre of pixel (i, j) is at
-/// (i + 0.5, j + 0.5), the same continuous coordinates as `Film::plane_to_pixel`.
-pub fn viewport(film: &Film) -> Result<Transform> {
-    let (w, h) = (film.width() as f32, film.height() as f32);
-    Transform::from_matrix(from_rows([
-        [w / 2.0, 0.0, 0.0, w / 2.0],
-        [0.0, -h / 2.0, 0.0, h / 2.0],
-        [0.0, 0.0, 0.5, 0.5],
-        [0.0, 0.0, 0.0, 1.0],
-    ]))
-}
-// ANCHOR_END: viewport
+// ANCHOR_END: draw_band

@@ -10,7 +10,7 @@ use std::ops::Range;
 
 use glam::{Vec2, Vec4};
 
-use super::pipeline::Pipeline;
+use super::projection::CameraTransforms;
 use super::vertex::{ClipVertex, Varyings};
 
 /// Bits of sub-pixel precision: vertices snap to 1/256 of a pixel.
@@ -46,8 +46,8 @@ pub struct ScreenVertex {
 
 impl ScreenVertex {
     /// The screen vertex of a clipped vertex, or `None` if w <= 0 (clip first).
-    pub fn from_clip(pipeline: &Pipeline, v: &ClipVertex) -> Option<ScreenVertex> {
-        let screen = pipeline.to_screen(v.clip)?;
+    pub fn from_clip(transforms: &CameraTransforms, v: &ClipVertex) -> Option<ScreenVertex> {
+        let screen = transforms.to_screen(v.clip)?;
         Some(ScreenVertex {
             pixel: screen.truncate(),
             depth: screen.z,

@@ -12,7 +12,7 @@
 
 use glam::Vec3;
 
-use super::{Cull, DepthRange, Model, Pipeline, RasterSettings, rasterize_triangle};
+use super::{CameraTransforms, Cull, DepthRange, Model, RasterSettings, rasterize_triangle};
 use crate::camera::{Camera, Film, Frame, MAX_RESOLUTION, PinholeCamera};
 use crate::error::{Error, Result, finite3, non_negative, positive};
 use crate::scene::PointLight;
@@ -44,7 +44,7 @@ impl Shadows {
 /// camera that maps world points to texels.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ShadowMap {
-    pipeline: Pipeline,
+    transforms: CameraTransforms,
     light: Vec3,
     size: u32,
     bias: f32,
@@ -54,9 +54,9 @@ pub struct ShadowMap {
 
 impl ShadowMap {
     // ANCHOR: build
-    /// Pass 1: rasterize `instances` from the light, keeping the nearest distance
+    /// Pass 1: rasterize `models` from the light, keeping the nearest distance
     /// |x - light| per texel (a z-buffer that stores distance instead of depth).
-    pub fn build(instances: &[Model], light: &PointLight, shadows: &Shadows) -> Result<Self> {
+    pub fn build(models: &[Model], light: &PointLight, shadows: &Shadows) -> Result<Self> {
         let camera = light_camera(light.position, shadows)?;
         let (lo, hi) = camera.film().x_extent();
         let texel_angle = (hi - lo) / shadows.size as f32;
@@ -64,16 +64,17 @@ impl ShadowMap {
             near: 1e-3 * shadows.radius,
             far: 1e3 * shadows.radius + (shadows.centre - light.position).length(),
         };
-        let pipeline = Pipeline::new(&camera, depth)?;
+        let transforms = CameraTransforms::new(&camera, depth)?;
         let settings = RasterSettings {
             depth,
             cull: Cull::None,
             ..RasterSettings::default()
         };
-        let triangles = super::setup(instances, &pipeline, &camera, light, &settings, None)?;
+        let triangles =
+            super::pipeline::setup(models, &transforms, &camera, light, &settings, None)?;
         let size = shadows.size;
         let mut distance = vec![f32::INFINITY; size as usize * size as usize];
-        super::in_bands(
+        super::pipeline::in_bands(
             &triangles,
             size,
             size,
@@ -95,7 +96,7 @@ impl ShadowMap {
             },
         );
         Ok(ShadowMap {
-            pipeline,
+            transforms,
             light: light.position,
             size,
             bias: shadows.bias,
@@ -114,8 +115,8 @@ impl ShadowMap {
     /// forgives bias x s (1 + tan theta) (tan capped at 10): a slope-scaled bias in
     /// texels. Points outside the map are lit.
     pub fn lit(&self, p: Vec3, n: Vec3) -> bool {
-        let clip = self.pipeline.to_clip(&Transform::IDENTITY, p);
-        let Some(texel) = self.pipeline.to_screen(clip) else {
+        let clip = self.transforms.to_clip(&Transform::IDENTITY, p);
+        let Some(texel) = self.transforms.to_screen(clip) else {
             return true;
         };
         let (x, y) = (texel.x.floor(), texel.y.floor());

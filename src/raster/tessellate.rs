@@ -22,7 +22,7 @@ pub const FLOOR_DEPTH: DepthRange = DepthRange {
 /// a square of side [`FLOOR_SIZE`], a triangle itself.
 pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
     check_segments(scene, segments)?;
-    let mut instances = Vec::new();
+    let mut models = Vec::new();
     for object in scene.objects() {
         let mesh = match &object.shape {
             Shape::Sphere(s) => Mesh::uv_sphere(s.centre(), s.radius(), segments, segments / 2)?,
@@ -36,9 +36,9 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
                 });
             }
         };
-        instances.push(Model::new(mesh, object.colour()));
+        models.push(Model::new(mesh, object.colour()));
     }
-    Ok(instances)
+    Ok(models)
 }
 // ANCHOR_END: tessellate
 

@@ -10,8 +10,8 @@ use render_lessons::course::lesson::Output;
 use render_lessons::framebuffer::{Framebuffer, to_srgb8};
 use render_lessons::offset::Offset;
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
+use render_lessons::raster::{CameraTransforms, Model, Shadows, floor_settings, point_light};
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
-use render_lessons::raster::{Model, Pipeline, Shadows, floor_settings, point_light};
 use render_lessons::raster::{rasterize, rasterize_triangle, reference, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
@@ -106,7 +106,7 @@ pub fn stages() -> Result<Diagram> {
         Vec3::Y,
     )?;
     let camera: Camera = PinholeCamera::new(film, 1.0, frame)?.into();
-    let pipeline = Pipeline::new(
+    let pipeline = CameraTransforms::new(
         &camera,
         DepthRange {
             near: 0.5,

@@ -120,7 +120,7 @@ fn source_hash() -> u64 {
         include_str!("../src/pathtrace/scenes.rs"),
         include_str!("../src/pathtrace/settings.rs"),
         include_str!("../src/sampling.rs"),
-        include_str!("../src/offset.rs"),
+        include_str!("../src/spawn.rs"),
     ];
     // A fixed FNV-1a, so the name does not change with the std hasher.
     struct Fnv(u64);

@@ -20,12 +20,12 @@ use render_lessons::course::mine;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::error::non_negative;
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::offset::Offset;
 use render_lessons::raster::agreement;
 use render_lessons::raycast::{lit, shadowless};
 use render_lessons::render::render;
 use render_lessons::scene::Scene;
 use render_lessons::scenes::{LESSON08_OBJECTS, lesson08, lesson08_cameras};
+use render_lessons::spawn::Offset;
 use render_lessons::{Error, Result};
 
 /// The lesson's parameters; every one has a default that reproduces the book.

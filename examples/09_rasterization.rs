@@ -24,7 +24,7 @@ use render_lessons::raster::{reference, tessellate};
 use render_lessons::scenes::{LESSON08_OBJECTS, TORUS_OBJ, lesson08, lesson08_pinhole};
 use render_lessons::scenes::{LessonMesh, MeshScene, lesson08_shadows};
 use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
-use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, offset::Offset};
+use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, spawn::Offset};
 use render_lessons::{raycast::lit, render::render, scene::Scene};
 
 /// The lesson's parameters; every one has a default that reproduces the book.

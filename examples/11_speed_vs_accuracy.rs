@@ -27,9 +27,8 @@ use render_lessons::course::measure::lessons::{best_ms, lessons_quoted};
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::course::report::{Run, Table, Timings, num};
 use render_lessons::error::Error;
+use render_lessons::files::write_atomically;
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::offset::Offset;
-use render_lessons::output::write_atomically;
 use render_lessons::progress;
 use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, reference};
 use render_lessons::raster::{TOLERANCE, point_light, tessellate};
@@ -37,6 +36,7 @@ use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows};
 use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
+use render_lessons::spawn::Offset;
 
 /// The lesson's parameters.
 #[derive(Parser, Debug)]

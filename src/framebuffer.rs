@@ -6,7 +6,7 @@ use glam::Vec3;
 
 use crate::camera::MAX_RESOLUTION;
 use crate::error::{Error, Result};
-use crate::output::write_png_rgba;
+use crate::files::write_png_rgba;
 
 /// `width` x `height` linear RGB colours, stored row by row from the top.
 #[derive(Clone, Debug, PartialEq)]

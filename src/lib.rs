@@ -13,9 +13,9 @@
 //!
 //! 1. `error`, `float`: the one typed error, naming the parameter at fault, and the
 //!    floating-point tools (rounding-error bounds);
-//! 2. `budget`, `transform`, `ray`, `basis`, `sampling`, `offset`, `material`, `output`,
-//!    `progress`: what the machine can give, the maths of Lectures 3 and 4, writing
-//!    files, progress bars;
+//! 2. `limits`, `transform`, `ray`, `basis`, `sampling`, `spawn`, `material`, `files`,
+//!    `progress`: what the machine can give, the maths of Lectures 3 and 4 (and where
+//!    a spawned ray starts), writing files whole, progress bars;
 //! 3. `quadratic`: the roots of a t^2 + b t + c = 0, shared by the sphere and the
 //!    quadrics;
 //! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
@@ -32,17 +32,16 @@
 //! 11's measurements and the exercises. Nothing in the renderer imports it.
 
 pub mod basis;
-pub mod budget;
 pub mod bvh;
 pub mod camera;
 pub mod course;
 pub mod error;
+pub mod files;
 pub mod float;
 pub mod framebuffer;
 pub mod lighting;
+pub mod limits;
 pub mod material;
-pub mod offset;
-pub mod output;
 pub mod pathtrace;
 pub mod progress;
 pub mod quadratic;
@@ -54,6 +53,7 @@ pub mod sampling;
 pub mod scene;
 pub mod scenes;
 pub mod shapes;
+pub mod spawn;
 pub mod transform;
 
 pub use error::{Error, Result};

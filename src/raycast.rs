@@ -3,9 +3,9 @@
 use glam::Vec3;
 
 use crate::lighting;
-use crate::offset::Offset;
 use crate::ray::{Interval, Ray};
 use crate::scene::Intersect;
+use crate::spawn::Offset;
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive

@@ -15,7 +15,7 @@ use crate::ray::{Interval, Ray};
 use crate::scene::{Intersect, Object, PointLight, Scene, SceneHit};
 use crate::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 use crate::transform::Transform;
-use crate::{budget, progress};
+use crate::{limits, progress};
 
 /// The objects of [`lesson08`], in scene order, by name.
 pub const LESSON08_OBJECTS: [&str; 6] = [
@@ -154,7 +154,7 @@ pub fn lesson09_mesh(path: &Path, subdivisions: u32) -> Result<LessonMesh> {
     } else {
         "subdivide"
     };
-    budget::memory(param, triangles.saturating_mul(MESH_BYTES_PER_TRIANGLE))?;
+    limits::memory(param, triangles.saturating_mul(MESH_BYTES_PER_TRIANGLE))?;
     let mesh = match subdivisions {
         0 => mesh,
         n => progress::spinner(format!("subdividing into {triangles} triangles"), || {

@@ -9,7 +9,6 @@ use std::path::Path;
 use glam::Vec3;
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Camera, Film, OrthoCamera};
-use render_lessons::offset::{Offset, offset_ray_origin};
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
@@ -17,6 +16,7 @@ use render_lessons::sampling::{cosine_hemisphere, grid};
 use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
 use render_lessons::scenes::{lesson08, lesson08_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
+use render_lessons::spawn::{Offset, offset_ray_origin};
 
 /// The lesson's defaults: the book's size, the fixed epsilon and the far shift.
 const BOOK: (u32, u32) = (480, 270);

@@ -10,13 +10,13 @@
 
 use glam::{Vec2, Vec3};
 use render_lessons::material::Material;
-use render_lessons::offset::Offset;
 use render_lessons::pathtrace::scenes::look_camera;
 use render_lessons::pathtrace::{Rng, Settings, radiance};
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::sampling::uniform_sphere;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::{Aabb, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
+use render_lessons::spawn::Offset;
 use render_lessons::transform::Transform;
 
 /// The camera distances of the issue: 10, 300, 1e4 and 1e6 radii.

@@ -692,8 +692,8 @@ fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_object
 
 #[test]
 fn unshadowed_lambert_is_lambert_where_nothing_blocks_the_light() {
-    use render_lessons::offset::Offset;
     use render_lessons::raycast::{lit, lit_unshadowed};
+    use render_lessons::spawn::Offset;
     let scene = lesson08(Vec3::ZERO).unwrap();
     let camera = lesson08_pinhole(96, 54).unwrap();
     let (mut same, mut shadowed) = (0, 0);

@@ -19,7 +19,6 @@ use proptest::prelude::*;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera, ThinLensCamera};
 use render_lessons::error::Error;
 use render_lessons::material::{Material, fresnel};
-use render_lessons::offset::Offset;
 use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
 use render_lessons::pathtrace::light;
 use render_lessons::pathtrace::progressive::rmse;
@@ -33,6 +32,7 @@ use render_lessons::pathtrace::{
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene};
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
+use render_lessons::spawn::Offset;
 
 /// The lesson's flags at a test-sized resolution and sample count; `extra` flags
 /// replace the defaults of the same name.

@@ -4,7 +4,7 @@
 
 use render_lessons::course::measure::offsets::Placement;
 use render_lessons::course::measure::{Measured, Quality, offsets, precision, sphere, triangle};
-use render_lessons::offset::Offset;
+use render_lessons::spawn::Offset;
 
 /// The (x, y) of `points` at `x`.
 fn at(points: &[(f64, f64)], x: f64) -> f64 {

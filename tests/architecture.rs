@@ -12,14 +12,14 @@ use std::path::Path;
 const LAYERS: &[&[&str]] = &[
     &["error", "float"],
     &[
-        "budget",
+        "limits",
         "transform",
         "ray",
         "basis",
         "sampling",
-        "offset",
+        "spawn",
         "material",
-        "output",
+        "files",
         "progress",
     ],
     &["quadratic"],

@@ -68,8 +68,8 @@ impl ImageFlags {
 /// Checks `--width`, `--height` and `--threads` before any work: each side within
 /// `camera::MAX_RESOLUTION`, the memory of `images` images of that size (16 bytes
 /// a pixel: the linear colour and its 8-bit copy) within
-/// [`crate::budget::memory_limit`], the thread count within
-/// [`crate::budget::MAX_THREADS`]. Returns the thread count.
+/// [`crate::limits::memory_limit`], the thread count within
+/// [`crate::limits::MAX_THREADS`]. Returns the thread count.
 pub fn budget(
     width: u32,
     height: u32,
@@ -78,9 +78,9 @@ pub fn budget(
 ) -> Result<Option<usize>> {
     pixels("--width", width, crate::camera::MAX_RESOLUTION)?;
     pixels("--height", height, crate::camera::MAX_RESOLUTION)?;
-    let bytes = crate::budget::images(images, width, height, 16);
-    crate::budget::memory("--width x --height", bytes)?;
-    crate::budget::threads("--threads", threads)
+    let bytes = crate::limits::images(images, width, height, 16);
+    crate::limits::memory("--width x --height", bytes)?;
+    crate::limits::threads("--threads", threads)
 }
 
 /// Runs a lesson's body: on error, prints `error: ...` and exits with code 2.

@@ -14,10 +14,10 @@ use crate::camera::{Film, Frame};
 use crate::course::exercises as ch;
 use crate::course::exercises::check::{self, Exercise};
 use crate::lighting::AMBIENT;
-use crate::offset::Offset;
 use crate::ray::{Interval, Ray};
 use crate::scene::{PointLight, Scene, SceneHit};
 use crate::shapes::Shape;
+use crate::spawn::Offset;
 use crate::transform::Transform;
 use crate::{Error, Result};
 

@@ -5,7 +5,6 @@
 use glam::Vec3;
 
 use crate::material::diffuse_brdf;
-use crate::offset::Offset;
 use crate::pathtrace::light;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::observer::PathObserver;
@@ -13,6 +12,7 @@ use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
 use crate::scene::Intersect;
+use crate::spawn::Offset;
 
 /// Where the rays leaving a diffuse vertex start (the hit point moved off the
 /// surface by the offset) and the t they must exceed. Light samples are drawn from

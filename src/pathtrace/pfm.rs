@@ -8,8 +8,8 @@
 use std::path::Path;
 
 use crate::error::{Error, Result};
+use crate::files::write_atomically;
 use crate::framebuffer::Framebuffer;
-use crate::output::write_atomically;
 
 // ANCHOR: pfm
 /// The PFM bytes of `image`; fails on the first NaN or infinite pixel.

@@ -2,8 +2,8 @@
 //! path length, Russian roulette, and how rays leave surfaces.
 
 use crate::error::{Error, Result};
-use crate::offset::Offset;
 use crate::pathtrace::light::SphereSampling;
+use crate::spawn::Offset;
 
 /// How directions at diffuse vertices are chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

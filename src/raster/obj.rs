@@ -145,7 +145,7 @@ fn parse(path: &Path) -> Result<Vec<tobj::Model>> {
         return Err(fail(None, "is a folder, not an OBJ file".into()));
     }
     let size = metadata.len();
-    crate::budget::memory("mesh", size.saturating_mul(PARSE_BYTES_PER_BYTE))?;
+    crate::limits::memory("mesh", size.saturating_mul(PARSE_BYTES_PER_BYTE))?;
     let file = std::fs::File::open(path).map_err(|e| fail(None, e.to_string()))?;
     let bar = crate::progress::bytes(size);
     let mut reader = BufReader::new(bar.wrap_read(file));

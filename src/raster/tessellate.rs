@@ -44,7 +44,7 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
 
 /// `Ok` if a sphere of `segments` x `segments / 2` can be built (at least 4, so two
 /// bands of latitude) and every sphere of `scene` fits in memory at that resolution
-/// ([`crate::budget`]: about 100 bytes a triangle, with its vertices and the
+/// ([`crate::limits`]: about 100 bytes a triangle, with its vertices and the
 /// rasterizer's copies).
 pub fn check_segments(scene: &Scene, segments: u32) -> Result<()> {
     if segments < 4 {
@@ -60,7 +60,7 @@ pub fn check_segments(scene: &Scene, segments: u32) -> Result<()> {
         .filter(|o| matches!(o.shape, Shape::Sphere(_)))
         .count() as u64;
     let triangles = u64::from(segments).saturating_mul(u64::from(segments));
-    crate::budget::memory(
+    crate::limits::memory(
         "segments",
         spheres.saturating_mul(triangles).saturating_mul(100),
     )

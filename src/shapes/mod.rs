@@ -43,7 +43,7 @@ pub struct Hit {
     /// A conservative bound, per coordinate, on how far `point` lies from the true
     /// surface: some surface point lies within `point +- error` (pbrt-v4 section 6.8,
     /// "Managing Rounding Error"). A ray leaving the hit starts just beyond it
-    /// ([`crate::offset::offset_by_error`]).
+    /// ([`crate::spawn::offset_by_error`]).
     pub error: Vec3,
 }
 

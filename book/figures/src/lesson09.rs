@@ -8,7 +8,6 @@ use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
 use render_lessons::framebuffer::{Framebuffer, to_srgb8};
-use render_lessons::offset::Offset;
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{CameraTransforms, Model, Shadows, floor_settings, point_light};
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
@@ -17,6 +16,7 @@ use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, lesson09_mesh_scene};
 use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows, lesson09_mesh};
+use render_lessons::spawn::Offset;
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 

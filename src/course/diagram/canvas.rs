@@ -10,7 +10,7 @@ use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, PremultipliedColorU8, Stro
 use super::glyphs::draw_label;
 use super::{Diagram, Rgb, Segment};
 use crate::error::Result;
-use crate::output::write_png_rgba;
+use crate::files::write_png_rgba;
 
 fn paint(color: Rgb) -> Paint<'static> {
     let mut p = Paint::default();

@@ -19,10 +19,10 @@ use crate::basis::Basis;
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
-use crate::offset::{Offset, offset_ray_origin};
 use crate::ray::{Interval, Ray};
 use crate::sampling::{cosine_hemisphere, grid};
 use crate::shapes::{Hit, Plane, Sphere};
+use crate::spawn::{Offset, offset_ray_origin};
 
 /// The distances on the chart.
 pub const DISTANCES: [f32; 13] = [

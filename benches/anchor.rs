@@ -10,8 +10,8 @@ use glam::Vec3;
 pub const COMPILER: Option<&str> = option_env!("C_ANCHOR_COMPILER");
 
 /// The line a bench prints instead of the anchor's figures when it is missing.
-pub const MISSING: &str =
-    "C anchor skipped: no C compiler was found when the benches were built (see build.rs)";
+pub const MISSING: &str = "C anchor skipped: it was not compiled (no C compiler when the \
+     benches were built, or RENDER_BENCHES_NO_C_ANCHOR set; see benches/build.rs)";
 
 /// `true` when the anchor was compiled in.
 pub fn available() -> bool {

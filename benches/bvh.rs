@@ -2,7 +2,7 @@
 //! traces on a ~100k-triangle mesh, against a well-kept Rust BVH crate on the same
 //! rays, and where it overtakes the plain list.
 //!
-//!     cargo bench --bench bvh
+//!     cargo bench -p render-benches --bench bvh
 //!
 //! The meshes are UV spheres (`Mesh::uv_sphere`, n x n segments, 2 n (n - 1)
 //! triangles) seen by a pinhole camera; every ray asks for the closest hit only, on

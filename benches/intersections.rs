@@ -1,6 +1,6 @@
 //! ns per intersection test, for every method of lesson 07, naive and robust.
 //!
-//!     cargo bench --bench intersections
+//!     cargo bench -p render-benches --bench intersections
 
 use std::hint::black_box;
 

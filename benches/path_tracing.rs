@@ -9,9 +9,9 @@
 //!    algorithm and for the estimators that sample the light, at 256 x 192.
 //!
 //! ```text
-//! cargo bench --bench path_tracing                  # both
-//! cargo bench --bench path_tracing -- "1024x768"    # samples per second only
-//! cargo bench --bench path_tracing -- equal-time    # the comparison only
+//! cargo bench -p render-benches --bench path_tracing                  # both
+//! cargo bench -p render-benches --bench path_tracing -- "1024x768"    # samples per second only
+//! cargo bench -p render-benches --bench path_tracing -- equal-time    # the comparison only
 //! ```
 //!
 //! The comparison runs only under `cargo bench` (not when `cargo test --benches`
@@ -178,7 +178,8 @@ fn average(a: &Framebuffer, b: &Framebuffer) -> Framebuffer {
 /// One half of the reference: MIS, `REFERENCE_HALF_SPP` samples, seed `seed`, read
 /// from the cache if it is there.
 fn reference_half(scene: &Scene, camera: &Camera, seed: u64) -> Framebuffer {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target");
+    // The repository's target/ (this bench's package is the folder benches/).
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target");
     let path = dir.join(format!(
         "path_tracing_reference_{WIDTH}x{HEIGHT}_mis_{REFERENCE_HALF_SPP}spp_seed{seed:x}_{:016x}.pfm",
         source_hash()

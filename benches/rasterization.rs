@@ -4,7 +4,7 @@
 //! every triangle) on lesson 09's 1024-triangle torus. One thread for all, so the
 //! comparison is per core, and the same per-pixel Lambert shading for all.
 //!
-//!     cargo bench --bench rasterization
+//!     cargo bench -p render-benches --bench rasterization
 //!
 //! Brute-force ray casting of a whole 1080p frame takes tens of seconds, too long to
 //! repeat ten times; it is measured on every 30th row (36 rows, 69 120 rays) and

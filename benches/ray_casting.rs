@@ -1,15 +1,23 @@
 //! Primary rays per second: lesson 08's scene, shadowless, 1920 x 1080, pinhole
-//! camera; the crate's robust caster on one thread and on every core, and the plain
-//! reference (textbook tests, `course::measure::plain`) on one thread.
+//! camera; the crate's robust caster on one thread and on every core, the plain
+//! reference (textbook tests, `course::measure::plain`) on one thread, and the same
+//! plain caster written in C (`anchors/plain_caster.c`, the anchor) when a C
+//! compiler was there at build time.
 //!
-//!     cargo bench --bench ray_casting
+//!     cargo bench -p render-benches --bench ray_casting
 //!
 //! After criterion's figures, one run measures every variant interleaved (the
-//! fastest of 7 rounds each) and prints the ratios: what robustness costs, and what
-//! the second core buys. Last, the machine and whether the CPU was quiet.
+//! fastest of 7 rounds each) and prints the ratios: the Rust casters against the C
+//! anchor, what robustness costs, what the second core buys, and what
+//! `render::render`'s set-up (a thread pool, the framebuffer and a progress bar,
+//! made on every call) adds to a frame. First it checks that the C anchor computes
+//! the plain caster's image and camera rays bit for bit. Last, the machine and
+//! whether the CPU was quiet.
 
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
+use render_benches::anchor;
+use render_benches::frame::FrameLoop;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::plain::PlainScene;
@@ -20,6 +28,7 @@ use render_lessons::scenes::{lesson08, lesson08_pinhole};
 
 const WIDTH: u32 = 1920;
 const HEIGHT: u32 = 1080;
+const PIXELS: usize = WIDTH as usize * HEIGHT as usize;
 
 fn setup() -> (Scene, PlainScene, Camera) {
     let scene = lesson08(Vec3::ZERO).expect("the lesson's scene");
@@ -36,7 +45,7 @@ fn bench(c: &mut Criterion) {
     let (scene, plain, pinhole) = setup();
     let mut group = c.benchmark_group("primary rays, lesson 08 scene, 1920x1080");
     group.sample_size(10);
-    group.throughput(Throughput::Elements(u64::from(WIDTH * HEIGHT)));
+    group.throughput(Throughput::Elements(PIXELS as u64));
     for threads in [1, cores()] {
         group.bench_function(format!("robust, {threads} thread(s)"), |b| {
             b.iter(|| render(&pinhole, Some(threads), |r| shadowless(&scene, r)).expect("render"))
@@ -45,16 +54,61 @@ fn bench(c: &mut Criterion) {
     group.bench_function("plain (textbook tests), 1 thread", |b| {
         b.iter(|| render(&pinhole, Some(1), |r| plain.shadowless(r)).expect("render"))
     });
+    let mut rgb = vec![Vec3::ZERO; PIXELS];
+    if anchor::available() {
+        group.bench_function("C anchor (textbook tests), 1 thread", |b| {
+            b.iter(|| anchor::frame(WIDTH, HEIGHT, &mut rgb))
+        });
+    }
     group.bench_function("camera rays only, 1 thread", |b| {
         b.iter(|| render(&pinhole, Some(1), |r| r.direction()).expect("render"))
     });
     group.finish();
 }
 
+/// How many pixels of `a` and `b` differ in any bit.
+fn differ(a: &[Vec3], b: &[Vec3]) -> usize {
+    let bits = |v: &Vec3| v.to_array().map(f32::to_bits);
+    a.iter().zip(b).filter(|(a, b)| bits(a) != bits(b)).count()
+}
+
+/// One timed variant of the interleaved run.
+struct Variant<'a> {
+    name: &'static str,
+    threads: usize,
+    /// "frame": buffer (and pool) made once; "render()": `render::render` as it is.
+    timed: &'static str,
+    work: Box<dyn FnMut() + 'a>,
+}
+
+/// The C anchor against the plain caster, bit for bit, image and camera rays.
+fn check_anchor(plain: &PlainScene, pinhole: &Camera) {
+    let mut rgb = vec![Vec3::ZERO; PIXELS];
+    let mut xyz = vec![Vec3::ZERO; PIXELS];
+    if anchor::frame(WIDTH, HEIGHT, &mut rgb).is_none()
+        || anchor::camera(WIDTH, HEIGHT, &mut xyz).is_none()
+    {
+        println!("  {}", anchor::MISSING);
+        return;
+    }
+    let mut frame = FrameLoop::new(pinhole, 1);
+    frame.run(pinhole, |r| plain.shadowless(r));
+    let image = differ(&rgb, frame.pixels());
+    frame.run(pinhole, |r| r.direction());
+    let rays = differ(&xyz, frame.pixels());
+    println!(
+        "  C anchor ({}) against the Rust plain caster: {image} of {PIXELS} pixels and \
+         {rays} camera rays differ in any bit",
+        anchor::COMPILER.unwrap_or("?")
+    );
+}
+
 /// Every variant in one run, interleaved, and the ratios between them.
 fn one_run() {
     let (scene, plain, pinhole) = setup();
     let cores = cores();
+    println!("\none run, 1920x1080 primary rays of lesson 08:");
+    check_anchor(&plain, &pinhole);
     let robust = |t| render(&pinhole, Some(t), |r| shadowless(&scene, r)).expect("render");
     let textbook = || render(&pinhole, Some(1), |r| plain.shadowless(r)).expect("render");
     let (a, b) = (robust(1), textbook());
@@ -62,42 +116,162 @@ fn one_run() {
         .flat_map(|y| (0..WIDTH).map(move |x| (x, y)))
         .filter(|&(x, y)| a.get(x, y) != b.get(x, y))
         .count();
+
+    let mut variants = variants(&scene, &plain, &pinhole, cores);
     let times = interleaved_min(
         7,
-        &mut [
-            &mut || drop(textbook()),
-            &mut || drop(robust(1)),
-            &mut || drop(robust(cores)),
-            &mut || drop(render(&pinhole, Some(1), |r| r.direction()).expect("render")),
-        ],
+        &mut variants
+            .iter_mut()
+            .map(|v| &mut *v.work as &mut dyn FnMut())
+            .collect::<Vec<_>>(),
     );
-    let rate = |i: usize| f64::from(WIDTH * HEIGHT) / times[i].as_secs_f64() / 1e6;
-    println!("\none run, fastest of 7 interleaved rounds, 1920x1080 primary rays:");
+    let rate = |name: &str, threads: usize, timed: &str| {
+        variants
+            .iter()
+            .zip(&times)
+            .find(|(v, _)| v.name == name && v.threads == threads && v.timed == timed)
+            .map(|(_, t)| PIXELS as f64 / t.as_secs_f64() / 1e6)
+    };
+    let c = rate(C, 1, "frame");
+    println!("  fastest of 7 interleaved rounds; frame = buffer (and pool) made once,");
+    println!("  render() = render::render as it is (pool, buffer and progress bar per call):");
     println!(
-        "  plain (textbook tests), 1 thread  {:6.1} M rays/s",
-        rate(0)
+        "  {:<36} {:>7} {:>9} {:>10} {:>9}",
+        "caster", "threads", "timed", "M rays/s", "/ C"
     );
-    println!(
-        "  robust, 1 thread                  {:6.1} M rays/s",
-        rate(1)
+    for (v, t) in variants.iter().zip(&times) {
+        let r = PIXELS as f64 / t.as_secs_f64() / 1e6;
+        let base = if v.name.contains("camera") {
+            rate(C_CAMERA, 1, "frame")
+        } else {
+            c
+        };
+        let of_c = base.map_or("".into(), |c| format!("{:.2}x", r / c));
+        println!(
+            "  {:<36} {:>7} {:>9} {:>10.1} {:>9}",
+            v.name, v.threads, v.timed, r, of_c
+        );
+    }
+    let ratio = |what: &str, a: Option<f64>, b: Option<f64>| {
+        if let (Some(a), Some(b)) = (a, b) {
+            println!("  {what} {:.2}x", a / b);
+        }
+    };
+    let plain1 = rate(PLAIN, 1, "frame");
+    let robust1 = rate(ROBUST, 1, "frame");
+    ratio("C anchor / Rust plain (frame, 1 thread):", c, plain1);
+    ratio("C anchor / Rust robust (frame, 1 thread):", c, robust1);
+    ratio(
+        "robustness costs (plain / robust, frame, 1 thread):",
+        plain1,
+        robust1,
     );
-    println!(
-        "  robust, {cores} threads                 {:6.1} M rays/s",
-        rate(2)
+    ratio(
+        "C camera / Rust camera (frame, 1 thread):",
+        rate(C_CAMERA, 1, "frame"),
+        rate(CAMERA, 1, "frame"),
     );
-    println!(
-        "  camera rays only, 1 thread        {:6.1} M rays/s",
-        rate(3)
+    ratio(
+        &format!("{cores} threads give (robust, frame):"),
+        rate(ROBUST, cores, "frame"),
+        robust1,
     );
-    println!(
-        "  robustness costs {:.2}x (plain / robust, 1 thread)",
-        rate(0) / rate(1)
+    ratio(
+        "render() set-up costs (robust, 1 thread, frame / render()):",
+        robust1,
+        rate(ROBUST, 1, "render()"),
     );
-    println!("  {cores} threads give {:.2}x one", rate(2) / rate(1));
-    println!(
-        "  the two images differ in {differ} of {} pixels",
-        WIDTH * HEIGHT
+    ratio(
+        &format!("render() set-up costs (robust, {cores} threads, frame / render()):"),
+        rate(ROBUST, cores, "frame"),
+        rate(ROBUST, cores, "render()"),
     );
+    println!("  robust and plain images differ in {differ} of {PIXELS} pixels");
+}
+
+const C: &str = "C anchor (textbook tests, -O2)";
+const PLAIN: &str = "plain (textbook tests)";
+const ROBUST: &str = "robust (this crate)";
+const C_CAMERA: &str = "C camera rays only";
+const CAMERA: &str = "camera rays only";
+
+/// The variants timed against each other; the C ones only when the anchor is there.
+fn variants<'a>(
+    scene: &'a Scene,
+    plain: &'a PlainScene,
+    pinhole: &'a Camera,
+    cores: usize,
+) -> Vec<Variant<'a>> {
+    let frame = |threads| FrameLoop::new(pinhole, threads);
+    let variant = |name, threads, timed, work: Box<dyn FnMut() + 'a>| Variant {
+        name,
+        threads,
+        timed,
+        work,
+    };
+    let mut v = Vec::new();
+    if anchor::available() {
+        let mut rgb = vec![Vec3::ZERO; PIXELS];
+        let mut xyz = vec![Vec3::ZERO; PIXELS];
+        v.push(variant(
+            C,
+            1,
+            "frame",
+            Box::new(move || {
+                anchor::frame(WIDTH, HEIGHT, &mut rgb);
+            }),
+        ));
+        v.push(variant(
+            C_CAMERA,
+            1,
+            "frame",
+            Box::new(move || {
+                anchor::camera(WIDTH, HEIGHT, &mut xyz);
+            }),
+        ));
+    }
+    let mut f = frame(1);
+    v.push(variant(
+        PLAIN,
+        1,
+        "frame",
+        Box::new(move || f.run(pinhole, |r| plain.shadowless(r))),
+    ));
+    v.push(variant(
+        PLAIN,
+        1,
+        "render()",
+        Box::new(move || drop(render(pinhole, Some(1), |r| plain.shadowless(r)))),
+    ));
+    for threads in [1, cores] {
+        let mut f = frame(threads);
+        v.push(variant(
+            ROBUST,
+            threads,
+            "frame",
+            Box::new(move || f.run(pinhole, |r| shadowless(scene, r))),
+        ));
+        v.push(variant(
+            ROBUST,
+            threads,
+            "render()",
+            Box::new(move || drop(render(pinhole, Some(threads), |r| shadowless(scene, r)))),
+        ));
+    }
+    let mut f = frame(1);
+    v.push(variant(
+        CAMERA,
+        1,
+        "frame",
+        Box::new(move || f.run(pinhole, |r| r.direction())),
+    ));
+    v.push(variant(
+        CAMERA,
+        1,
+        "render()",
+        Box::new(move || drop(render(pinhole, Some(1), |r| r.direction()))),
+    ));
+    v
 }
 
 criterion_group!(benches, bench);

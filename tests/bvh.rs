@@ -3,7 +3,7 @@
 //! Every test compares the tree with [`Scene`]'s brute-force loop on the same
 //! objects: the same closest hit (the whole `Hit`, bit for bit, and the same
 //! object, ties included) and the same `occluded`. No timing here: speed is
-//! measured by `cargo bench --bench bvh`.
+//! measured by `cargo bench -p render-benches --bench bvh`.
 
 use std::collections::BTreeSet;
 

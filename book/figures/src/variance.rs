@@ -1,6 +1,6 @@
 //! Lesson 10's variance figure: where the noise of the Cornell box comes from, one
 //! sample's standard deviation in every pixel, smallpt's estimator beside MIS
-//! (`course::measure::variance`; `cargo bench --bench path_tracing -- equal-time`
+//! (`course::measure::variance`; `cargo bench -p render-benches --bench path_tracing -- equal-time`
 //! prints the same analysis as a table).
 
 use render_lessons::Result;

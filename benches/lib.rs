@@ -1,0 +1,6 @@
+//! What the benches share (`cargo bench -p render-benches`, BENCHMARKS.md): the plain
+//! C anchor of the ray-casting bench, and the frame loop that times a caster without
+//! the set-up a renderer does once.
+
+pub mod anchor;
+pub mod frame;

@@ -14,53 +14,25 @@ use glam::Vec3;
 use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, MAX_RESOLUTION, OrthoCamera, PinholeCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
-use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Ray;
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 06: the pinhole camera")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Distance s from the eye to the screen (the screen is lesson 03's [-8, 8] x [-6, 6]).
-    #[arg(long, default_value = "8", value_parser = parse_finite)]
-    pub screen_distance: f32,
-    /// Position p of the arbitrary camera, as x,y,z.
-    #[arg(long, default_value = "0,3,6", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub position: Vec3,
-    /// View direction d of the arbitrary camera, as x,y,z.
-    #[arg(long, default_value = "0,-1,-2", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub direction: Vec3,
-    /// Up vector k of the arbitrary camera, as x,y,z.
-    #[arg(long, default_value = "0,1,0", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub up: Vec3,
-    /// Width in pixels of each of the two views of the floor grid.
-    #[arg(long, default_value_t = 320)]
-    pub view_width: u32,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let (s, d, k) = (args.screen_distance, args.direction, args.up);
+        let frame = Frame::look(args.position, d, k)?;
+        let [at_origin, placed] = cameras(s, frame)?;
+        let views = views(frame, args.view_width, s * 0.5)?;
+        lesson::print(&numbers(&at_origin, &placed, d, k));
+        let out = &args.output;
+        out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
+        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)
+    })
 }
-
-// ANCHOR: floor
-/// The colour seen along a ray: a checkerboard on the floor y = 0 (squares of side 1),
-/// found by solving o_y + t d_y = 0 for t; the sky where the ray never reaches it.
-pub fn floor_colour(ray: &Ray) -> Vec3 {
-    let (o, d) = (ray.origin(), ray.direction());
-    let t = -o.y / d.y;
-    if !(t > 0.0 && t.is_finite()) {
-        return Vec3::new(0.6, 0.75, 0.95);
-    }
-    let p = ray.at(t);
-    let dark = (p.x.floor() + p.z.floor()) as i64 % 2 == 0;
-    if dark {
-        Vec3::splat(0.1)
-    } else {
-        Vec3::splat(0.8)
-    }
-}
-// ANCHOR_END: floor
 
 // ANCHOR: camera
 /// The lesson's two pinhole cameras, with lesson 03's 4 x 3 film [-8, 8] x [-6, 6] as
@@ -125,6 +97,25 @@ pub fn fan_figure(cam: &PinholeCamera) -> Result<Diagram> {
     Ok(d)
 }
 
+// ANCHOR: floor
+/// The colour seen along a ray: a checkerboard on the floor y = 0 (squares of side 1),
+/// found by solving o_y + t d_y = 0 for t; the sky where the ray never reaches it.
+pub fn floor_colour(ray: &Ray) -> Vec3 {
+    let (o, d) = (ray.origin(), ray.direction());
+    let t = -o.y / d.y;
+    if !(t > 0.0 && t.is_finite()) {
+        return Vec3::new(0.6, 0.75, 0.95);
+    }
+    let p = ray.at(t);
+    let dark = (p.x.floor() + p.z.floor()) as i64 % 2 == 0;
+    if dark {
+        Vec3::splat(0.1)
+    } else {
+        Vec3::splat(0.8)
+    }
+}
+// ANCHOR_END: floor
+
 // ANCHOR: side_by_side
 /// The two cameras of the comparison, placed by the same frame: orthographic and
 /// pinhole (screen distance `s`), each with `width` x 3/4 `width` pixels over the
@@ -149,17 +140,26 @@ pub fn side_by_side(cameras: &[Camera; 2]) -> Result<Framebuffer> {
 }
 // ANCHOR_END: side_by_side
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let (s, d, k) = (args.screen_distance, args.direction, args.up);
-        let frame = Frame::look(args.position, d, k)?;
-        let [at_origin, placed] = cameras(s, frame)?;
-        let view_width = lesson::pixels("--view-width", args.view_width, MAX_RESOLUTION / 2)?;
-        let views = views(frame, view_width, s * 0.5)?;
-        lesson::print(&numbers(&at_origin, &placed, d, k));
-        let out = &args.output;
-        out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
-        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 06: the pinhole camera")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// Distance s from the eye to the screen (the screen is lesson 03's [-8, 8] x [-6, 6]).
+    #[arg(long, default_value = "8", value_parser = parsers::finite)]
+    pub screen_distance: f32,
+    /// Position p of the arbitrary camera, as x,y,z.
+    #[arg(long, default_value = "0,3,6", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub position: Vec3,
+    /// View direction d of the arbitrary camera, as x,y,z.
+    #[arg(long, default_value = "0,-1,-2", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub direction: Vec3,
+    /// Up vector k of the arbitrary camera, as x,y,z.
+    #[arg(long, default_value = "0,1,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub up: Vec3,
+    /// Width in pixels of each of the two views of the floor grid.
+    #[arg(long, default_value_t = 320, value_parser = parsers::pixels(MAX_RESOLUTION / 2))]
+    pub view_width: u32,
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -8,6 +8,7 @@
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
+//! - [`parsers`]: the value parsers that check a flag's text (finite, in range);
 //! - [`measure`]: lesson 11's measurements, one file per chart;
 //! - [`exercises`]: the coding exercises and the harness that checks them.
 
@@ -18,4 +19,5 @@ pub mod flags;
 pub mod ladder_figure;
 pub mod lesson;
 pub mod measure;
+pub mod parsers;
 pub mod report;

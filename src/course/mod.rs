@@ -6,6 +6,7 @@
 //! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;
 //! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
+//! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
 //! - [`parsers`]: the value parsers that check a flag's text (finite, in range);
@@ -16,6 +17,7 @@ pub mod chart;
 pub mod diagram;
 pub mod exercises;
 pub mod flags;
+pub mod image_tables;
 pub mod ladder_figure;
 pub mod lesson;
 pub mod measure;

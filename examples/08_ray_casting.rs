@@ -45,7 +45,7 @@ fn main() -> ExitCode {
 }
 
 /// The lesson's images, in the order [`images`] renders them.
-pub const IMAGES: [&str; 5] = [
+pub const IMAGES: &[&str] = &[
     "08_shadowless_ortho.png",
     "08_shadowless_pinhole.png",
     "08_lambert.png",

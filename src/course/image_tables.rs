@@ -1,13 +1,14 @@
 //! Tables that describe rendered images (lessons 08 and 09 print them): how many
-//! pixels show each object, how many pixels differ from a reference image, and the
-//! colour at a few named spots.
+//! pixels show each object, how many pixels differ from a reference image, the
+//! colour at a few named spots, and how well rasterized images agree with ray-cast
+//! ones.
 
 use glam::Vec3;
 
 use crate::camera::Camera;
 use crate::course::report::{Table, num, vec3};
 use crate::framebuffer::Framebuffer;
-use crate::raster::agreement;
+use crate::raster::{Agreement, agreement};
 use crate::ray::Interval;
 use crate::scene::Scene;
 
@@ -72,6 +73,34 @@ pub fn spots_table(title: &str, image: &Framebuffer, spots: &[(&str, f32, f32)])
         let (x, y) = ((fx * width) as u32, (fy * height) as u32);
         let colour = vec3(image.get(x, y).unwrap_or(Vec3::ZERO), 4);
         table.row(vec![name.to_string(), format!("({x}, {y})"), colour]);
+    }
+    table
+}
+
+/// A table of rasterized images against their references (label, reference name,
+/// [`Agreement`]), `width` x `height` pixels compared away from silhouettes: a pixel
+/// more than `tolerance` apart in a channel counts as different.
+pub fn agreement_table(
+    (width, height): (u32, u32),
+    tolerance: f32,
+    rows: &[(&str, &str, Agreement)],
+) -> Table {
+    let tolerance = num(f64::from(tolerance * 255.0), 0);
+    let title = format!(
+        "Against the ray caster, {width} x {height} pixels, away from silhouettes\n(more than {tolerance}/255 apart in a channel counts as different)"
+    );
+    let mut columns = vec!["rasterized image", "reference", "compared"];
+    columns.extend(["differing", "agree", "max difference"]);
+    let mut table = Table::new(&title, &columns);
+    for (label, reference, a) in rows {
+        table.row(vec![
+            label.to_string(),
+            reference.to_string(),
+            a.compared.to_string(),
+            a.differing.to_string(),
+            format!("{}%", num(a.percent_agreeing(), 2)),
+            num(f64::from(a.max_difference), 3),
+        ]);
     }
     table
 }

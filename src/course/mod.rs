@@ -7,6 +7,7 @@
 //! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
+//! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
 //! - [`parsers`]: the value parsers that check a flag's text (finite, in range);
@@ -23,3 +24,4 @@ pub mod lesson;
 pub mod measure;
 pub mod parsers;
 pub mod report;
+pub mod triangle_table;

@@ -10,6 +10,7 @@
 //! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
+//! - [`path_flags`]: lesson 10's flags in groups, each making a core value;
 //! - [`parsers`]: the value parsers that check a flag's text (finite, in range);
 //! - [`measure`]: lesson 11's measurements, one file per chart;
 //! - [`exercises`]: the coding exercises and the harness that checks them.
@@ -23,5 +24,6 @@ pub mod ladder_figure;
 pub mod lesson;
 pub mod measure;
 pub mod parsers;
+pub mod path_flags;
 pub mod report;
 pub mod triangle_table;

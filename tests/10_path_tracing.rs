@@ -27,8 +27,8 @@ use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::pathtrace::{
-    Accumulator, LensCamera, PathCamera, PixelSampling, RecordedPath, Rng, Sampling, Settings,
-    SphereSampling, radiance, radiance_observed, record_path,
+    Accumulator, At, LensCamera, Path, PathCamera, PixelSampling, Rng, Sampling, Settings,
+    SphereSampling, radiance, record_path,
 };
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene};
@@ -1133,10 +1133,11 @@ fn bad_input_is_an_error_naming_the_parameter() {
 
 // ---------------------------------------------------------------- figures
 
-/// The path figure's paths are recorded from the estimator itself: a recorded path's
-/// radiance is, bit for bit, the sample `radiance` returns for the same pixel, seed
-/// and settings, the first sample the accumulator adds to that pixel, and recording
-/// leaves the random stream where `radiance` leaves it.
+/// The path figure's paths are recorded from the estimator itself: watching the
+/// estimator's `Path` vertex by vertex (as `record_path` and the variance measurement
+/// do) gives, bit for bit, the sample the plain `radiance` returns for the same
+/// pixel, seed and settings, the first sample the accumulator adds to that pixel,
+/// and leaves the random stream where `radiance` leaves it.
 #[test]
 fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
     let (scene, camera) = cornell(160, 120).unwrap();
@@ -1159,12 +1160,22 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 assert_eq!(path.eye, ray.origin());
                 let mut watched = rng;
                 let expected = radiance(&scene, ray, &mut rng, &s);
-                let mut recorder = RecordedPath::default();
-                let recorded = radiance_observed(&scene, ray, &mut watched, &s, &mut recorder);
+                let vertices: Vec<_> = Path::new(&scene, ray, &mut watched, &s).collect();
+                let observed = vertices
+                    .iter()
+                    .fold(Vec3::ZERO, |sum, v| sum + v.emitted + v.direct);
                 assert_eq!(bits(path.radiance), bits(expected), "pixel ({x}, {y})");
-                assert_eq!(bits(recorded), bits(expected), "pixel ({x}, {y})");
+                assert_eq!(bits(observed), bits(expected), "pixel ({x}, {y})");
                 assert_eq!(watched.next_u32(), rng.next_u32(), "pixel ({x}, {y})");
-                assert_eq!(recorder.vertices, path.vertices);
+                let surfaces = vertices.iter().filter_map(|v| match v.at {
+                    At::Surface { point, object } => Some((point, object, v.light_sample)),
+                    At::Escaped { .. } => None,
+                });
+                let recorded = path
+                    .vertices
+                    .iter()
+                    .map(|v| (v.point, v.object, v.light_sample));
+                assert!(surfaces.eq(recorded), "pixel ({x}, {y})");
                 assert_eq!(bits(first.get(x, y).unwrap()), bits(expected));
                 assert!(!path.vertices.is_empty() || path.escaped.is_some());
                 compared += 1;

@@ -54,8 +54,9 @@ fn main() -> ExitCode {
 }
 
 // ANCHOR: render
-/// The lesson's loop: the `study` rendered pass by pass, each pass adding samples of
-/// the estimator to every pixel. Each image is written to `out` the moment it is
+/// The lesson's loop: the `study` rendered pass by pass, each pass adding to every
+/// pixel more samples of the estimator, `radiance` along a ray through the pixel
+/// (`Accumulator::render_pass`). Each image is written to `out` the moment it is
 /// finished (Ctrl-C keeps them), the reference after every pass: watch it sharpen.
 pub fn render(scene: &Scene, camera: &LensCamera, study: &Study, out: &Output) -> Result<Renders> {
     let bar = ProgressBar::new(study.samples());

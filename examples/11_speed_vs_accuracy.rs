@@ -49,11 +49,7 @@ fn main() -> ExitCode {
             reason: "needs --mesh: it splits that mesh's triangles",
         }),
         (None, None) => {
-            let quality = if args.full {
-                Quality::Full
-            } else {
-                Quality::Quick
-            };
+            let quality = Quality::full_if(args.full);
             let charts = [ALL, &[("11_8_lessons", lessons as Measure)]].concat();
             lesson::stop_on_ctrl_c(); // Ctrl-C keeps the charts already written
             let only = args.only.as_deref();

@@ -40,6 +40,11 @@ pub enum Quality {
 }
 
 impl Quality {
+    /// `Full` when `full` (the lesson's `--full`), `Quick` otherwise.
+    pub fn full_if(full: bool) -> Quality {
+        if full { Quality::Full } else { Quality::Quick }
+    }
+
     /// `quick` or `full`, by quality.
     pub fn pick<T>(self, quick: T, full: T) -> T {
         match self {

@@ -116,7 +116,6 @@ fn source_hash() -> u64 {
         include_str!("../src/pathtrace/rng.rs"),
         include_str!("../src/pathtrace/roulette.rs"),
         include_str!("../src/scene.rs"),
-        include_str!("../src/pathtrace/observer.rs"),
         include_str!("../src/pathtrace/scenes.rs"),
         include_str!("../src/pathtrace/settings.rs"),
         include_str!("../src/sampling.rs"),

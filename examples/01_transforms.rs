@@ -12,29 +12,64 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::course::diagram::{Diagram, Place, palette};
-use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::mine;
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, vec3};
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 01: 4x4 transformations in homogeneous coordinates")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Rotation angle in degrees.
-    #[arg(long, default_value = "30", value_parser = parse_finite)]
-    pub angle: f32,
-    /// The point (and vector) to transform, as x,y,z.
-    #[arg(long, default_value = "1,2,3", value_parser = parse_vec3)]
-    pub point: Vec3,
-    /// Also draw the figure with your own `compose` (coding exercise 1.2):
-    /// `cargo run --features exercises --example 01_transforms -- --mine`.
-    #[arg(long)]
-    pub mine: bool,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let Args {
+        angle,
+        point,
+        mine,
+        output,
+    } = lesson::parse::<Args>();
+    lesson::run(|| {
+        let compose = mine.then(mine::my_compose).transpose()?;
+        lesson::print(&numbers(angle, point)?);
+        output.diagram("01_transform_order.png", &order_figure(angle)?)?;
+        if let Some(compose) = compose {
+            let figure = my_order_figure(angle, compose)?;
+            output.diagram("01_transform_order_mine.png", &figure)?;
+        }
+        Ok(())
+    })
+}
+
+/// The lesson's loop: the point (and vector) `p` under each of the slides'
+/// transformations, then under the two orders of one composition, as tables. An
+/// error if `p` is so large that a transform of it overflows f32.
+pub fn numbers(degrees: f32, p: Vec3) -> Result<String> {
+    let mut table = Table::new(
+        &format!(
+            "The slides' matrices, angle {1} degrees, applied to\nthe point {0} (w = 1) and the vector {0} (w = 0)",
+            vec3(p, 3),
+            degrees
+        ),
+        &["transform", "point", "vector"],
+    );
+    for (name, t) in slide_transforms(degrees)? {
+        let (point, vector) = (finite(t.point(p))?, t.vector(p));
+        table.row(vec![name.into(), vec3(point, 3), vec3(vector, 3)]);
+    }
+    let mut order = Table::new(
+        &format!("Order matters: the point {} under", vec3(p, 3)),
+        &["composition", "point"],
+    );
+    for (name, t) in two_orders(degrees)? {
+        order.row(vec![name.into(), vec3(finite(t.point(p))?, 3)]);
+    }
+    Ok(format!("{table}\n{order}"))
+}
+
+/// `p` if it is finite; otherwise the error that `--point` was too large.
+fn finite(p: Vec3) -> Result<Vec3> {
+    p.is_finite().then_some(p).ok_or(Error::Invalid {
+        param: "point",
+        reason: "is so large that a transform of it overflows f32",
+    })
 }
 
 /// The five transformations of the slides; the rotations turn by `degrees`.
@@ -63,29 +98,6 @@ pub fn two_orders(degrees: f32) -> Result<[(&'static str, Transform); 2]> {
     ])
 }
 // ANCHOR_END: order
-
-/// The tables the lesson prints: the point (and vector) `p` under every transformation.
-pub fn numbers(degrees: f32, p: Vec3) -> Result<String> {
-    let mut table = Table::new(
-        &format!(
-            "The slides' matrices, angle {1} degrees, applied to\nthe point {0} (w = 1) and the vector {0} (w = 0)",
-            vec3(p, 3),
-            degrees
-        ),
-        &["transform", "point", "vector"],
-    );
-    for (name, t) in slide_transforms(degrees)? {
-        table.row(vec![name.into(), vec3(t.point(p), 3), vec3(t.vector(p), 3)]);
-    }
-    let mut order = Table::new(
-        &format!("Order matters: the point {} under", vec3(p, 3)),
-        &["composition", "point"],
-    );
-    for (name, t) in two_orders(degrees)? {
-        order.row(vec![name.into(), vec3(t.point(p), 3)]);
-    }
-    Ok(format!("{table}\n{order}"))
-}
 
 /// A little house in the XY plane, the shape the figure transforms.
 pub fn house() -> Vec<Vec3> {
@@ -141,25 +153,21 @@ fn figure_of(degrees: f32, orders: [(&str, Transform); 2]) -> Result<Diagram> {
     Ok(d)
 }
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let (angle, point, output) = (args.angle, args.point, &args.output);
-        let angle = lesson::angle("--angle", angle)?;
-        let compose = args.mine.then(mine::my_compose).transpose()?;
-        let all = [slide_transforms(angle)?, two_orders(angle)?.to_vec()].concat();
-        if all.iter().any(|(_, t)| !t.point(point).is_finite()) {
-            return Err(Error::Invalid {
-                param: "--point",
-                reason: "is so large that a transform of it overflows f32",
-            });
-        }
-        lesson::print(&numbers(angle, point)?);
-        output.diagram("01_transform_order.png", &order_figure(angle)?)?;
-        if let Some(compose) = compose {
-            let figure = my_order_figure(angle, compose)?;
-            output.diagram("01_transform_order_mine.png", &figure)?;
-        }
-        Ok(())
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 01: 4x4 transformations in homogeneous coordinates")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// Rotation angle in degrees (within ±36000).
+    #[arg(long, default_value = "30", value_parser = parsers::degrees)]
+    pub angle: f32,
+    /// The point (and vector) to transform, as x,y,z.
+    #[arg(long, default_value = "1,2,3", value_parser = parsers::vec3)]
+    pub point: Vec3,
+    /// Also draw the figure with your own `compose` (coding exercise 1.2):
+    /// `cargo run --features exercises --example 01_transforms -- --mine`.
+    #[arg(long)]
+    pub mine: bool,
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -12,23 +12,18 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::course::diagram::{Diagram, Place, palette};
-use render_lessons::course::lesson::{self, Output, parse_vec3};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::ray::Ray;
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 02: the ray r(t) = o + t d")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Ray origin o, as x,y,z.
-    #[arg(long, default_value = "1,1,0", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub origin: Vec3,
-    /// Ray direction d, as x,y,z (normalised by the ray).
-    #[arg(long, default_value = "4,3,0", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub direction: Vec3,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let ray = Ray::new(args.origin, args.direction)?;
+        lesson::print(&numbers(&ray));
+        args.output.diagram("02_ray.png", &ray_figure(&ray)?)
+    })
 }
 
 /// The values of t the lesson samples.
@@ -101,11 +96,17 @@ pub fn ray_figure(ray: &Ray) -> Result<Diagram> {
     Ok(d)
 }
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let ray = Ray::new(args.origin, args.direction)?;
-        lesson::print(&numbers(&ray));
-        args.output.diagram("02_ray.png", &ray_figure(&ray)?)
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 02: the ray r(t) = o + t d")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// Ray origin o, as x,y,z.
+    #[arg(long, default_value = "1,1,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub origin: Vec3,
+    /// Ray direction d, as x,y,z (normalised by the ray).
+    #[arg(long, default_value = "4,3,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub direction: Vec3,
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -14,40 +14,31 @@ use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Film, OrthoCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, View};
-use render_lessons::course::lesson::{self, Output, parse_finite};
+use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::mine;
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 
-/// The lesson's parameters; the defaults reproduce the slide's pixel (0,0) -> (-6, 4, 0).
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 03: the orthographic camera at the origin")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Image width in pixels (resolution_x).
-    #[arg(long, default_value_t = 4)]
-    pub width: u32,
-    /// Image height in pixels (resolution_y).
-    #[arg(long, default_value_t = 3)]
-    pub height: u32,
-    /// Left edge of the projection plane.
-    #[arg(long, default_value = "-8", value_parser = parse_finite)]
-    pub x_min: f32,
-    /// Right edge of the projection plane.
-    #[arg(long, default_value = "8", value_parser = parse_finite)]
-    pub x_max: f32,
-    /// Bottom edge of the projection plane.
-    #[arg(long, default_value = "-6", value_parser = parse_finite)]
-    pub y_min: f32,
-    /// Top edge of the projection plane.
-    #[arg(long, default_value = "6", value_parser = parse_finite)]
-    pub y_max: f32,
-    /// Also draw the origin image with your own `pixel_to_plane` (coding exercise 3.1):
-    /// `cargo run --features exercises --example 03_ortho_camera -- --mine`.
-    #[arg(long)]
-    pub mine: bool,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let x = lesson::extent("--x-min/--x-max", args.x_min, args.x_max)?;
+        let y = lesson::extent("--y-min/--y-max", args.y_min, args.y_max)?;
+        let cam = camera(args.width, args.height, x, y)?;
+        let pixel_to_plane = args.mine.then(mine::my_pixel_to_plane).transpose()?;
+        lesson::print(&numbers(&cam));
+        let out = &args.output;
+        out.diagram("03_plane.png", &plane_figure(cam.film())?)?;
+        out.diagram("03_rays.png", &rays_figure(&cam)?)?;
+        let picture = Film::new(320, 240, x, y)?;
+        out.image("03_origins.png", &origin_image(&picture)?)?;
+        if let Some(pixel_to_plane) = pixel_to_plane {
+            let image = my_origin_image(&picture, pixel_to_plane)?;
+            out.image("03_origins_mine.png", &image)?;
+        }
+        Ok(())
+    })
 }
 
 // ANCHOR: camera
@@ -143,23 +134,33 @@ pub fn my_origin_image(film: &Film, pixel_to_plane: mine::PixelToPlane) -> Resul
     colour_by_origin(film, |x, y| pixel_to_plane(film, x, y))
 }
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let x = lesson::extent("--x-min/--x-max", args.x_min, args.x_max)?;
-        let y = lesson::extent("--y-min/--y-max", args.y_min, args.y_max)?;
-        let cam = camera(args.width, args.height, x, y)?;
-        let pixel_to_plane = args.mine.then(mine::my_pixel_to_plane).transpose()?;
-        lesson::print(&numbers(&cam));
-        let out = &args.output;
-        out.diagram("03_plane.png", &plane_figure(cam.film())?)?;
-        out.diagram("03_rays.png", &rays_figure(&cam)?)?;
-        let picture = Film::new(320, 240, x, y)?;
-        out.image("03_origins.png", &origin_image(&picture)?)?;
-        if let Some(pixel_to_plane) = pixel_to_plane {
-            let image = my_origin_image(&picture, pixel_to_plane)?;
-            out.image("03_origins_mine.png", &image)?;
-        }
-        Ok(())
-    })
+/// The lesson's parameters; the defaults reproduce the slide's pixel (0,0) -> (-6, 4, 0).
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 03: the orthographic camera at the origin")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// Image width in pixels (resolution_x).
+    #[arg(long, default_value_t = 4)]
+    pub width: u32,
+    /// Image height in pixels (resolution_y).
+    #[arg(long, default_value_t = 3)]
+    pub height: u32,
+    /// Left edge of the projection plane.
+    #[arg(long, default_value = "-8", value_parser = parsers::finite)]
+    pub x_min: f32,
+    /// Right edge of the projection plane.
+    #[arg(long, default_value = "8", value_parser = parsers::finite)]
+    pub x_max: f32,
+    /// Bottom edge of the projection plane.
+    #[arg(long, default_value = "-6", value_parser = parsers::finite)]
+    pub y_min: f32,
+    /// Top edge of the projection plane.
+    #[arg(long, default_value = "6", value_parser = parsers::finite)]
+    pub y_max: f32,
+    /// Also draw the origin image with your own `pixel_to_plane` (coding exercise 3.1):
+    /// `cargo run --features exercises --example 03_ortho_camera -- --mine`.
+    #[arg(long)]
+    pub mine: bool,
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -13,22 +13,16 @@ use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::basis::Basis;
 use render_lessons::course::diagram::{Diagram, Place, palette};
-use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 04: a vector in two orthonormal bases")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// The angle in degrees by which (u, v) is turned from (x, y) about z.
-    #[arg(long, default_value = "30", value_parser = parse_finite)]
-    pub angle: f32,
-    /// The vector's coordinates b in the basis (u, v, w), as b1,b2,b3.
-    #[arg(long, default_value = "2,1,0", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub b: Vec3,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let Args { angle, b, output } = lesson::parse::<Args>();
+    lesson::run(|| {
+        lesson::print(&numbers(angle, b)?);
+        output.diagram("04_two_bases.png", &bases_figure(angle, b)?)
+    })
 }
 
 // ANCHOR: basis
@@ -125,11 +119,17 @@ pub fn bases_figure(degrees: f32, b: Vec3) -> Result<Diagram> {
     Ok(d)
 }
 
-fn main() -> ExitCode {
-    let Args { angle, b, output } = lesson::parse::<Args>();
-    lesson::run(|| {
-        let angle = lesson::angle("--angle", angle)?;
-        lesson::print(&numbers(angle, b)?);
-        output.diagram("04_two_bases.png", &bases_figure(angle, b)?)
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 04: a vector in two orthonormal bases")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// The angle in degrees by which (u, v) is turned from (x, y) about z (within ±36000).
+    #[arg(long, default_value = "30", value_parser = parsers::degrees)]
+    pub angle: f32,
+    /// The vector's coordinates b in the basis (u, v, w), as b1,b2,b3.
+    #[arg(long, default_value = "2,1,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub b: Vec3,
+    #[command(flatten)]
+    pub output: Output,
 }

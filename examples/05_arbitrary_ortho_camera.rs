@@ -14,31 +14,19 @@ use glam::{Vec2, Vec3};
 use render_lessons::Result;
 use render_lessons::camera::{Film, Frame, OrthoCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View, extent};
-use render_lessons::course::lesson::{self, Output, parse_vec3};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, vec3};
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 05: an arbitrary orthographic camera")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Camera position p, as x,y,z.
-    #[arg(long, default_value = "6,0,6", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub position: Vec3,
-    /// View direction d, as x,y,z.
-    #[arg(long, default_value = "-1,0,-1", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub direction: Vec3,
-    /// Up vector k, as x,y,z.
-    #[arg(long, default_value = "0,1,0", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub up: Vec3,
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 4)]
-    pub width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 3)]
-    pub height: u32,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let (p, d, k) = (args.position, args.direction, args.up);
+        let cam = camera(args.width, args.height, p, d, k)?;
+        lesson::print(&numbers(&cam, d, k));
+        let figure = top_figure(&cam)?;
+        args.output.diagram("05_camera_from_above.png", &figure)
+    })
 }
 
 // ANCHOR: camera
@@ -99,13 +87,26 @@ pub fn top_figure(cam: &OrthoCamera) -> Result<Diagram> {
     Ok(d)
 }
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let (p, d, k) = (args.position, args.direction, args.up);
-        let cam = camera(args.width, args.height, p, d, k)?;
-        lesson::print(&numbers(&cam, d, k));
-        let figure = top_figure(&cam)?;
-        args.output.diagram("05_camera_from_above.png", &figure)
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 05: an arbitrary orthographic camera")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// Camera position p, as x,y,z.
+    #[arg(long, default_value = "6,0,6", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub position: Vec3,
+    /// View direction d, as x,y,z.
+    #[arg(long, default_value = "-1,0,-1", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub direction: Vec3,
+    /// Up vector k, as x,y,z.
+    #[arg(long, default_value = "0,1,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub up: Vec3,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 4)]
+    pub width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 3)]
+    pub height: u32,
+    #[command(flatten)]
+    pub output: Output,
 }

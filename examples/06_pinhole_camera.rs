@@ -14,38 +14,32 @@ use glam::Vec3;
 use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, MAX_RESOLUTION, OrthoCamera, PinholeCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
-use render_lessons::course::lesson::{self, Output, parse_finite, parse_vec3};
+use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::mine;
+use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Ray;
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 06: the pinhole camera")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Distance s from the eye to the screen (the screen is lesson 03's [-8, 8] x [-6, 6]).
-    #[arg(long, default_value = "8", value_parser = parse_finite)]
-    pub screen_distance: f32,
-    /// Position p of the arbitrary camera, as x,y,z.
-    #[arg(long, default_value = "0,3,6", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub position: Vec3,
-    /// View direction d of the arbitrary camera, as x,y,z.
-    #[arg(long, default_value = "0,-1,-2", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub direction: Vec3,
-    /// Up vector k of the arbitrary camera, as x,y,z.
-    #[arg(long, default_value = "0,1,0", value_parser = parse_vec3, allow_hyphen_values = true)]
-    pub up: Vec3,
-    /// Width in pixels of each of the two views of the floor grid.
-    #[arg(long, default_value_t = 320)]
-    pub view_width: u32,
-    /// Also draw the pinhole view with your own `pinhole_ray` (coding exercise 6.1):
-    /// `cargo run --features exercises --example 06_pinhole_camera -- --mine`.
-    #[arg(long)]
-    pub mine: bool,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let (s, d, k) = (args.screen_distance, args.direction, args.up);
+        let frame = Frame::look(args.position, d, k)?;
+        let [at_origin, placed] = cameras(s, frame)?;
+        let view_width = args.view_width;
+        let views = views(frame, view_width, s * 0.5)?;
+        let pinhole_ray = args.mine.then(mine::my_pinhole_ray).transpose()?;
+        lesson::print(&numbers(&at_origin, &placed, d, k));
+        let out = &args.output;
+        out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
+        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)?;
+        if let Some(pinhole_ray) = pinhole_ray {
+            let image = my_pinhole_view(frame, view_width, s * 0.5, pinhole_ray)?;
+            out.image("06_pinhole_mine.png", &image)?;
+        }
+        Ok(())
+    })
 }
 
 // ANCHOR: floor
@@ -169,23 +163,30 @@ pub fn my_pinhole_view(
     })
 }
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let (s, d, k) = (args.screen_distance, args.direction, args.up);
-        let frame = Frame::look(args.position, d, k)?;
-        let [at_origin, placed] = cameras(s, frame)?;
-        let view_width = lesson::pixels("--view-width", args.view_width, MAX_RESOLUTION / 2)?;
-        let views = views(frame, view_width, s * 0.5)?;
-        let pinhole_ray = args.mine.then(mine::my_pinhole_ray).transpose()?;
-        lesson::print(&numbers(&at_origin, &placed, d, k));
-        let out = &args.output;
-        out.diagram("06_pinhole_rays.png", &fan_figure(&at_origin)?)?;
-        out.image("06_ortho_vs_pinhole.png", &side_by_side(&views)?)?;
-        if let Some(pinhole_ray) = pinhole_ray {
-            let image = my_pinhole_view(frame, view_width, s * 0.5, pinhole_ray)?;
-            out.image("06_pinhole_mine.png", &image)?;
-        }
-        Ok(())
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 06: the pinhole camera")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// Distance s from the eye to the screen (the screen is lesson 03's [-8, 8] x [-6, 6]).
+    #[arg(long, default_value = "8", value_parser = parsers::finite)]
+    pub screen_distance: f32,
+    /// Position p of the arbitrary camera, as x,y,z.
+    #[arg(long, default_value = "0,3,6", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub position: Vec3,
+    /// View direction d of the arbitrary camera, as x,y,z.
+    #[arg(long, default_value = "0,-1,-2", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub direction: Vec3,
+    /// Up vector k of the arbitrary camera, as x,y,z.
+    #[arg(long, default_value = "0,1,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
+    pub up: Vec3,
+    /// Width in pixels of each of the two views of the floor grid.
+    #[arg(long, default_value_t = 320, value_parser = parsers::pixels(MAX_RESOLUTION / 2))]
+    pub view_width: u32,
+    /// Also draw the pinhole view with your own `pinhole_ray` (coding exercise 6.1):
+    /// `cargo run --features exercises --example 06_pinhole_camera -- --mine`.
+    #[arg(long)]
+    pub mine: bool,
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -1,30 +1,93 @@
 //! Lesson 07: ray/primitive intersections (Lecture 4: sphere, triangle, infinite
 //! plane, box, quadrics).
 //!
-//! One ray against each primitive: every crossing's t, the nearest hit's point and
-//! outward normal, and whether the ray met the front face. Each shape's figure is a
-//! cross-section through the ray, drawn from the same intersection code.
+//! One ray against each primitive, first by the naive method and by the robust one
+//! side by side (and two rays on which the naive one fails), then every crossing's t,
+//! the nearest hit's point and outward normal, and whether the ray met the front face.
+//! Each shape's figure is a cross-section through the ray, drawn from the same
+//! intersection code.
 //!
 //!     cargo run --example 07_intersections
 
 use std::process::ExitCode;
 
 use clap::Parser;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use render_lessons::Result;
-use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::diagram::cross_section;
 use render_lessons::course::lesson::{self, Output};
-use render_lessons::course::report::{Table, num, nums, vec3};
+use render_lessons::course::report::{Table, nums, vec3};
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Aabb, Plane, Quadric, Shape, Sphere, Triangle};
 
-/// The lesson's parameters.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 07: ray/primitive intersections")]
-pub struct Args {
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let cases = cases()?;
+        let hard = hard_cases()?;
+        lesson::print(&naive_and_robust(cases.iter().chain(&hard)));
+        lesson::print(&numbers(&cases));
+        for Case { name, shape, ray } in &cases {
+            let figure = cross_section(name, shape, ray)?;
+            args.output.diagram(&format!("07_{name}.png"), &figure)?;
+        }
+        Ok(())
+    })
 }
+
+// ANCHOR: naive_and_robust
+/// The lesson's loop: each ray against its shape by the naive method and by the
+/// robust one, side by side; every crossing of the whole line, or "miss".
+pub fn naive_and_robust<'a>(cases: impl IntoIterator<Item = &'a Case>) -> String {
+    let columns = ["shape", "naive", "crossings t", "robust", "crossings t"];
+    let mut table = Table::new("Naive and robust methods on the same rays", &columns);
+    let ts = |ts: Vec<f32>| match ts.is_empty() {
+        true => "miss".to_string(),
+        false => nums(&ts, 4),
+    };
+    for Case { name, shape, ray } in cases {
+        let [(naive, a), (robust, b)] = methods(shape, ray);
+        table.row(vec![
+            name.to_string(),
+            naive.into(),
+            ts(a),
+            robust.into(),
+            ts(b),
+        ]);
+    }
+    table.to_string()
+}
+
+/// The naive and the robust method of `shape`, each named, and the crossings of the
+/// ray's whole line that each finds. The plane has one method only.
+pub fn methods(shape: &Shape, ray: &Ray) -> [(&'static str, Vec<f32>); 2] {
+    let line = Interval::EVERYWHERE;
+    let one = |t: Option<f32>| Vec::from_iter(t);
+    let pair = |p: Option<(f32, f32)>| p.map_or(vec![], |(t0, t1)| vec![t0, t1]);
+    match shape {
+        Shape::Sphere(s) => [
+            ("textbook roots", s.roots_textbook(ray).to_vec()),
+            ("Hearn-Baker, stable roots", s.roots_stable(ray).to_vec()),
+        ],
+        Shape::Quadric(q) => [
+            ("textbook roots", q.roots_textbook(ray).to_vec()),
+            ("stable roots", q.roots_stable(ray).to_vec()),
+        ],
+        Shape::Triangle(t) => [
+            (
+                "Moller-Trumbore",
+                one(t.moller_trumbore(ray, line).map(|h| h.0)),
+            ),
+            ("watertight", one(t.watertight(ray, line).map(|h| h.0))),
+        ],
+        Shape::Aabb(b) => [
+            ("slab test", pair(b.slab(ray, line))),
+            ("slab test, widened", pair(b.slab_conservative(ray, line))),
+        ],
+        other => ["one method", "the same"].map(|m| (m, other.crossings(ray).to_vec())),
+    }
+}
+// ANCHOR_END: naive_and_robust
 
 /// One ray against one primitive; the name labels the table's row and the figure.
 pub struct Case {
@@ -59,6 +122,21 @@ pub fn cases() -> Result<Vec<Case>> {
 }
 // ANCHOR_END: cases
 
+/// Two rays on which the naive methods fail: a sphere 10^4 radii away (STABILITY S1),
+/// and a ray 10^-4 radians off the paraboloid's axis (S9).
+pub fn hard_cases() -> Result<Vec<Case>> {
+    let far = Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -1e4), 1.0)?);
+    let towards_far = Ray::new(Vec3::ZERO, Vec3::new(0.5e-4, 0.0, -1.0))?;
+    let (sin, cos) = 1e-4f32.sin_cos();
+    let paraboloid = Shape::Quadric(Quadric::paraboloid()?);
+    let along_axis = Ray::new(Vec3::new(0.3, 0.2, 5.0), Vec3::new(sin, 0.0, -cos))?;
+    let case = |name, shape, ray| Case { name, shape, ray };
+    Ok(vec![
+        case("sphere 10^4 away", far, towards_far),
+        case("paraboloid, near its axis", paraboloid, along_axis),
+    ])
+}
+
 /// The lesson's table: each case's crossings, then its nearest hit with t > 0.
 pub fn numbers(cases: &[Case]) -> String {
     let mut table = Table::new(
@@ -90,75 +168,10 @@ fn face(front: bool) -> String {
     if front { "front" } else { "back" }.into()
 }
 
-/// The cross-section figure of one case: the surface, the ray, every crossing, and the
-/// normal at the nearest hit.
-pub fn figure(case: &Case) -> Result<Diagram> {
-    let (shape, ray) = (&case.shape, &case.ray);
-    // The figure's plane: spanned by x and y, or by x and z for a ray in y = 0.
-    let in_xy = ray.origin().z == 0.0 && ray.direction().z == 0.0;
-    let up = if in_xy { Vec3::Y } else { Vec3::Z };
-    let view = |p: Vec3| Vec2::new(p.x, p.dot(up));
-    let (lo, hi) = (Vec2::new(-3.2, -2.0), Vec2::new(3.2, 3.2));
-    let mut d = Diagram::new(600, 460, (lo.x, hi.x), (lo.y, 3.3))?;
-    d.title(&format!(
-        "Ray and {}: crossings, and the normal at the nearest hit",
-        case.name
-    ));
-    let names = ("x", if in_xy { "y" } else { "z" });
-    d.axes((lo.x, hi.x), (lo.y, hi.y), 1.0, names);
-    // The surface's trace in the plane, found by the same `Shape::crossings`: a dot wherever a
-    // grid of rays along x and along the plane's second axis crosses it.
-    for i in -400..=400 {
-        let s = i as f32 / 100.0;
-        for (o, dir) in [(up * s, Vec3::X), (Vec3::X * s, up)] {
-            let probe = Ray::new(o, dir)?;
-            for &t in shape.crossings(&probe).iter() {
-                let q = view(probe.at(t));
-                if q.clamp(lo, hi) == q {
-                    d.dot(q, 1.5, palette::PLANE);
-                }
-            }
-        }
-    }
-    let ts = shape.crossings(ray);
-    let far = ts.iter().copied().fold(1.0f32, f32::max) + 1.5;
-    d.arrow(view(ray.origin()), view(ray.at(far)), palette::RAY, 2.0);
-    d.dot(view(ray.origin()), 4.0, palette::RAY);
-    d.text(view(ray.origin()), "o", palette::RAY, Place::Left);
-    for t in ts.iter() {
-        d.dot(view(ray.at(*t)), 5.0, palette::HIT);
-    }
-    let normal = shape.hit(ray, Interval::AHEAD).map(|hit| {
-        let (p, tip) = (view(hit.point), view(hit.point) + view(hit.normal) * 0.8);
-        d.arrow(p, tip, palette::NORMAL, 2.5);
-        tip
-    });
-    // The labels once everything is drawn, each where it covers nothing.
-    for (i, t) in ts.iter().enumerate() {
-        let place = if i == 0 { Place::Below } else { Place::Right };
-        let label = format!("t = {}", num(*t as f64, 3));
-        d.text_clear(
-            view(ray.at(*t)),
-            &label,
-            palette::HIT,
-            &place.nearest_first(),
-        );
-    }
-    if let Some(tip) = normal {
-        d.text_clear(tip, "n", palette::NORMAL, &Place::Right.nearest_first());
-    }
-    Ok(d)
-}
-
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let cases = cases()?;
-        lesson::print(&numbers(&cases));
-        for case in &cases {
-            let file = format!("07_{}.png", case.name);
-            args.output.diagram(&file, &figure(case)?)?;
-        }
-        Ok(())
-    })
+/// The lesson's parameters.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 07: ray/primitive intersections")]
+pub struct Args {
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -15,8 +15,11 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::Vec3;
-use render_lessons::course::lesson::{self, ImageFlags, Output, parse_finite};
-use render_lessons::course::report::{Table, Timings, num};
+use render_lessons::course::image_tables::agreement_table;
+use render_lessons::course::lesson::{self, ImageFlags, Output};
+use render_lessons::course::parsers;
+use render_lessons::course::report::Timings;
+use render_lessons::course::triangle_table::triangle_table;
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, difference};
 use render_lessons::raster::{check_segments, floor_settings, point_light, rasterize};
@@ -27,51 +30,35 @@ use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
 use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, spawn::Offset};
 use render_lessons::{raycast::lit, render::render, scene::Scene};
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 09: the rasterization pipeline, side by side with ray casting")]
-#[command(allow_negative_numbers = true)]
-struct Args {
-    #[command(flatten)]
-    image: ImageFlags,
-    /// Slices of longitude of each tessellated sphere (bands of latitude: half).
-    #[arg(long, default_value_t = 64)]
-    segments: u32,
-    /// Texels along each side of the shadow map.
-    #[arg(long, default_value_t = 1024)]
-    shadow_map_size: u32,
-    /// The shadow map's bias, in texel footprints.
-    #[arg(long, default_value = "1", value_parser = parse_finite)]
-    bias: f32,
-    /// The mesh drawn by both renderers (a Wavefront OBJ file; quads and larger
-    /// faces are split into triangles).
-    #[arg(long, default_value = TORUS_OBJ)]
-    mesh: PathBuf,
-    /// Split every triangle of the mesh in four, this many times (the teapot: 4
-    /// makes a million triangles).
-    #[arg(long, default_value_t = 0)]
-    subdivide: u32,
-    #[command(flatten)]
-    output: Output,
-}
-
-/// How many images the lesson writes.
-const IMAGES: u64 = 10;
-
-/// What the lesson produces: its images by file name, each rasterized image against
-/// its ray-cast reference away from silhouettes (label, reference, agreement), and
-/// how long each renderer took, in seconds.
-pub struct Lesson {
-    pub images: Vec<(&'static str, Framebuffer)>,
-    pub agreements: Vec<(&'static str, &'static str, Agreement)>,
-    pub times: Timings,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        // The images it keeps, and as many again while it works (z-buffers, shadows).
+        let ((width, height), threads) = args.image.check(2 * IMAGES.len() as u64)?;
+        let scene = lesson08(Vec3::ZERO)?;
+        let camera = lesson08_pinhole(width, height)?;
+        let shadows = lesson08_shadows(args.shadow_map_size, args.bias);
+        check_segments(&scene, args.segments)?;
+        let mesh = lesson09_mesh(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
+        let model = &mesh.model;
+        let i = images(&scene, &camera, args.segments, shadows, model, threads)?;
+        let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
+        lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &i)?);
+        lesson::print(&i.times.table().to_string()); // the terminal only
+        for (name, image) in IMAGES.iter().zip(&i.images) {
+            args.output.image(name, image)?;
+        }
+        Ok(())
+    })
 }
 
 // ANCHOR: images
-/// Renders everything: the ray-cast reference, the scene tessellated with `segments`
-/// and rasterized (per pixel, per vertex), the shadows both ways (the map with its
-/// bias, none, and 50 times too much), and the floor with `mesh`, both ways (the
-/// ray caster goes through a BVH when the mesh is too big to test every triangle).
+/// Lecture 2's pipeline, stage by stage, beside the ray caster: the scene modelled
+/// as triangles (spheres of `segments` slices), lit by its point light, then
+/// transformed, clipped, rasterized and shaded per pixel and per vertex; the shadows
+/// both ways (the map with its bias, none, and 50 times too much); and the floor
+/// with `mesh`, both ways (the ray caster goes through a BVH when the mesh is too big
+/// to test every triangle).
 pub fn images(
     scene: &Scene,
     camera: &Camera,
@@ -80,34 +67,36 @@ pub fn images(
     mesh: &Model,
     threads: Option<usize>,
 ) -> Result<Lesson> {
-    let instances = tessellate(scene, segments)?;
-    let light = point_light(scene)?;
-    let draw = |instances: &[Model], shading, shadows| {
+    let instances = tessellate(scene, segments)?; // modeling: vertex and triangle lists
+    let light = point_light(scene)?; // lighting
+    let pipeline = |instances: &[Model], shading, shadows| {
         let settings = floor_settings(scene).with(shading, shadows);
-        rasterize(instances, camera, &light, &settings, threads)
+        rasterize(instances, camera, &light, &settings, threads) // transform ... shading
     };
-    let cast = |scene| reference(scene, camera, threads);
-    let traced = || render(camera, threads, |r| lit(scene, r, Offset::Scaled));
-    let mapped = |bias| draw(&instances, PerPixel, Some(shadows.with_bias(bias)));
+    let mapped = |bias| pipeline(&instances, PerPixel, Some(shadows.with_bias(bias)));
+    let floor_and_mesh = [instances[0].clone(), mesh.clone()];
     let pixels = u64::from(camera.film().width()) * u64::from(camera.film().height());
     let meshed = MeshScene::new(lesson09_mesh_scene(scene, mesh)?, pixels);
     let mesh_cast = match meshed {
         MeshScene::List(_) => "ray cast, floor + mesh",
         MeshScene::Tree(_) => "ray cast through a BVH, floor + mesh",
     };
-    let floor_and_mesh = [instances[0].clone(), mesh.clone()];
     let mut t = Timings::default();
-    let ray_cast = t.time("ray cast, analytic scene", || cast(scene))?;
-    let per_vertex = draw(&instances, PerVertex, None)?;
-    let per_pixel = t.time("rasterized, per-pixel shading", || {
-        draw(&instances, PerPixel, None)
+    let ray_cast = t.time("ray cast, analytic scene", || {
+        reference(scene, camera, threads)
     })?;
-    let shadow_ray = t.time("ray cast with shadow rays", traced)?;
+    let per_vertex = pipeline(&instances, PerVertex, None)?;
+    let per_pixel = t.time("rasterized, per-pixel shading", || {
+        pipeline(&instances, PerPixel, None)
+    })?;
+    let shadow_ray = t.time("ray cast with shadow rays", || {
+        render(camera, threads, |r| lit(scene, r, Offset::Scaled))
+    })?;
     let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
     let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera, threads))?;
     drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes
     let mesh_raster = t.time("rasterized, floor + mesh", || {
-        draw(&floor_and_mesh, PerPixel, None)
+        pipeline(&floor_and_mesh, PerPixel, None)
     })?;
     let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
     // Each rasterized image against its ray-cast counterpart, away from silhouettes.
@@ -127,23 +116,46 @@ pub fn images(
     .map(|(label, a, (name, b, mask))| (label, name, agreement(a, b, mask, TOLERANCE)));
     let difference = difference(&ray_cast.image, &per_pixel, mask)?;
     Ok(Lesson {
-        agreements: agreements.to_vec(),
-        images: vec![
-            ("09_ray_cast.png", ray_cast.image),
-            ("09_per_pixel.png", per_pixel),
-            ("09_per_vertex.png", per_vertex),
-            ("09_difference.png", difference),
-            ("09_shadow_ray.png", shadow_ray),
-            ("09_shadow_map.png", shadow_map),
-            ("09_shadow_map_acne.png", acne),
-            ("09_shadow_map_peter_pan.png", peter_pan),
-            ("09_mesh_ray_cast.png", mesh_ray_cast.image),
-            ("09_mesh_raster.png", mesh_raster),
+        images: [
+            ray_cast.image,
+            per_pixel,
+            per_vertex,
+            difference,
+            shadow_ray,
+            shadow_map,
+            acne,
+            peter_pan,
+            mesh_ray_cast.image,
+            mesh_raster,
         ],
+        agreements: agreements.to_vec(),
         times: t,
     })
 }
 // ANCHOR_END: images
+
+/// The lesson's images, in the order of [`Lesson::images`].
+pub const IMAGES: &[&str] = &[
+    "09_ray_cast.png",
+    "09_per_pixel.png",
+    "09_per_vertex.png",
+    "09_difference.png",
+    "09_shadow_ray.png",
+    "09_shadow_map.png",
+    "09_shadow_map_acne.png",
+    "09_shadow_map_peter_pan.png",
+    "09_mesh_ray_cast.png",
+    "09_mesh_raster.png",
+];
+
+/// What the lesson produces: its images, named in [`IMAGES`]; each rasterized image
+/// against its ray-cast reference away from silhouettes (label, reference,
+/// agreement); and how long each renderer took, in seconds.
+pub struct Lesson {
+    pub images: [Framebuffer; IMAGES.len()],
+    pub agreements: Vec<(&'static str, &'static str, Agreement)>,
+    pub times: Timings,
+}
 
 /// The lesson's tables: the scene as triangles, and how far each rasterized image is
 /// from its ray-cast counterpart. No timings: they go to the terminal only.
@@ -153,66 +165,37 @@ pub fn numbers(
     (mesh, file): (&LessonMesh, &str),
     lesson: &Lesson,
 ) -> Result<String> {
-    let columns = ["object", "vertices", "triangles"];
-    let mut counts = Table::new("The scene as triangles", &columns);
-    let mut total = 0;
-    for (name, i) in LESSON08_OBJECTS.iter().zip(tessellate(scene, segments)?) {
-        let (v, t) = (i.mesh.positions.len(), i.mesh.triangles.len());
-        total += t;
-        counts.row(vec![name.to_string(), v.to_string(), t.to_string()]);
-    }
-    counts.row(vec!["all".into(), String::new(), total.to_string()]);
-    let m = &mesh.model.mesh;
-    let (v, t) = (m.positions.len(), m.triangles.len());
-    let split = match mesh.subdivisions {
-        0 => String::new(),
-        n => format!(" subdivided {n} times"),
-    };
-    let read = match mesh.counts.to_string() {
-        c if c.is_empty() => c,
-        c => format!("; {c}"),
-    };
-    let name = format!("mesh ({file}{split}, flat{read})");
-    counts.row(vec![name, v.to_string(), t.to_string()]);
-    let (width, height) = (lesson.images[0].1.width(), lesson.images[0].1.height());
-    let tolerance = num(f64::from(TOLERANCE * 255.0), 0);
-    let mut columns = vec!["rasterized image", "reference", "compared"];
-    columns.extend(["differing", "agree", "max difference"]);
-    let title = format!(
-        "Against the ray caster, {width} x {height} pixels, away from silhouettes\n(more than {tolerance}/255 apart in a channel counts as different)"
-    );
-    let mut compare = Table::new(&title, &columns);
-    for (label, reference, a) in &lesson.agreements {
-        compare.row(vec![
-            label.to_string(),
-            reference.to_string(),
-            a.compared.to_string(),
-            a.differing.to_string(),
-            format!("{}%", num(a.percent_agreeing(), 2)),
-            num(f64::from(a.max_difference), 3),
-        ]);
-    }
+    let instances = tessellate(scene, segments)?;
+    let counts = triangle_table(&LESSON08_OBJECTS, &instances, mesh, file);
+    let size = (lesson.images[0].width(), lesson.images[0].height());
+    let compare = agreement_table(size, TOLERANCE, &lesson.agreements);
     Ok(format!("{counts}\n{compare}"))
 }
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        // The images it keeps, and as many again while it works (z-buffers, shadows).
-        let ((width, height), threads) = args.image.check(2 * IMAGES)?;
-        let scene = lesson08(Vec3::ZERO)?;
-        let camera = lesson08_pinhole(width, height)?;
-        let shadows = lesson08_shadows(args.shadow_map_size, args.bias);
-        check_segments(&scene, args.segments)?;
-        let mesh = lesson09_mesh(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
-        let model = &mesh.model;
-        let i = images(&scene, &camera, args.segments, shadows, model, threads)?;
-        let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
-        lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &i)?);
-        lesson::print(&i.times.table().to_string()); // the terminal only
-        for (name, image) in &i.images {
-            args.output.image(name, image)?;
-        }
-        Ok(())
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 09: the rasterization pipeline, side by side with ray casting")]
+#[command(allow_negative_numbers = true)]
+struct Args {
+    #[command(flatten)]
+    image: ImageFlags,
+    /// Slices of longitude of each tessellated sphere (bands of latitude: half).
+    #[arg(long, default_value_t = 64)]
+    segments: u32,
+    /// Texels along each side of the shadow map.
+    #[arg(long, default_value_t = 1024)]
+    shadow_map_size: u32,
+    /// The shadow map's bias, in texel footprints (0 or more).
+    #[arg(long, default_value = "1", value_parser = parsers::non_negative)]
+    bias: f32,
+    /// The mesh drawn by both renderers (a Wavefront OBJ file; quads and larger
+    /// faces are split into triangles).
+    #[arg(long, default_value = TORUS_OBJ)]
+    mesh: PathBuf,
+    /// Split every triangle of the mesh in four, this many times (the teapot: 4
+    /// makes a million triangles).
+    #[arg(long, default_value_t = 0)]
+    subdivide: u32,
+    #[command(flatten)]
+    output: Output,
 }

@@ -12,28 +12,21 @@ use std::f64::consts::PI;
 use std::process::ExitCode;
 
 use clap::Parser;
-use render_lessons::Result;
 use render_lessons::course::chart::{Chart, Scale, log_log_slope};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::report::{Table, num};
-use render_lessons::error::Error;
 use render_lessons::pathtrace::Rng;
 
-/// The lesson's parameters; the defaults reproduce the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 10, step 1: Monte Carlo integration of pi, error against N")]
-pub struct Args {
-    /// N goes 1, 2, 4, ... up to 2^max-power samples (at most 24).
-    #[arg(long, default_value_t = 16)]
-    pub max_power: u32,
-    /// Independent runs at each N, for the RMSE (1 to 4096).
-    #[arg(long, default_value_t = 64)]
-    pub runs: u32,
-    /// Seed of the random streams (one per run and N).
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let rows = study(args.max_power, args.runs, args.seed);
+        lesson::print(&numbers(args.runs, &rows));
+        for path in chart(args.runs, &rows).save(&args.output.out, "10_monte_carlo")? {
+            lesson::wrote(&path);
+        }
+        Ok(())
+    })
 }
 
 // ANCHOR: integrand
@@ -58,6 +51,29 @@ pub fn estimate(n: u64, rng: &mut Rng) -> f64 {
 }
 // ANCHOR_END: estimate
 
+// ANCHOR: study
+/// The lesson's loop: for N = 2^0 .. 2^max_power, `runs` estimates (at least one),
+/// each from its own stream (seed, run, power), so every number is the same on every
+/// machine.
+pub fn study(max_power: u32, runs: u32, seed: u64) -> Vec<Row> {
+    let rows = (0..=max_power).map(|k| {
+        let n = 1u64 << k;
+        let estimates: Vec<f64> = (0..runs.max(1))
+            .map(|run| estimate(n, &mut Rng::for_pixel(seed, run, k)))
+            .collect();
+        let squared: f64 = estimates.iter().map(|e| (e - PI).powi(2)).sum();
+        let mse = squared / estimates.len() as f64;
+        Row {
+            n,
+            estimate: estimates[0],
+            error: (estimates[0] - PI).abs(),
+            rmse: mse.sqrt(),
+        }
+    });
+    rows.collect()
+}
+// ANCHOR_END: study
+
 /// One line of the table: N, the first run's estimate and error, the RMSE of all runs.
 pub struct Row {
     pub n: u64,
@@ -66,49 +82,14 @@ pub struct Row {
     pub rmse: f64,
 }
 
-// ANCHOR: study
-/// For N = 2^0 .. 2^max_power: `runs` estimates, each from its own stream
-/// (seed, run, power), so every number is the same on every machine.
-pub fn study(args: &Args) -> Result<Vec<Row>> {
-    if args.max_power > 24 {
-        let reason = "must be at most 24 (N = 2^24 samples)";
-        return Err(Error::Invalid {
-            param: "max power",
-            reason,
-        });
-    }
-    if !(1..=4096).contains(&args.runs) {
-        let reason = "must be from 1 to 4096";
-        return Err(Error::Invalid {
-            param: "runs",
-            reason,
-        });
-    }
-    let rows = (0..=args.max_power).map(|k| {
-        let n = 1u64 << k;
-        let runs: Vec<f64> = (0..args.runs)
-            .map(|run| estimate(n, &mut Rng::for_pixel(args.seed, run, k)))
-            .collect();
-        let mse = runs.iter().map(|e| (e - PI).powi(2)).sum::<f64>() / runs.len() as f64;
-        let error = (runs[0] - PI).abs();
-        Row {
-            n,
-            estimate: runs[0],
-            error,
-            rmse: mse.sqrt(),
-        }
-    });
-    Ok(rows.collect())
-}
-// ANCHOR_END: study
-
-/// The table, and the slope of log RMSE against log N (the law says -1/2).
-pub fn numbers(args: &Args, rows: &[Row]) -> String {
+/// The table of `rows` (each RMSE over `runs` runs), and the slope of log RMSE
+/// against log N (the law says -1/2).
+pub fn numbers(runs: u32, rows: &[Row]) -> String {
     let title = format!(
         "Monte Carlo estimates of pi, sigma of one sample = {}",
         num(sigma(), 4)
     );
-    let rmse = format!("RMSE ({} runs)", args.runs);
+    let rmse = format!("RMSE ({runs} runs)");
     let mut table = Table::new(&title, &["N", "estimate", "error", &rmse, "RMSE x sqrt(N)"]);
     for r in rows {
         let scaled = r.rmse * (r.n as f64).sqrt();
@@ -121,8 +102,8 @@ pub fn numbers(args: &Args, rows: &[Row]) -> String {
 }
 
 // ANCHOR: chart
-/// The log-log chart: one run's error, the RMSE of all runs, and sigma / sqrt(N).
-pub fn chart(args: &Args, rows: &[Row]) -> Chart {
+/// The log-log chart: one run's error, the RMSE of all `runs` runs, and sigma / sqrt(N).
+pub fn chart(runs: u32, rows: &[Row]) -> Chart {
     let line = |y: fn(&Row) -> f64| rows.iter().map(|r| (r.n as f64, y(r))).collect();
     Chart::new(
         "Monte Carlo estimate of pi: the error falls as 1/sqrt(N)",
@@ -130,19 +111,24 @@ pub fn chart(args: &Args, rows: &[Row]) -> Chart {
         ("error", Scale::Log),
     )
     .with("|error| of one run", line(|r| r.error))
-    .with(&format!("RMSE of {} runs", args.runs), line(|r| r.rmse))
+    .with(&format!("RMSE of {runs} runs"), line(|r| r.rmse))
     .with("sigma / sqrt(N)", line(|r| sigma() / (r.n as f64).sqrt()))
 }
 // ANCHOR_END: chart
 
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let rows = study(&args)?;
-        lesson::print(&numbers(&args, &rows));
-        for path in chart(&args, &rows).save(&args.output.out, "10_monte_carlo")? {
-            lesson::wrote(&path);
-        }
-        Ok(())
-    })
+/// The lesson's parameters; the defaults reproduce the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 10, step 1: Monte Carlo integration of pi, error against N")]
+pub struct Args {
+    /// N goes 1, 2, 4, ... up to 2^max-power samples (at most 24).
+    #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(0..=24))]
+    pub max_power: u32,
+    /// Independent runs at each N, for the RMSE (1 to 4096).
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub runs: u32,
+    /// Seed of the random streams (one per run and N).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    #[command(flatten)]
+    pub output: Output,
 }

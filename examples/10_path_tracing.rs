@@ -18,65 +18,92 @@ use indicatif::ProgressBar;
 use render_lessons::Result;
 use render_lessons::camera::Camera;
 use render_lessons::course::ladder_figure::ladder_figure;
-use render_lessons::course::lesson::{self, Output, parse_finite};
+use render_lessons::course::lesson::{self, Output};
+use render_lessons::course::path_flags::{LensFlags, PathFlags, StudyFlags};
 use render_lessons::course::report::{Table, num};
-use render_lessons::error::positive;
-use render_lessons::pathtrace::convergence::{Part, Renders, Study, ladder};
+use render_lessons::pathtrace::PixelSampling;
+use render_lessons::pathtrace::convergence::{Part, Renders, Study};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::SceneName;
-use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
 use render_lessons::scene::Scene;
 
-/// The lesson's parameters; every one has a default that reproduces the book.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 10: Monte Carlo path tracing, four sampling strategies")]
-#[command(allow_negative_numbers = true)]
-pub struct Args {
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 160)]
-    pub width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 120)]
-    pub height: u32,
-    /// The largest sample count of the ladder 1, 4, 16, ... (powers of 4 up to it).
-    #[arg(long, default_value_t = 64)]
-    pub spp: u32,
-    /// Samples per pixel of the reference image the errors are measured against.
-    #[arg(long, default_value_t = 512)]
-    pub reference_spp: u32,
-    /// How directions are chosen at diffuse surfaces.
-    #[arg(long, value_enum, default_value_t = Sampling::Mis)]
-    pub sampling: Sampling,
-    /// The scene.
-    #[arg(long, value_enum, default_value_t = SceneName::Cornell)]
-    pub scene: SceneName,
-    /// Seed of the random streams (one per pixel); the images do not depend on --threads.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Worker threads (default: every core).
-    #[arg(long)]
-    pub threads: Option<usize>,
-    /// The most bounces a path may take.
-    #[arg(long, default_value_t = 8)]
-    pub max_depth: u32,
-    /// Russian roulette on (the default; the last of --rr and --no-rr wins).
-    #[arg(long = "rr", overrides_with = "no_rr")]
-    pub rr: bool,
-    /// Russian roulette off: every path runs to --max-depth unless it escapes.
-    #[arg(long = "no-rr", overrides_with = "rr")]
-    pub no_rr: bool,
-    /// Jittered (stratified) pixel samples; every sample count must then be a square.
-    #[arg(long)]
-    pub jitter: bool,
-    /// Lens radius of the thin-lens camera (0: pinhole).
-    #[arg(long, default_value = "0", value_parser = parse_finite)]
-    pub aperture: f32,
-    /// Distance of the plane in focus (default: about that of the Cornell box's glass sphere).
-    #[arg(long, default_value = "220", value_parser = parse_finite)]
-    pub focus: f32,
-    #[command(flatten)]
-    pub output: Output,
+fn main() -> ExitCode {
+    let args = lesson::parse::<Args>();
+    lesson::run(|| {
+        let start = Instant::now();
+        // ANCHOR: setup
+        // At most 11 rungs, 3 strategies, the reference and two f64 accumulators.
+        let threads = lesson::budget(args.width, args.height, args.threads, 20)?;
+        let size = (args.width, args.height);
+        let lens = (args.lens.aperture, args.lens.focus);
+        let (scene, camera) = scene_and_camera(args.scene, size, lens)?;
+        let study = args.study.study(args.path.settings(), threads)?;
+        // ANCHOR_END: setup
+        let renders = render(&scene, &camera, &study, &args.output)?;
+        let seconds = start.elapsed().as_secs_f64();
+        lesson::print(&numbers(args.scene, &study, &renders));
+        lesson::print(&format!("rendered in {seconds:.1} s\n"));
+        let out = &args.output;
+        lesson::wrote(&out.file("10_reference.png"));
+        out.diagram("10_convergence.png", &ladder_figure(&renders.ladder)?)?;
+        let pfm = out.file("10_reference.pfm");
+        save_pfm(&pfm, &renders.reference)?;
+        lesson::wrote(&pfm);
+        Ok(())
+    })
+}
+
+// ANCHOR: render
+/// The lesson's loop: the `study` rendered pass by pass, each pass adding to every
+/// pixel more samples of the estimator, `radiance` along a ray through the pixel
+/// (`Accumulator::render_pass`). Each image is written to `out` the moment it is
+/// finished (Ctrl-C keeps them), the reference after every pass: watch it sharpen.
+pub fn render(scene: &Scene, camera: &Camera, study: &Study, out: &Output) -> Result<Renders> {
+    let bar = ProgressBar::new(study.samples());
+    let top = study.ladder.last().copied().unwrap_or(0);
+    let sampling = study.settings.sampling.flag();
+    let mut reference_spp = 0;
+    lesson::stop_on_ctrl_c();
+    let renders = study.render(scene, camera, |part, pass| {
+        bar.inc(u64::from(pass.added));
+        let (image, spp) = (&pass.image, pass.samples);
+        match part {
+            Part::Ladder if spp == top => {
+                out.image(&format!("10_{spp}spp.png"), image)?;
+                out.image(&format!("10_{sampling}.png"), image)?
+            }
+            Part::Ladder => out.image(&format!("10_{spp}spp.png"), image)?,
+            Part::Strategy(s) => out.image(&format!("10_{}.png", s.flag()), image)?,
+            Part::Reference => {
+                image.save_png(&out.file("10_reference.png"))?;
+                reference_spp = spp;
+            }
+        }
+        lesson::check_interrupt()
+    });
+    bar.finish_and_clear();
+    renders.inspect_err(|_| {
+        if reference_spp > 0 && reference_spp < study.reference_spp {
+            eprintln!("10_reference.png is partial: {reference_spp} samples per pixel");
+        }
+    })
+}
+// ANCHOR_END: render
+
+/// The scene `name` at `width` x `height` pixels, and its camera: a thin lens of
+/// radius `aperture` focused at distance `focus`, or the pinhole if `aperture` is 0.
+pub fn scene_and_camera(
+    name: SceneName,
+    (width, height): (u32, u32),
+    (aperture, focus): (f32, f32),
+) -> Result<(Scene, Camera)> {
+    let (scene, pinhole) = name.build(width, height)?;
+    let camera = match aperture {
+        0.0 => pinhole,
+        aperture => pinhole.with_lens(aperture, focus)?,
+    };
+    Ok((scene, camera))
 }
 
 // ANCHOR: numbers
@@ -117,81 +144,29 @@ pub fn numbers(scene: SceneName, study: &Study, renders: &Renders) -> String {
 }
 // ANCHOR_END: numbers
 
-// ANCHOR: setup
-/// What the flags ask for: the scene, its camera (a thin lens when `--aperture` is
-/// not 0) and the study to run on them.
-pub fn setup(args: &Args) -> Result<(Scene, Camera, Study)> {
-    // At most 11 rungs, 3 strategies, the reference and two f64 accumulators.
-    let threads = lesson::budget(args.width, args.height, args.threads, 20)?;
-    let (scene, pinhole) = args.scene.build(args.width, args.height)?;
-    positive("focus", args.focus)?; // checked even when no lens uses it
-    let camera = match args.aperture {
-        0.0 => pinhole,
-        aperture => pinhole.with_lens(aperture, args.focus)?,
-    };
-    let study = Study {
-        settings: Settings {
-            sampling: args.sampling,
-            max_depth: Some(args.max_depth),
-            russian_roulette: !args.no_rr,
-            ..Settings::default()
-        },
-        ladder: ladder(args.spp)?,
-        passes: Passes {
-            pixels: PixelSampling::jittered(args.jitter),
-            seed: args.seed,
-            threads,
-        },
-        reference_spp: args.reference_spp,
-    };
-    Ok((scene, camera, study))
-}
-// ANCHOR_END: setup
-
-fn main() -> ExitCode {
-    let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let start = Instant::now();
-        // ANCHOR: render
-        let (scene, camera, study) = setup(&args)?;
-        let bar = ProgressBar::new(study.samples());
-        let (out, top) = (&args.output, study.ladder.last().copied().unwrap_or(0));
-        let mut reference_spp = 0;
-        lesson::stop_on_ctrl_c();
-        // Each image is written the moment it is finished (Ctrl-C keeps them), the
-        // reference after every pass: watch it sharpen.
-        let renders = study.render(&scene, &camera, |part, pass| {
-            bar.inc(u64::from(pass.added));
-            let (image, spp) = (&pass.image, pass.samples);
-            match part {
-                Part::Ladder if spp == top => {
-                    out.image(&format!("10_{spp}spp.png"), image)?;
-                    out.image(&format!("10_{}.png", args.sampling.flag()), image)?
-                }
-                Part::Ladder => out.image(&format!("10_{spp}spp.png"), image)?,
-                Part::Strategy(s) => out.image(&format!("10_{}.png", s.flag()), image)?,
-                Part::Reference => {
-                    image.save_png(&out.file("10_reference.png"))?;
-                    reference_spp = spp;
-                }
-            }
-            lesson::check_interrupt()
-        });
-        // ANCHOR_END: render
-        bar.finish_and_clear();
-        let renders = renders.inspect_err(|_| {
-            if reference_spp > 0 && reference_spp < args.reference_spp {
-                eprintln!("10_reference.png is partial: {reference_spp} samples per pixel");
-            }
-        })?;
-        let seconds = start.elapsed().as_secs_f64();
-        lesson::print(&numbers(args.scene, &study, &renders));
-        lesson::print(&format!("rendered in {seconds:.1} s\n"));
-        lesson::wrote(&out.file("10_reference.png"));
-        out.diagram("10_convergence.png", &ladder_figure(&renders.ladder)?)?;
-        let pfm = out.file("10_reference.pfm");
-        save_pfm(&pfm, &renders.reference)?;
-        lesson::wrote(&pfm);
-        Ok(())
-    })
+/// The lesson's parameters; every one has a default that reproduces the book.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 10: Monte Carlo path tracing, four sampling strategies")]
+#[command(allow_negative_numbers = true)]
+pub struct Args {
+    /// The scene.
+    #[arg(long, value_enum, default_value_t = SceneName::Cornell)]
+    pub scene: SceneName,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 160)]
+    pub width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 120)]
+    pub height: u32,
+    /// Worker threads (default: every core).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    #[command(flatten)]
+    pub path: PathFlags,
+    #[command(flatten)]
+    pub study: StudyFlags,
+    #[command(flatten)]
+    pub lens: LensFlags,
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -16,18 +16,16 @@
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
 
 use clap::Parser;
 use render_lessons::Result;
 use render_lessons::bvh::BvhScene;
-use render_lessons::course::chart::{Chart, Scale};
 use render_lessons::course::lesson::{self, Output};
-use render_lessons::course::measure::lessons::{best_ms, lessons_quoted};
+use render_lessons::course::measure::lessons::{Sweep, best_ms, lessons_measured};
+use render_lessons::course::measure::runner::run_charts;
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
-use render_lessons::course::report::{Run, Table, Timings, num};
+use render_lessons::course::report::{Table, Timings, num};
 use render_lessons::error::Error;
-use render_lessons::files::write_atomically;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::progress;
 use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, reference};
@@ -38,90 +36,26 @@ use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows};
 use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
 use render_lessons::spawn::Offset;
 
-/// The lesson's parameters.
-#[derive(Parser, Debug)]
-#[command(about = "Lesson 11: speed against accuracy, charted on this machine")]
-pub struct Args {
-    /// Measure longer, for charts good enough to publish (several minutes).
-    #[arg(long)]
-    pub full: bool,
-    /// Measure only the charts whose name starts with this (e.g. 11_5); each chart is
-    /// written to --out as SVG, CSV and Markdown. An empty name is refused: it would
-    /// match every chart.
-    #[arg(long, value_parser = clap::builder::NonEmptyStringValueParser::new())]
-    pub only: Option<String>,
-    /// Instead of the charts: time the BVH on this mesh (a Wavefront OBJ file) in
-    /// lesson 09's scene: read it, build the tree, ray cast 480 x 270 through it.
-    #[arg(long, conflicts_with_all = ["full", "only"])]
-    pub mesh: Option<PathBuf>,
-    /// With --mesh: split every triangle in four, this many times (the teapot: 4
-    /// makes a million triangles).
-    #[arg(long)]
-    pub subdivide: Option<u32>,
-    #[command(flatten)]
-    pub output: Output,
-}
-
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        if let Some(path) = &args.mesh {
-            let (text, image) = big_mesh(path, args.subdivide.unwrap_or(0))?;
+    lesson::run(|| match (&args.mesh, args.subdivide) {
+        (Some(path), subdivide) => {
+            let (text, image) = big_mesh(path, subdivide.unwrap_or(0))?;
             lesson::print(&text);
-            return args.output.image("11_mesh.png", &image);
+            args.output.image("11_mesh.png", &image)
         }
-        if args.subdivide.is_some() {
-            return Err(Error::Invalid {
-                param: "subdivide",
-                reason: "needs --mesh: it splits that mesh's triangles",
-            });
+        (None, Some(_)) => Err(Error::Invalid {
+            param: "subdivide",
+            reason: "needs --mesh: it splits that mesh's triangles",
+        }),
+        (None, None) => {
+            let quality = Quality::full_if(args.full);
+            let charts = [ALL, &[("11_8_lessons", lessons as Measure)]].concat();
+            lesson::stop_on_ctrl_c(); // Ctrl-C keeps the charts already written
+            let only = args.only.as_deref();
+            lesson::print(&run_charts(&charts, only, quality, &args.output)?);
+            Ok(())
         }
-        let quality = if args.full {
-            Quality::Full
-        } else {
-            Quality::Quick
-        };
-        let mut all: Vec<(&str, Measure)> = ALL.to_vec();
-        all.push(("11_8_lessons", lessons));
-        let chosen: Vec<_> = all
-            .iter()
-            .filter(|(stem, _)| {
-                args.only
-                    .as_ref()
-                    .is_none_or(|o| stem.starts_with(o.as_str()))
-            })
-            .collect();
-        if chosen.is_empty() {
-            return Err(Error::NoMatch {
-                param: "--only",
-                value: args.only.clone().unwrap_or_default(),
-                choices: all.iter().map(|(stem, _)| stem.to_string()).collect(),
-            });
-        }
-        let mut summary = String::new();
-        lesson::stop_on_ctrl_c(); // Ctrl-C keeps the charts already written
-        for (stem, measure) in chosen {
-            lesson::check_interrupt()?;
-            let start = Instant::now();
-            let run = Run::here(quality.name());
-            let measured = measure(quality)?;
-            for path in measured.chart.save(&args.output.out, stem)? {
-                lesson::wrote(&path);
-            }
-            let md = args.output.file(&format!("{stem}.md"));
-            write_atomically(&md, measured.quoted.markdown(stem, &run).as_bytes())?;
-            lesson::wrote(&md);
-            summary.push_str(&format!(
-                "{} ({:.1} s)\n",
-                measured.chart.title,
-                start.elapsed().as_secs_f64()
-            ));
-            for finding in &measured.findings {
-                summary.push_str(&format!("  - {finding}\n"));
-            }
-        }
-        lesson::print(&summary);
-        Ok(())
     })
 }
 
@@ -139,8 +73,9 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     let (traced_ms, traced) = best_ms(repeats, || {
         render(&camera, None, |r| lit(&scene, r, Offset::Scaled))
     })?;
-    let raster = |segments: u32, shadows| -> Result<(f64, f64)> {
+    let raster = |segments: u32, map: Option<u32>| -> Result<(f64, f64)> {
         let instances = tessellate(&scene, segments)?;
+        let shadows = map.map(|size| lesson08_shadows(size, 1.0));
         let settings = floor_settings(&scene).with(Shading::PerPixel, shadows);
         let (ms, image) = best_ms(repeats, || {
             rasterize(&instances, &camera, &light, &settings, None)
@@ -148,58 +83,15 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
         let a = agreement(&image, &traced, &mask, TOLERANCE);
         Ok((ms, 100.0 - a.percent_agreeing()))
     };
-    let map = |size: u32| Some(lesson08_shadows(size, 1.0));
-    let segments = [8, 16, 32, 64, 128]
-        .into_iter()
-        .map(|n| raster(n, map(1024)))
-        .collect::<Result<Vec<_>>>()?;
-    let maps = [128, 256, 512, 1024, 2048, 4096]
-        .into_iter()
-        .map(|size| raster(64, map(size)))
-        .collect::<Result<Vec<_>>>()?;
-    let no_shadows = raster(64, None)?;
-    let chart = Chart::new(
-        "Lessons 08 and 09 on lesson 08's scene, 480 x 270, every core",
-        ("time per frame (ms)", Scale::Log),
-        (
-            "pixels differing from the ray-traced image (%)",
-            Scale::Linear,
-        ),
-    )
-    .with(
-        "rasterized + 1024^2 shadow map, spheres of 8 to 128 segments",
-        segments.clone(),
-    )
-    .with(
-        "rasterized, 64 segments, shadow map of 128^2 to 4096^2",
-        maps.clone(),
-    )
-    .with("rasterized, no shadows", vec![no_shadows])
-    .with(
-        "ray cast with shadow rays (the reference)",
-        vec![(traced_ms, 0.0)],
-    );
-    let findings = vec![
-        format!(
-            "ray cast with shadow rays: {traced_ms:.0} ms; rasterized with 64 segments and a \
-             1024^2 map: {:.0} ms, {:.2}% of pixels differ",
-            segments[3].0, segments[3].1
-        ),
-        format!(
-            "no shadows: {:.2}% differ; a 128^2 map: {:.2}%, a 4096^2 map: {:.2}% ({:.0} ms)",
-            no_shadows.1, maps[0].1, maps[5].1, maps[5].0
-        ),
-        "lesson 10 is not on this chart: it solves the whole rendering equation (indirect light, \
-         area lights), so against this direct-lighting image its difference would be the light \
-         the others leave out; chart 6 is its time against error"
-            .to_string(),
-    ];
-    let quoted = lessons_quoted(traced_ms, &segments, &maps, no_shadows);
-    Ok(Measured {
-        chart,
-        findings,
-        quoted,
-    })
+    let (map, n) = (1024, 64); // lesson 09's defaults
+    let segments = Sweep::measure(map, &[8, 16, 32, 64, 128], |s| raster(s, Some(map)))?;
+    let sizes = [128, 256, 512, 1024, 2048, 4096];
+    let maps = Sweep::measure(n, &sizes, |size| raster(n, Some(size)))?;
+    let no_shadows = raster(n, None)?;
+    let size = (camera.film().width(), camera.film().height());
+    Ok(lessons_measured(
+        size, traced_ms, &segments, &maps, no_shadows,
+    ))
 }
 // ANCHOR_END: lessons
 
@@ -241,3 +133,27 @@ pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)>
     Ok((format!("{sizes}\n{}{rate}\n", t.table()), image))
 }
 // ANCHOR_END: big_mesh
+
+/// The lesson's parameters.
+#[derive(Parser, Debug)]
+#[command(about = "Lesson 11: speed against accuracy, charted on this machine")]
+pub struct Args {
+    /// Measure longer, for charts good enough to publish (several minutes).
+    #[arg(long)]
+    pub full: bool,
+    /// Measure only the charts whose name starts with this (e.g. 11_5); each chart is
+    /// written to --out as SVG, CSV and Markdown. An empty name is refused: it would
+    /// match every chart.
+    #[arg(long, value_parser = clap::builder::NonEmptyStringValueParser::new())]
+    pub only: Option<String>,
+    /// Instead of the charts: time the BVH on this mesh (a Wavefront OBJ file) in
+    /// lesson 09's scene: read it, build the tree, ray cast 480 x 270 through it.
+    #[arg(long, conflicts_with_all = ["full", "only"])]
+    pub mesh: Option<PathBuf>,
+    /// With --mesh: split every triangle in four, this many times (the teapot: 4
+    /// makes a million triangles).
+    #[arg(long)]
+    pub subdivide: Option<u32>,
+    #[command(flatten)]
+    pub output: Output,
+}

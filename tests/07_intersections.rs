@@ -13,6 +13,7 @@ mod lesson;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
+use render_lessons::course::diagram::cross_section;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 
@@ -749,6 +750,53 @@ fn numbers() {
     insta::assert_snapshot!("numbers", lesson::numbers(&cases));
 }
 
+/// The lesson's loop: the naive and the robust method agree on the five rays of the
+/// lesson, and part on the two hard rays (S1: the textbook roots of a sphere 10^4
+/// radii away merge into one; S9: 22 % off near the paraboloid's axis).
+#[test]
+fn naive_and_robust() {
+    let (cases, hard) = (lesson::cases().unwrap(), lesson::hard_cases().unwrap());
+    let table = lesson::naive_and_robust(cases.iter().chain(&hard));
+    insta::assert_snapshot!("naive_and_robust", table);
+    let close = |a: &[f32], b: &[f32]| {
+        a.len() == b.len()
+            && a.iter()
+                .zip(b)
+                .all(|(x, y)| (x - y).abs() <= 1e-5 * y.abs())
+    };
+    for case in &cases {
+        let [(_, naive), (_, robust)] = lesson::methods(&case.shape, &case.ray);
+        assert!(
+            close(&naive, &robust),
+            "{}: {naive:?} {robust:?}",
+            case.name
+        );
+        assert!(!robust.is_empty(), "{}", case.name);
+    }
+    for case in &hard {
+        let [(_, naive), (_, robust)] = lesson::methods(&case.shape, &case.ray);
+        assert!(
+            !close(&naive, &robust),
+            "{}: {naive:?} {robust:?}",
+            case.name
+        );
+        // The robust nearest root ahead is the exact one, to f32's rounding.
+        let exact = match case.name {
+            "sphere 10^4 away" => {
+                let aim = case.ray.direction().as_dvec3();
+                (1e4 * aim.z.abs() - (1.0 - (1e4 * aim.x).powi(2)).sqrt()) as f32
+            }
+            _ => 4.869708,
+        };
+        let ahead = robust.iter().copied().find(|&t| t > 0.0).unwrap();
+        assert!(
+            (ahead - exact).abs() <= 1e-6 * exact,
+            "{}: {robust:?}",
+            case.name
+        );
+    }
+}
+
 #[test]
 fn lesson_crossings_lie_on_their_surfaces() {
     // Each crossing the lesson lists, put back into r(t), is on the surface: checked
@@ -807,7 +855,9 @@ fn lesson_crossings_are_each_shapes_own_roots() {
 #[test]
 fn figures_draw() {
     for case in lesson::cases().unwrap() {
-        let rgba = lesson::figure(&case).unwrap().rgba();
+        let rgba = cross_section(case.name, &case.shape, &case.ray)
+            .unwrap()
+            .rgba();
         assert!(common::blue_pixels(&rgba) > 200, "{}: the ray", case.name);
         assert!(
             common::red_pixels(&rgba) > 200,

@@ -627,7 +627,8 @@ fn numbers() {
         let found = lesson.agreements.iter().find(|(l, _, _)| *l == label);
         found.map(|&(_, _, a)| a).unwrap()
     };
-    let image = |name: &str| &lesson.images.iter().find(|(n, _)| *n == name).unwrap().1;
+    let image =
+        |name: &str| &lesson.images[lesson::IMAGES.iter().position(|n| *n == name).unwrap()];
     // The target: the rasterized image and the ray-cast one agree on at least
     // 99% of the pixels away from silhouettes, for the tessellated scene and the mesh.
     let per_pixel = by_label("per-pixel shading");

@@ -26,8 +26,8 @@ use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::pathtrace::{
-    Accumulator, PixelSampling, RecordedPath, Rng, Sampling, Settings, SphereSampling, radiance,
-    radiance_observed, record_path,
+    Accumulator, At, Path, PixelSampling, Rng, Sampling, Settings, SphereSampling, radiance,
+    record_path,
 };
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene};
@@ -54,9 +54,19 @@ fn small_args(extra: &[&str]) -> lesson::Args {
     lesson::Args::parse_from(argv)
 }
 
+/// What `main` makes of the flags: the scene, its camera and the study.
+fn setup(args: &lesson::Args) -> render_lessons::Result<(Scene, Camera, Study)> {
+    let threads =
+        render_lessons::course::lesson::budget(args.width, args.height, args.threads, 20)?;
+    let lens = (args.lens.aperture, args.lens.focus);
+    let (scene, camera) = lesson::scene_and_camera(args.scene, (args.width, args.height), lens)?;
+    let study = args.study.study(args.path.settings(), threads)?;
+    Ok((scene, camera, study))
+}
+
 /// What `main` does with the flags: the scene, the study, and its images.
 fn render(args: &lesson::Args) -> render_lessons::Result<(Study, Renders)> {
-    let (scene, camera, study) = lesson::setup(args)?;
+    let (scene, camera, study) = setup(args)?;
     let mut samples = 0;
     let renders = study.render(&scene, &camera, |_, pass| {
         samples += u64::from(pass.added);
@@ -90,6 +100,8 @@ fn default_run_numbers() {
 
 #[test]
 fn the_lesson_refuses_bad_flags_naming_them() {
+    // Refused when parsed (clap names the flag) or when the lesson starts (the error
+    // names the parameter), never later.
     let cases: [(&[&str], &str); 12] = [
         (&["--spp", "0"], "spp"),
         (&["--spp", "4294967295"], "spp"),
@@ -108,12 +120,21 @@ fn the_lesson_refuses_bad_flags_naming_them() {
         ),
     ];
     for (extra, name) in cases {
-        let err = render(&small_args(extra)).err().unwrap();
-        assert_eq!(err.param(), name, "{extra:?}: {err}");
+        let argv = [&["10_path_tracing"], extra].concat();
+        match lesson::Args::try_parse_from(argv) {
+            Err(e) => assert!(
+                e.to_string().contains(&format!("--{name}")),
+                "{extra:?}: {e}"
+            ),
+            Ok(_) => {
+                let err = render(&small_args(extra)).err().unwrap();
+                assert_eq!(err.param(), name, "{extra:?}: {err}");
+            }
+        }
     }
     assert!(lesson::Args::try_parse_from(["x", "--sampling", "best"]).is_err());
     let nee = lesson::Args::try_parse_from(["x", "--sampling", "nee"]).unwrap();
-    assert_eq!(nee.sampling, Sampling::NextEvent);
+    assert_eq!(nee.path.sampling, Sampling::NextEvent);
 }
 
 #[test]
@@ -121,7 +142,7 @@ fn a_refused_study_renders_nothing_first() {
     // Jittered passes need square sample counts: 8 is refused before the first pass
     // (which would have written 10_1spp.png), not at the rung of 8.
     let args = small_args(&["--jitter", "--spp", "8"]);
-    let (scene, camera, study) = lesson::setup(&args).unwrap();
+    let (scene, camera, study) = setup(&args).unwrap();
     let mut passes = 0;
     let err = study.render(&scene, &camera, |_, _| {
         passes += 1;
@@ -163,10 +184,10 @@ fn a_pass_with_no_finite_sample_is_an_error_not_a_black_image() {
 
 #[test]
 fn rr_flags_the_last_one_wins() {
-    assert!(!small_args(&[]).no_rr);
-    assert!(small_args(&["--no-rr"]).no_rr);
-    assert!(!small_args(&["--no-rr", "--rr"]).no_rr);
-    assert!(small_args(&["--rr", "--no-rr"]).no_rr);
+    assert!(!small_args(&[]).path.no_rr);
+    assert!(small_args(&["--no-rr"]).path.no_rr);
+    assert!(!small_args(&["--no-rr", "--rr"]).path.no_rr);
+    assert!(small_args(&["--rr", "--no-rr"]).path.no_rr);
 }
 
 #[test]
@@ -1109,10 +1130,11 @@ fn bad_input_is_an_error_naming_the_parameter() {
 
 // ---------------------------------------------------------------- figures
 
-/// The path figure's paths are recorded from the estimator itself: a recorded path's
-/// radiance is, bit for bit, the sample `radiance` returns for the same pixel, seed
-/// and settings, the first sample the accumulator adds to that pixel, and recording
-/// leaves the random stream where `radiance` leaves it.
+/// The path figure's paths are recorded from the estimator itself: watching the
+/// estimator's `Path` vertex by vertex (as `record_path` and the variance measurement
+/// do) gives, bit for bit, the sample the plain `radiance` returns for the same
+/// pixel, seed and settings, the first sample the accumulator adds to that pixel,
+/// and leaves the random stream where `radiance` leaves it.
 #[test]
 fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
     let (scene, camera) = cornell(160, 120).unwrap();
@@ -1135,12 +1157,22 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 assert_eq!(path.eye, ray.origin());
                 let mut watched = rng;
                 let expected = radiance(&scene, ray, &mut rng, &s);
-                let mut recorder = RecordedPath::default();
-                let recorded = radiance_observed(&scene, ray, &mut watched, &s, &mut recorder);
+                let vertices: Vec<_> = Path::new(&scene, ray, &mut watched, &s).collect();
+                let observed = vertices
+                    .iter()
+                    .fold(Vec3::ZERO, |sum, v| sum + v.emitted + v.direct);
                 assert_eq!(bits(path.radiance), bits(expected), "pixel ({x}, {y})");
-                assert_eq!(bits(recorded), bits(expected), "pixel ({x}, {y})");
+                assert_eq!(bits(observed), bits(expected), "pixel ({x}, {y})");
                 assert_eq!(watched.next_u32(), rng.next_u32(), "pixel ({x}, {y})");
-                assert_eq!(recorder.vertices, path.vertices);
+                let surfaces = vertices.iter().filter_map(|v| match v.at {
+                    At::Surface { point, object } => Some((point, object, v.light_sample)),
+                    At::Escaped { .. } => None,
+                });
+                let recorded = path
+                    .vertices
+                    .iter()
+                    .map(|v| (v.point, v.object, v.light_sample));
+                assert!(surfaces.eq(recorded), "pixel ({x}, {y})");
                 assert_eq!(bits(first.get(x, y).unwrap()), bits(expected));
                 assert!(!path.vertices.is_empty() || path.escaped.is_some());
                 compared += 1;
@@ -1270,17 +1302,22 @@ fn monte_carlo_args(extra: &[&str]) -> monte_carlo::Args {
     monte_carlo::Args::parse_from(argv)
 }
 
+/// The example's study at the flags' values.
+fn monte_carlo_rows(args: &monte_carlo::Args) -> Vec<monte_carlo::Row> {
+    monte_carlo::study(args.max_power, args.runs, args.seed)
+}
+
 #[test]
 fn monte_carlo_numbers() {
     let args = monte_carlo_args(&[]);
-    let rows = monte_carlo::study(&args).unwrap();
-    insta::assert_snapshot!("monte_carlo", monte_carlo::numbers(&args, &rows));
+    let rows = monte_carlo_rows(&args);
+    insta::assert_snapshot!("monte_carlo", monte_carlo::numbers(args.runs, &rows));
 }
 
 #[test]
 fn monte_carlo_rmse_falls_as_one_over_sqrt_n() {
     let args = monte_carlo_args(&[]);
-    let rows = monte_carlo::study(&args).unwrap();
+    let rows = monte_carlo_rows(&args);
     assert_eq!(rows.len(), 17);
     let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.n as f64, r.rmse)).collect();
     let slope = render_lessons::course::chart::log_log_slope(&points).unwrap();
@@ -1296,14 +1333,10 @@ fn monte_carlo_rmse_falls_as_one_over_sqrt_n() {
 
 #[test]
 fn monte_carlo_refuses_bad_flags() {
-    for (flags, param) in [
-        (["--runs", "0"], "runs"),
-        (["--runs", "4097"], "runs"),
-        (["--max-power", "25"], "max power"),
-    ] {
-        let args = monte_carlo_args(&flags);
-        match monte_carlo::study(&args) {
-            Err(e) => assert_eq!(e.param(), param, "{flags:?}"),
+    for flags in [["--runs", "0"], ["--runs", "4097"], ["--max-power", "25"]] {
+        let argv = [&["10_monte_carlo"], &flags[..]].concat();
+        match monte_carlo::Args::try_parse_from(argv) {
+            Err(e) => assert!(e.to_string().contains(flags[0]), "{flags:?}: {e}"),
             Ok(_) => panic!("{flags:?} accepted"),
         }
     }
@@ -1312,8 +1345,8 @@ fn monte_carlo_refuses_bad_flags() {
 #[test]
 fn the_monte_carlo_chart_is_the_committed_figure() {
     let args = monte_carlo_args(&[]);
-    let rows = monte_carlo::study(&args).unwrap();
-    let svg = monte_carlo::chart(&args, &rows).svg().unwrap();
+    let rows = monte_carlo_rows(&args);
+    let svg = monte_carlo::chart(args.runs, &rows).svg().unwrap();
     let committed = std::fs::read_to_string("chapters/figures/10_monte_carlo.svg").unwrap();
     assert!(
         svg == committed,
@@ -1333,15 +1366,15 @@ fn each_step_figure_is_what_its_command_writes() {
         let (study, renders) = render(&args).unwrap();
         assert_eq!(
             study.settings,
-            step.settings(args.sampling),
+            step.settings(args.path.sampling),
             "{}",
             step.file
         );
         assert_eq!(study.ladder.last(), Some(&step.spp), "{}", step.file);
         assert_eq!(args.scene, step.scene, "{}", step.file);
-        assert_eq!(args.aperture, step.aperture, "{}", step.file);
+        assert_eq!(args.lens.aperture, step.aperture, "{}", step.file);
         if step.shown.len() == 1 {
-            assert_eq!(step.shown[0], args.sampling, "{}", step.file);
+            assert_eq!(step.shown[0], args.path.sampling, "{}", step.file);
         }
         let written: Vec<&render_lessons::framebuffer::Framebuffer> = step
             .shown

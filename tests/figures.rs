@@ -5,7 +5,7 @@
 
 use clap::Parser;
 use render_lessons::Result;
-use render_lessons::course::diagram::Diagram;
+use render_lessons::course::diagram::{Diagram, cross_section};
 use render_lessons::framebuffer::Framebuffer;
 
 #[path = "../book/figures/src/lesson09.rs"]
@@ -62,7 +62,8 @@ fn lesson_figures() -> Result<Vec<(String, Diagram)>> {
     let [at_origin, _] = l06::cameras(a.screen_distance, frame)?;
     all.push(("06_pinhole_rays.png".into(), l06::fan_figure(&at_origin)?));
     for case in &l07::cases()? {
-        all.push((format!("07_{}.png", case.name), l07::figure(case)?));
+        let figure = cross_section(case.name, &case.shape, &case.ray)?;
+        all.push((format!("07_{}.png", case.name), figure));
     }
     // Lesson 10's ladder at its default size (160 x 120, up to 64 spp), blank: the
     // layout and captions are what is checked, and they do not depend on the pixels.

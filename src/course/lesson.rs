@@ -243,23 +243,6 @@ pub fn flag(flag: &'static str) -> impl Fn(crate::error::Error) -> crate::error:
     }
 }
 
-/// The largest angle a lesson takes, in degrees: a hundred turns. Beyond it f32
-/// degrees are too coarse to mean anything (at 1e7 two neighbouring values lie a
-/// whole degree apart).
-pub const MAX_DEGREES: f32 = 36_000.0;
-
-/// `degrees` if it lies within ±[`MAX_DEGREES`]; an error naming `flag` otherwise.
-pub fn angle(flag: &'static str, degrees: f32) -> Result<f32> {
-    if degrees.abs() <= MAX_DEGREES {
-        Ok(degrees)
-    } else {
-        Err(crate::error::Error::Invalid {
-            param: flag,
-            reason: "must lie within ±36000 degrees (a hundred turns)",
-        })
-    }
-}
-
 /// `value` if it lies in 1..=`max` pixels; otherwise an error naming the flag
 /// (e.g. `--view-width`) that asked for it.
 pub fn pixels(flag: &'static str, value: u32, max: u32) -> Result<u32> {
@@ -297,31 +280,4 @@ pub fn extent(flags: &'static str, min: f32, max: f32) -> Result<(f32, f32)> {
 /// Prints where a file was written.
 pub fn wrote(path: &Path) {
     print(&format!("wrote {}\n", path.display()));
-}
-
-/// Parses `x,y,z` (as typed after a flag such as `--direction 0,0,-1`) into a vector.
-pub fn parse_vec3(s: &str) -> std::result::Result<glam::Vec3, String> {
-    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
-    let [x, y, z] = parts.as_slice() else {
-        return Err(format!("expected three numbers x,y,z, got '{s}'"));
-    };
-    let mut v = [0.0f32; 3];
-    for (slot, text) in v.iter_mut().zip([x, y, z]) {
-        *slot = text
-            .parse::<f32>()
-            .map_err(|_| format!("'{text}' is not a number"))?;
-        if !slot.is_finite() {
-            return Err(format!("'{text}' is not a finite number"));
-        }
-    }
-    Ok(glam::Vec3::from_array(v))
-}
-
-/// Parses a finite number (rejects `nan` and `inf`, which Rust's parser accepts).
-pub fn parse_finite(s: &str) -> std::result::Result<f32, String> {
-    match s.trim().parse::<f32>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(format!("'{s}' is not a finite number")),
-        Err(_) => Err(format!("'{s}' is not a number")),
-    }
 }

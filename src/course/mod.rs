@@ -6,9 +6,13 @@
 //! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;
 //! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
+//! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
+//! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
 //! - [`mine`]: `--mine`, a lesson's picture drawn with the student's exercise code;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
+//! - [`path_flags`]: lesson 10's flags in groups, each making a core value;
+//! - [`parsers`]: the value parsers that check a flag's text (finite, in range);
 //! - [`measure`]: lesson 11's measurements, one file per chart;
 //! - [`exercises`]: the coding exercises and the harness that checks them.
 
@@ -16,8 +20,12 @@ pub mod chart;
 pub mod diagram;
 pub mod exercises;
 pub mod flags;
+pub mod image_tables;
 pub mod ladder_figure;
 pub mod lesson;
 pub mod measure;
 pub mod mine;
+pub mod parsers;
+pub mod path_flags;
 pub mod report;
+pub mod triangle_table;

@@ -3,9 +3,10 @@
 //! L_o(p, w_o) = L_e(p, w_o) + integral over the hemisphere of f_r L_i cos theta_i dw_i.
 //!
 //! One sample of the integral follows one direction; L_i in that direction is again
-//! L_o of the next surface, so the estimate is a path: a loop that keeps a throughput
-//! beta (the product of f_r cos / pdf so far) and adds beta L_e at every vertex where
-//! light is found. Four ways to find it, from worst to best in most scenes:
+//! L_o of the next surface, so the estimate is a path, followed vertex by vertex
+//! ([`Path`]), that keeps a throughput beta (the product of f_r cos / pdf so far);
+//! [`radiance`] adds up beta L_e at every vertex where light is found. Four ways to
+//! find it, from worst to best in most scenes:
 //!
 //! - `UniformHemisphere`: directions with density 1 / (2 pi);
 //! - `Cosine`: density cos / pi, which cancels the cosine of the integrand;
@@ -26,7 +27,6 @@ use crate::material::Material;
 use crate::pathtrace::light;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::next_event::{Start, direct_light};
-use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
@@ -49,77 +49,163 @@ enum Previous {
 }
 
 // ANCHOR: radiance
-/// One sample of the radiance arriving along `ray`: a path, traced iteratively.
+/// One sample of the radiance arriving along `ray`: the light found along a path,
+/// vertex by vertex, in the order the path finds it.
 pub fn radiance(scene: &impl Intersect, ray: Ray, rng: &mut Rng, settings: &Settings) -> Vec3 {
-    radiance_observed(scene, ray, rng, settings, &mut ())
-}
-
-/// [`radiance`], telling `observer` every vertex of the path as it is traced. The
-/// observer only watches: the random numbers and the sample are the same.
-pub fn radiance_observed(
-    scene: &impl Intersect,
-    ray: Ray,
-    rng: &mut Rng,
-    settings: &Settings,
-    observer: &mut impl PathObserver,
-) -> Vec3 {
     let mut sum = Vec3::ZERO;
-    let mut beta = Vec3::ONE;
-    let (mut ray, mut range) = (ray, Interval::AHEAD);
-    let mut previous = Previous::Full;
-    let mut bounce = 0u32;
-    // A diffuse vertex, then only specular ones since: light found now is a caustic
-    // (told to the observer only; the sample is the same).
-    let (mut diffuse_seen, mut caustic) = (false, false);
-    loop {
-        let Some(found) = scene.closest(&ray, range) else {
-            sum += beta * scene.background();
-            observer.light(beta * scene.background(), caustic);
-            observer.escaped(ray.direction());
-            break;
-        };
-        let (hit, index) = (found.hit, found.object);
-        observer.vertex(hit.point, index);
-        let object = &scene.objects()[index];
-        if object.is_emissive() {
-            let weight = emission_weight(scene, index, &hit, previous, settings);
-            let found = beta * object.emission_seen(hit.front_face) * weight;
-            sum += found;
-            observer.light(found, caustic);
-        }
-        // A hit so far away that its point overflowed (an infinite plane met at a
-        // grazing angle) gives no finite place to continue from: the path ends.
-        if settings.max_depth.is_some_and(|m| bounce >= m) || !hit.point.is_finite() {
-            break;
-        }
-        let material = object.material;
-        let Some(next) = scatter(scene, material, &ray, &hit, rng, settings, observer) else {
-            break;
-        };
-        sum += beta * next.direct;
-        observer.light(beta * next.direct, false);
-        (diffuse_seen, caustic) = if next.specular {
-            (diffuse_seen, diffuse_seen)
-        } else {
-            (true, false)
-        };
-        beta *= next.weight;
-        bounce += 1;
-        if !survives_roulette(&mut beta, bounce, rng, settings) {
-            break;
-        }
-        ray = Ray::from_checked(next.start.point, next.direction);
-        range.min = next.start.t_min;
-        previous = next.previous;
+    for vertex in Path::new(scene, ray, rng, settings) {
+        sum += vertex.emitted;
+        sum += vertex.direct;
     }
     sum
 }
 // ANCHOR_END: radiance
 
+// ANCHOR: vertex
+/// One vertex of a path: where the path went, and the light found there (already
+/// multiplied by the throughput beta of the path up to it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// The surface the path met, or the direction in which it left the scene.
+    pub at: At,
+    /// Emission seen there, beta L_e (weighted by MIS), or beta times the background
+    /// once the path has left the scene; 0 where nothing shines.
+    pub emitted: Vec3,
+    /// Light brought there by a light sample (next event estimation), beta f_r L_e
+    /// cos / pdf; 0 without one, and at the vertex where the path ends.
+    pub direct: Vec3,
+    /// That light sample: the point aimed at on a light, and whether it faces the
+    /// vertex and its shadow ray got through.
+    pub light_sample: Option<(Vec3, bool)>,
+}
+
+/// Where a path went.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum At {
+    /// The surface of object `object` (of [`Intersect::objects`]) at `point`.
+    Surface { point: Vec3, object: usize },
+    /// Nothing: the path left the scene along the unit `direction`.
+    Escaped { direction: Vec3 },
+}
+// ANCHOR_END: vertex
+
+/// A path from `ray` on, one [`Vertex`] at a time ([`radiance`] sums their light;
+/// figures and measurements look at the vertices themselves).
+pub struct Path<'a, S> {
+    scene: &'a S,
+    rng: &'a mut Rng,
+    settings: &'a Settings,
+    /// The state after the last vertex, `None` once the path has ended.
+    next: Option<Next>,
+}
+
+/// What a path carries from one vertex to the next.
+#[derive(Clone, Copy, Debug)]
+struct Next {
+    ray: Ray,
+    range: Interval,
+    /// The throughput: the product of f_r cos / pdf so far.
+    beta: Vec3,
+    /// How the emission found by `ray` is weighted.
+    previous: Previous,
+    /// Bounces so far.
+    bounce: u32,
+}
+
+impl<'a, S: Intersect> Path<'a, S> {
+    /// The path that starts with the camera ray `ray`.
+    pub fn new(scene: &'a S, ray: Ray, rng: &'a mut Rng, settings: &'a Settings) -> Self {
+        let next = Next {
+            ray,
+            range: Interval::AHEAD,
+            beta: Vec3::ONE,
+            previous: Previous::Full,
+            bounce: 0,
+        };
+        Path {
+            scene,
+            rng,
+            settings,
+            next: Some(next),
+        }
+    }
+}
+
+// ANCHOR: bounce
+impl<S: Intersect> Iterator for Path<'_, S> {
+    type Item = Vertex;
+
+    /// The next vertex: follow the ray to the closest hit, take the light found
+    /// there, then (unless the path ends) scatter, multiply beta by the bounce's
+    /// factor, play Russian roulette and aim the next ray.
+    fn next(&mut self) -> Option<Vertex> {
+        let (scene, settings) = (self.scene, self.settings);
+        let Next {
+            ray,
+            mut range,
+            mut beta,
+            previous,
+            bounce,
+        } = self.next.take()?;
+        let Some(found) = scene.closest(&ray, range) else {
+            let direction = ray.direction();
+            let light = beta * scene.background();
+            return Some(Vertex::at(At::Escaped { direction }, light));
+        };
+        let (hit, object) = (found.hit, found.object);
+        let point = hit.point;
+        let mut vertex = Vertex::at(At::Surface { point, object }, Vec3::ZERO);
+        let surface = &scene.objects()[object];
+        if surface.is_emissive() {
+            let weight = emission_weight(scene, object, &hit, previous, settings);
+            vertex.emitted = beta * surface.emission_seen(hit.front_face) * weight;
+        }
+        // A hit so far away that its point overflowed (an infinite plane met at a
+        // grazing angle) gives no finite place to continue from: the path ends.
+        if settings.max_depth.is_some_and(|m| bounce >= m) || !hit.point.is_finite() {
+            return Some(vertex);
+        }
+        let material = surface.material;
+        let Some(next) = scatter(scene, material, &ray, &hit, self.rng, settings) else {
+            return Some(vertex);
+        };
+        vertex.direct = beta * next.direct;
+        vertex.light_sample = next.light_sample;
+        beta *= next.weight;
+        let bounce = bounce + 1;
+        if survives_roulette(&mut beta, bounce, self.rng, settings) {
+            range.min = next.start.t_min;
+            self.next = Some(Next {
+                ray: Ray::from_checked(next.start.point, next.direction),
+                range,
+                beta,
+                previous: next.previous,
+                bounce,
+            });
+        }
+        Some(vertex)
+    }
+}
+// ANCHOR_END: bounce
+
+impl Vertex {
+    /// A vertex `at` a place where `emitted` is seen, and no light sample.
+    fn at(at: At, emitted: Vec3) -> Vertex {
+        Vertex {
+            at,
+            emitted,
+            direct: Vec3::ZERO,
+            light_sample: None,
+        }
+    }
+}
+
 /// What happens at one vertex: light found by a light sample, and the next ray.
 struct Bounce {
     /// f_r L_e cos / pdf from next event estimation (0 without it).
     direct: Vec3,
+    /// The light sample behind `direct`: its point, and whether it was seen.
+    light_sample: Option<(Vec3, bool)>,
     /// Where the next ray starts.
     start: Start,
     /// Its unit direction.
@@ -128,8 +214,6 @@ struct Bounce {
     weight: Vec3,
     /// How emission found by the next ray is weighted.
     previous: Previous,
-    /// The bounce was specular (mirror or glass).
-    specular: bool,
 }
 
 // ANCHOR: scatter
@@ -142,21 +226,20 @@ fn scatter(
     hit: &Hit,
     rng: &mut Rng,
     s: &Settings,
-    observer: &mut impl PathObserver,
 ) -> Option<Bounce> {
     let facing = hit.facing();
     match material {
         Material::Diffuse { albedo } => {
             let start = Start::new(hit.point, hit.error, facing, s.offset);
-            let direct = direct_light(scene, start, facing, albedo, rng, s, observer);
+            let sample = direct_light(scene, start, facing, albedo, rng, s);
             let (direction, weight, pdf) = diffuse_bounce(facing, albedo, rng, s);
             Some(Bounce {
-                direct,
+                direct: sample.map_or(Vec3::ZERO, |l| l.light),
+                light_sample: sample.map(|l| (l.point, l.seen)),
                 start,
                 direction,
                 weight,
                 previous: after_diffuse(s.sampling, start.point, pdf),
-                specular: false,
             })
         }
         specular => {
@@ -165,11 +248,11 @@ fn scatter(
             let side = if next.transmitted { -facing } else { facing };
             Some(Bounce {
                 direct: Vec3::ZERO,
+                light_sample: None,
                 start: Start::new(hit.point, hit.error, side, s.offset),
                 direction: next.direction,
                 weight: next.weight,
                 previous: Previous::Full,
-                specular: true,
             })
         }
     }

@@ -5,9 +5,8 @@
 //! - [`rng`]: one deterministic random stream per pixel;
 //! - [`light`]: choosing points on lights (area, cone);
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
-//! - [`estimator`]: the path loop;
-//! - [`observer`]: a hook that sees every vertex of a path, and [`record`], which
-//!   records paths with it for figures;
+//! - [`estimator`]: the path, vertex by vertex, and the sum of its light;
+//! - [`record`]: paths recorded vertex by vertex, for figures;
 //! - [`next_event`]: light samples with shadow rays;
 //! - [`mis`]: the power heuristic that combines light and BRDF samples;
 //! - [`roulette`]: Russian roulette;
@@ -22,7 +21,6 @@ pub mod estimator;
 pub mod light;
 pub mod mis;
 pub mod next_event;
-pub mod observer;
 pub mod pfm;
 pub mod progressive;
 pub mod record;
@@ -31,9 +29,8 @@ pub mod roulette;
 pub mod scenes;
 pub mod settings;
 
-pub use estimator::{radiance, radiance_observed};
+pub use estimator::{At, Path, Vertex, radiance};
 pub use light::SphereSampling;
-pub use observer::PathObserver;
 pub use progressive::{Accumulator, Passes, PixelSampling};
 pub use record::{PathVertex, RecordedPath, record_path};
 pub use rng::Rng;

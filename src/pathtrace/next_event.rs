@@ -7,7 +7,6 @@ use glam::Vec3;
 use crate::material::diffuse_brdf;
 use crate::pathtrace::light;
 use crate::pathtrace::mis::power_heuristic;
-use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
@@ -36,8 +35,20 @@ impl Start {
 }
 
 // ANCHOR: direct_light
+/// One light sample of next event estimation: the point aimed at on a light,
+/// whether it was seen, and the light it brings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct LightSample {
+    pub(super) point: Vec3,
+    /// The point faces the vertex and its shadow ray got through.
+    pub(super) seen: bool,
+    /// f_r L_e cos / pdf (times the MIS weight); 0 unless seen.
+    pub(super) light: Vec3,
+}
+
 /// Next event estimation at a Lambertian vertex: one light chosen uniformly, one
-/// point on it, one shadow ray. Returns f_r L_e cos / pdf (times the MIS weight).
+/// point on it, one shadow ray. `None` when the strategy samples no light, the
+/// scene has none, or no point could be drawn.
 pub(super) fn direct_light(
     scene: &impl Intersect,
     from: Start,
@@ -45,18 +56,15 @@ pub(super) fn direct_light(
     albedo: Vec3,
     rng: &mut Rng,
     s: &Settings,
-    observer: &mut impl PathObserver,
-) -> Vec3 {
+) -> Option<LightSample> {
     if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.emitters().is_empty() {
-        return Vec3::ZERO;
+        return None;
     }
     let count = scene.emitters().len();
     let pick = ((rng.next_f32() * count as f32) as usize).min(count - 1);
     let light = &scene.objects()[scene.emitters()[pick]];
     let u = rng.next_vec2();
-    let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
-        return Vec3::ZERO;
-    };
+    let y = light::sample(&light.shape, from.point, u, s.sphere_lights)?;
     // Behind a lamp there is nothing to see, and no shadow ray to trace.
     let radiance = light.emission_seen(y.normal.dot(from.point - y.point) > 0.0);
     let seen = if radiance == Vec3::ZERO {
@@ -64,16 +72,21 @@ pub(super) fn direct_light(
     } else {
         unoccluded(scene, from, n, &y, s.offset)
     };
-    observer.light_sample(y.point, seen.is_some());
     let Some(cos) = seen else {
-        return Vec3::ZERO;
+        let (point, seen, light) = (y.point, false, Vec3::ZERO);
+        return Some(LightSample { point, seen, light });
     };
     let pdf = y.pdf / count as f32;
     let weight = match s.sampling {
         Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
         _ => 1.0,
     };
-    diffuse_brdf(albedo) * radiance * (cos * weight / pdf)
+    let light = diffuse_brdf(albedo) * radiance * (cos * weight / pdf);
+    Some(LightSample {
+        point: y.point,
+        seen: true,
+        light,
+    })
 }
 // ANCHOR_END: direct_light
 

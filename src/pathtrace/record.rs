@@ -3,8 +3,7 @@
 use glam::{Vec2, Vec3};
 
 use crate::camera::Camera;
-use crate::pathtrace::estimator::radiance_observed;
-use crate::pathtrace::observer::PathObserver;
+use crate::pathtrace::estimator::{At, Path};
 use crate::pathtrace::progressive::{PixelSampling, pixel_ray};
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
@@ -37,30 +36,10 @@ pub struct RecordedPath {
 }
 
 // ANCHOR: recorder
-impl PathObserver for RecordedPath {
-    fn vertex(&mut self, point: Vec3, object: usize) {
-        let light_sample = None;
-        self.vertices.push(PathVertex {
-            point,
-            object,
-            light_sample,
-        });
-    }
-
-    fn light_sample(&mut self, point: Vec3, unoccluded: bool) {
-        if let Some(last) = self.vertices.last_mut() {
-            last.light_sample = Some((point, unoccluded));
-        }
-    }
-
-    fn escaped(&mut self, direction: Vec3) {
-        self.escaped = Some(direction);
-    }
-}
-
 /// The first sample of pixel (`x`, `y`) of a render with independent pixel samples
 /// and streams seeded from `seed` ([`Accumulator`](crate::pathtrace::Accumulator)),
-/// traced by the estimator itself and recorded.
+/// traced by the estimator itself ([`Path`], the vertices that
+/// [`radiance`](crate::pathtrace::radiance) sums) and recorded.
 pub fn record_path(
     scene: &impl Intersect,
     camera: &Camera,
@@ -75,7 +54,19 @@ pub fn record_path(
         eye: ray.origin(),
         ..RecordedPath::default()
     };
-    path.radiance = radiance_observed(scene, ray, &mut rng, settings, &mut path);
+    // The estimator's own path, and its light summed as `radiance` sums it.
+    for vertex in Path::new(scene, ray, &mut rng, settings) {
+        path.radiance += vertex.emitted;
+        path.radiance += vertex.direct;
+        match vertex.at {
+            At::Surface { point, object } => path.vertices.push(PathVertex {
+                point,
+                object,
+                light_sample: vertex.light_sample,
+            }),
+            At::Escaped { direction } => path.escaped = Some(direction),
+        }
+    }
     path
 }
 // ANCHOR_END: recorder

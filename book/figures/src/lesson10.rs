@@ -1,5 +1,5 @@
 //! Lesson 10's book-only figures: two paths the estimator really traced, recorded
-//! through its observer hook, hemisphere samples with their densities, and one small
+//! vertex by vertex, hemisphere samples with their densities, and one small
 //! render per step of the chapter, each what the step's command writes.
 
 use glam::{Vec2, Vec3};
@@ -230,8 +230,8 @@ fn is_diffuse(scene: &Scene, v: &PathVertex) -> bool {
 /// The figure of the Cornell box seen along -z (the x-y plane; the back wall is the
 /// page), with two real paths of the default render: one that bounces between the
 /// diffuse walls, its light sample at the first bounce drawn dashed, and one that
-/// goes through the glass sphere. Both are recorded from `radiance_observed`, the
-/// estimator itself, with next event estimation (MIS draws the same random numbers,
+/// goes through the glass sphere. Both are recorded by `record_path` from the
+/// estimator's own `Path`, with next event estimation (MIS draws the same random numbers,
 /// so its paths take the same turns).
 pub fn path_figure() -> Result<Diagram> {
     let (scene, camera) = scenes::cornell(160, 120)?;

@@ -11,17 +11,19 @@
 //! `canvas.rs` draws shapes over tiny-skia and saves the PNG; `glyphs.rs` sets text
 //! in the font, with halos; `place.rs` and `labels.rs` decide where each label goes;
 //! `axes.rs` draws axes and ticks; `camera_rays.rs` and `film.rs` draw the lessons'
-//! cameras.
+//! cameras; `cross_section.rs` a ray through a shape (lesson 07).
 
 mod axes;
 mod camera_rays;
 mod canvas;
+mod cross_section;
 mod film;
 mod glyphs;
 mod labels;
 mod place;
 
 pub use camera_rays::{CameraRays, View, extent};
+pub use cross_section::cross_section;
 pub use glyphs::FONT_BYTES;
 pub use labels::{Collision, LABEL_SIZE, Label, LabelKind};
 pub use place::{Place, PxBox};

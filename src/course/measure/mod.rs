@@ -16,6 +16,7 @@ pub mod offsets;
 pub mod plain;
 pub mod precision;
 pub mod renderers;
+pub mod runner;
 pub mod scaling;
 pub mod sphere;
 pub mod tax;
@@ -39,6 +40,11 @@ pub enum Quality {
 }
 
 impl Quality {
+    /// `Full` when `full` (the lesson's `--full`), `Quick` otherwise.
+    pub fn full_if(full: bool) -> Quality {
+        if full { Quality::Full } else { Quality::Quick }
+    }
+
     /// `quick` or `full`, by quality.
     pub fn pick<T>(self, quick: T, full: T) -> T {
         match self {
@@ -67,9 +73,9 @@ pub struct Measured {
 /// A measurement of one chart.
 pub type Measure = fn(Quality) -> Result<Measured>;
 
-/// Every chart of the lesson: its file stem and how to measure it, in the order of
-/// the chapter.
-pub const ALL: [(&str, Measure); 8] = [
+/// Every chart of the lesson measured here: its file stem and how to measure it, in
+/// the order of the chapter (chart 8 is measured in the lesson's example itself).
+pub const ALL: &[(&str, Measure)] = &[
     ("11_1_sphere", sphere::measure),
     ("11_2_triangle", triangle::measure),
     ("11_3_offsets", offsets::measure),

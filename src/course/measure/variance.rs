@@ -21,7 +21,7 @@ use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 use crate::material::Material;
 use crate::pathtrace::progressive::pixel_ray;
-use crate::pathtrace::{PathObserver, PixelSampling, Rng, Settings, radiance_observed};
+use crate::pathtrace::{At, Path, PixelSampling, Rng, Settings};
 use crate::render::in_pool;
 use crate::scene::Scene;
 
@@ -142,10 +142,10 @@ pub fn pixel_variance(
         let mut moments = DVec4::ZERO;
         for s in 0..spp {
             let ray = pixel_ray(camera, corner, PixelSampling::Independent, spp, s, &mut rng);
-            let mut caustics = Caustics(Vec3::ZERO);
-            let sample = radiance_observed(scene, ray, &mut rng, settings, &mut caustics);
+            let (sample, caustics) =
+                with_caustics(scene, Path::new(scene, ray, &mut rng, settings));
             let grey = f64::from(sample.element_sum() / 3.0);
-            let rest = grey - f64::from(caustics.0.element_sum() / 3.0);
+            let rest = grey - f64::from(caustics.element_sum() / 3.0);
             if grey.is_finite() && rest.is_finite() {
                 moments += DVec4::new(grey, grey * grey, rest, rest * rest);
             }
@@ -171,13 +171,56 @@ pub fn pixel_variance(
     })
 }
 
-/// The caustic light of one sample, as the estimator reports it.
-struct Caustics(Vec3);
-
-impl PathObserver for Caustics {
-    fn light(&mut self, contribution: Vec3, caustic: bool) {
+/// The sample of one path (its light summed as [`crate::pathtrace::radiance`] sums
+/// it) and the part of it that is caustic: light seen after a mirror or glass bounce
+/// that follows a diffuse vertex (only the specular bounce can find it; light
+/// sampling cannot help).
+fn with_caustics(scene: &Scene, path: Path<'_, Scene>) -> (Vec3, Vec3) {
+    let (mut sample, mut caustics) = (Vec3::ZERO, Vec3::ZERO);
+    // A diffuse vertex, then only specular ones since: what is seen now is a caustic.
+    let (mut diffuse_seen, mut caustic) = (false, false);
+    for vertex in path {
+        sample += vertex.emitted;
         if caustic {
-            self.0 += contribution;
+            caustics += vertex.emitted;
+        }
+        sample += vertex.direct;
+        if let At::Surface { object, .. } = vertex.at {
+            let diffuse = matches!(scene.objects()[object].material, Material::Diffuse { .. });
+            (diffuse_seen, caustic) = (diffuse_seen || diffuse, diffuse_seen && !diffuse);
+        }
+    }
+    (sample, caustics)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pathtrace::scenes::cornell;
+    use crate::pathtrace::{Sampling, radiance};
+
+    /// The measurement watches the estimator's own path: its sample is, bit for bit,
+    /// the one `radiance` returns, and the caustic part is a part of it.
+    #[test]
+    fn the_watched_sample_is_the_estimators() {
+        let (scene, camera) = cornell(16, 12).unwrap();
+        for sampling in Sampling::ALL {
+            let settings = Settings {
+                sampling,
+                ..Settings::default()
+            };
+            for (x, y) in (0..12).flat_map(|y| (0..16).map(move |x| (x, y))) {
+                let mut rng = Rng::for_pixel(3, x, y);
+                let ray = camera.ray_through(Vec2::new(x as f32, y as f32), rng.next_vec2());
+                let mut watched = rng;
+                let plain = radiance(&scene, ray, &mut rng, &settings);
+                let path = Path::new(&scene, ray, &mut watched, &settings);
+                let (sample, caustics) = with_caustics(&scene, path);
+                let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+                assert_eq!(bits(sample), bits(plain), "({x}, {y}) {sampling:?}");
+                assert!(caustics.cmple(sample).all(), "({x}, {y}) {sampling:?}");
+                assert_eq!(watched.next_u32(), rng.next_u32());
+            }
         }
     }
 }

@@ -21,7 +21,7 @@ use render_lessons::error::Error;
 use render_lessons::material::{Material, fresnel};
 use render_lessons::offset::Offset;
 use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
-use render_lessons::pathtrace::light;
+use render_lessons::pathtrace::light::LightShape;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
@@ -717,8 +717,9 @@ proptest! {
             Shape::Sphere(Sphere::new(Vec3::new(0.2, 0.5, -0.1), 0.7).unwrap())
         };
         let p = Vec3::from(p);
-        if let Some(y) = light::sample(&shape, p, Vec2::from(u), strategy) {
-            let again = light::pdf(&shape, p, y.point, y.normal, strategy);
+        let light = LightShape::new(&shape, strategy).unwrap();
+        if let Some(y) = light.sample(p, Vec2::from(u)) {
+            let again = light.pdf(p, y.point, y.normal);
             prop_assert!(y.pdf.is_finite() && y.pdf > 0.0);
             prop_assert!((again - y.pdf).abs() <= 1e-3 * y.pdf, "{} vs {}", again, y.pdf);
         }
@@ -729,13 +730,12 @@ proptest! {
 fn cone_samples_almost_never_miss_the_sphere() {
     // A cone direction that misses by rounding at the rim gives no sample (a tiny
     // bias); count how often.
-    let sphere = Shape::Sphere(Sphere::new(Vec3::new(0.0, 5.0, 0.0), 0.01).unwrap());
+    let sphere = Sphere::new(Vec3::new(0.0, 5.0, 0.0), 0.01).unwrap();
+    let cone = LightShape::Sphere(sphere, SphereSampling::Cone);
     let mut rng = Rng::for_pixel(1, 2, 3);
     let n = 200_000;
     let misses = (0..n)
-        .filter(|_| {
-            light::sample(&sphere, Vec3::ZERO, rng.next_vec2(), SphereSampling::Cone).is_none()
-        })
+        .filter(|_| cone.sample(Vec3::ZERO, rng.next_vec2()).is_none())
         .count();
     eprintln!("cone misses: {misses} of {n}");
     assert!(misses * 10_000 < n, "{misses} of {n}");
@@ -1613,7 +1613,7 @@ fn the_light_sample_exercises_are_the_crates_numbers() {
     assert!((quad.area() - 1017.6).abs() < 0.05, "{}", quad.area());
     let page = "10_5_next_event.md";
     let contribution = |p: Vec3| {
-        let pdf = light::pdf(&light.shape, p, centre, quad.normal(), SphereSampling::Area);
+        let pdf = LightShape::Quad(*quad).pdf(p, centre, quad.normal());
         let to_light = (centre - p).normalize();
         let cos = to_light.dot(Vec3::Y);
         let f_r = render_lessons::material::diffuse_brdf(floor.colour()).x;

@@ -6,12 +6,13 @@ use glam::Vec3;
 
 use crate::material::diffuse_brdf;
 use crate::offset::Offset;
-use crate::pathtrace::light;
+use crate::pathtrace::light::{LightPoint, LightShape};
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::observer::PathObserver;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
+use crate::sampling::cosine_hemisphere_pdf;
 use crate::scene::Intersect;
 
 /// Where the rays leaving a diffuse vertex start (the hit point moved off the
@@ -54,7 +55,9 @@ pub(super) fn direct_light(
     let pick = ((rng.next_f32() * count as f32) as usize).min(count - 1);
     let light = &scene.objects()[scene.lights()[pick]];
     let u = rng.next_vec2();
-    let Some(y) = light::sample(&light.shape, from.point, u, s.sphere_lights) else {
+    let Some(y) =
+        LightShape::new(&light.shape, s.sphere_lights).and_then(|l| l.sample(from.point, u))
+    else {
         return Vec3::ZERO;
     };
     // Behind a lamp there is nothing to see, and no shadow ray to trace.
@@ -70,7 +73,7 @@ pub(super) fn direct_light(
     };
     let pdf = y.pdf / count as f32;
     let weight = match s.sampling {
-        Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
+        Sampling::Mis => power_heuristic(pdf, cosine_hemisphere_pdf(cos)),
         _ => 1.0,
     };
     diffuse_brdf(albedo) * radiance * (cos * weight / pdf)
@@ -85,7 +88,7 @@ fn unoccluded(
     scene: &impl Intersect,
     from: Start,
     n: Vec3,
-    light: &light::LightPoint,
+    light: &LightPoint,
     offset: Offset,
 ) -> Option<f32> {
     let (y, n_l) = (light.point, light.normal);

@@ -948,13 +948,72 @@ fn the_thin_lens_focus_point_is_in_front_of_the_eye_at_the_focus_distance() {
 
 #[test]
 fn fresnel_is_4_percent_at_normal_incidence_and_total_beyond_the_critical_angle() {
-    let (f, _) = fresnel(1.0, 1.0 / 1.5);
+    let f = fresnel(1.0, 1.0 / 1.5).reflectance;
     assert!((f - 0.04).abs() < 1e-6, "{f}");
     let critical = (1.0f32 / 1.5).asin();
-    let (f, _) = fresnel((critical + 0.01).cos(), 1.5);
-    assert_eq!(f, 1.0);
-    let (f, _) = fresnel(0.0, 1.0 / 1.5);
-    assert_eq!(f, 1.0);
+    let beyond = fresnel((critical + 0.01).cos(), 1.5);
+    assert_eq!((beyond.reflectance, beyond.cos_t), (1.0, 0.0));
+    assert_eq!(fresnel(0.0, 1.0 / 1.5).reflectance, 1.0);
+}
+
+#[test]
+fn fresnel_ratio_is_n_i_over_n_t_and_cos_t_is_snell_s() {
+    // eta = n_i / n_t: from air into glass 1/1.5, Snell's law sin_t = eta sin_i.
+    for degrees in [0.0f32, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0] {
+        let theta_i = degrees.to_radians();
+        let f = fresnel(theta_i.cos(), 1.0 / 1.5);
+        let sin_t = theta_i.sin() / 1.5;
+        let expected = (1.0 - sin_t * sin_t).sqrt();
+        assert!((f.cos_t - expected).abs() < 1e-6, "{degrees}: {}", f.cos_t);
+        assert!(f.reflectance > 0.0 && f.reflectance < 1.0, "{degrees}");
+        // Light is reversible: the refracted ray traced back out of the glass
+        // reflects the same share.
+        let back = fresnel(f.cos_t, 1.5);
+        assert!((back.reflectance - f.reflectance).abs() < 1e-5, "{degrees}");
+    }
+    // pbrt-v4's eta = n_t / n_i = 1.5 for the same boundary would be total internal
+    // reflection already at 45 degrees: the ratio's direction matters.
+    assert_eq!(fresnel(45f32.to_radians().cos(), 1.5).reflectance, 1.0);
+}
+
+#[test]
+fn power_heuristic_is_the_counted_form_with_one_sample_each() {
+    use render_lessons::pathtrace::mis::{power_heuristic, power_heuristic_with_counts};
+    let values = [
+        0.0f32,
+        -1.0,
+        1e-30,
+        0.2,
+        0.3,
+        1.0,
+        6.535,
+        1e30,
+        f32::INFINITY,
+        f32::NAN,
+    ];
+    for a in values {
+        for b in values {
+            let one = power_heuristic(a, b);
+            let counted = power_heuristic_with_counts(1, a, 1, b);
+            assert_eq!(one.to_bits(), counted.to_bits(), "{a} {b}");
+        }
+    }
+    // Veach's form with counts, against f64: (n_a p_a)^2 / ((n_a p_a)^2 + (n_b p_b)^2),
+    // and the weights of one direction add up to 1.
+    for (n_a, p_a, n_b, p_b) in [(4, 0.5f32, 1, 1.5f32), (1, 2.0, 16, 0.1), (3, 0.7, 5, 0.7)] {
+        let w_a = power_heuristic_with_counts(n_a, p_a, n_b, p_b);
+        let w_b = power_heuristic_with_counts(n_b, p_b, n_a, p_a);
+        let (a, b) = (
+            f64::from(n_a) * f64::from(p_a),
+            f64::from(n_b) * f64::from(p_b),
+        );
+        let exact = a * a / (a * a + b * b);
+        assert!((f64::from(w_a) - exact).abs() < 1e-6, "{w_a} vs {exact}");
+        assert!((w_a + w_b - 1.0).abs() < 1e-6);
+    }
+    // A strategy that drew no sample gets no weight.
+    assert_eq!(power_heuristic_with_counts(0, 1.0, 1, 1.0), 0.0);
+    assert_eq!(power_heuristic_with_counts(1, 1.0, 0, 1.0), 1.0);
 }
 
 #[test]

@@ -251,9 +251,8 @@ fn convex_quadrics_are_never_re_hit_from_near_or_far() {
 #[test]
 fn instanced_sphere_is_never_re_hit_from_near_or_far() {
     let place = Transform::scale(2.0, 0.5, 1.0)
-        .unwrap()
-        .then(Transform::rotation_y(0.7).unwrap())
-        .then(Transform::translation(0.5, -0.25, 0.1).unwrap());
+        .then(Transform::rotation_y(0.7))
+        .then(Transform::translation(0.5, -0.25, 0.1));
     let instance = Instance::new(unit_sphere(), place).unwrap();
     let aim = targets(Vec3::new(0.5, -0.25, 0.1), 0.4, 24);
     assert_never_re_hit(

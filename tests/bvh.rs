@@ -145,10 +145,9 @@ fn random_soup(rng: &mut Rng, n: usize) -> Vec<Object> {
                         Shape::Aabb(Aabb::new(Vec3::splat(-0.5), Vec3::splat(0.5)).unwrap())
                     };
                     let m = Transform::scale(rng.range(0.2, 2.0), rng.range(0.2, 2.0), 1.0)
-                        .unwrap()
-                        .then(Transform::rotation_y(rng.range(0.0, 6.0)).unwrap())
-                        .then(Transform::rotation_x(rng.range(0.0, 6.0)).unwrap())
-                        .then(Transform::translation(c.x, c.y, c.z).unwrap());
+                        .then(Transform::rotation_y(rng.range(0.0, 6.0)))
+                        .then(Transform::rotation_x(rng.range(0.0, 6.0)))
+                        .then(Transform::translation(c.x, c.y, c.z));
                     Shape::Instance(Box::new(Instance::new(inner, m).unwrap()))
                 }
             };

@@ -2,7 +2,8 @@
 //! triangle, each in its own file, each with the naive method next to the robust one
 //! (STABILITY cases S1, S2, S4 to S8).
 //!
-//! Every routine takes a [`Ray`] (finite origin, unit direction) and reports the
+//! Every routine takes a [`Ray`] (finite origin, a direction of any non-zero
+//! length: `t` is in lengths of it, a distance for a unit direction) and reports the
 //! nearest crossing with `t_min < t < t_max`. For finite input none of them panics or
 //! returns NaN: a comparison that meets a NaN always falls on the "miss" side.
 
@@ -32,7 +33,8 @@ pub use triangle::Triangle;
 /// Where a ray crosses a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
-    /// The ray parameter: the signed distance from the ray's origin.
+    /// The ray parameter, point = o + t d: the signed distance from the ray's origin
+    /// (in lengths of d for a ray made by [`Ray::new_unnormalised`]).
     pub t: f32,
     /// The point on the surface.
     pub point: Vec3,

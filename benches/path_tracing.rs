@@ -20,16 +20,15 @@
 //! it again; `PT_FRESH_REFERENCE=1` forces that too.
 
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group};
-use glam::Vec3;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking};
 use render_lessons::course::measure::variance::{Seen, pixel_variance};
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::pathtrace::pfm::save_pfm;
+use render_lessons::pathtrace::pfm::{load_pfm, save_pfm};
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes;
 use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling};
@@ -138,34 +137,6 @@ fn source_hash() -> u64 {
     h.finish()
 }
 
-/// Reads a PFM written by [`save_pfm`] (three channels, little-endian, bottom row
-/// first); `None` if the file is missing or not of that form.
-fn load_pfm(path: &Path) -> Option<Framebuffer> {
-    let bytes = fs::read(path).ok()?;
-    let mut lines = bytes.splitn(4, |&b| b == b'\n');
-    if lines.next()? != b"PF" {
-        return None;
-    }
-    let size = std::str::from_utf8(lines.next()?).ok()?;
-    let mut size = size.split_whitespace().map(|s| s.parse::<u32>());
-    let (w, h) = (size.next()?.ok()?, size.next()?.ok()?);
-    if lines.next()? != b"-1.0" {
-        return None;
-    }
-    let data = lines.next()?;
-    if data.len() != w as usize * h as usize * 12 {
-        return None;
-    }
-    let f = |i: usize| f32::from_le_bytes([data[i], data[i + 1], data[i + 2], data[i + 3]]);
-    let mut pixels = vec![Vec3::ZERO; w as usize * h as usize];
-    for (i, p) in pixels.iter_mut().enumerate() {
-        let (x, y) = (i % w as usize, i / w as usize);
-        let j = ((h as usize - 1 - y) * w as usize + x) * 12;
-        *p = Vec3::new(f(j), f(j + 4), f(j + 8));
-    }
-    Framebuffer::from_pixels(w, h, pixels).ok()
-}
-
 /// The mean of two images of the same size.
 fn average(a: &Framebuffer, b: &Framebuffer) -> Framebuffer {
     Framebuffer::from_fn(a.width(), a.height(), |x, y| {
@@ -184,7 +155,7 @@ fn reference_half(scene: &Scene, camera: &Camera, seed: u64) -> Framebuffer {
         source_hash()
     ));
     let fresh = std::env::var_os("PT_FRESH_REFERENCE").is_some();
-    if !fresh && let Some(image) = load_pfm(&path) {
+    if !fresh && let Ok(image) = load_pfm(&path) {
         println!(
             "reference half (seed {seed:#x}) read from {}",
             path.display()

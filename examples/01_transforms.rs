@@ -76,13 +76,13 @@ fn finite(p: Vec3) -> Result<Vec3> {
 pub fn slide_transforms(degrees: f32) -> Result<Vec<(&'static str, Transform)>> {
     let theta = degrees.to_radians();
     Ok(vec![
-        ("scale(2, 0.5, 1)", Transform::scale(2.0, 0.5, 1.0)?),
-        ("rotation_x(angle)", Transform::rotation_x(theta)?),
-        ("rotation_y(angle)", Transform::rotation_y(theta)?),
-        ("rotation_z(angle)", Transform::rotation_z(theta)?),
+        ("scale(2, 0.5, 1)", Transform::scale(2.0, 0.5, 1.0)),
+        ("rotation_x(angle)", Transform::rotation_x(theta)),
+        ("rotation_y(angle)", Transform::rotation_y(theta)),
+        ("rotation_z(angle)", Transform::rotation_z(theta)),
         (
             "translation(1, 2, 3)",
-            Transform::translation(1.0, 2.0, 3.0)?,
+            Transform::translation(1.0, 2.0, 3.0),
         ),
     ])
 }
@@ -90,8 +90,8 @@ pub fn slide_transforms(degrees: f32) -> Result<Vec<(&'static str, Transform)>> 
 // ANCHOR: order
 /// Rotate by `degrees` about Z, and translate by (3, 0, 0): in both orders.
 pub fn two_orders(degrees: f32) -> Result<[(&'static str, Transform); 2]> {
-    let rotate = Transform::rotation_z(degrees.to_radians())?;
-    let translate = Transform::translation(3.0, 0.0, 0.0)?;
+    let rotate = Transform::rotation_z(degrees.to_radians());
+    let translate = Transform::translation(3.0, 0.0, 0.0);
     Ok([
         ("rotate, then translate", rotate.then(translate)),
         ("translate, then rotate", translate.then(rotate)),
@@ -115,8 +115,8 @@ pub fn order_figure(degrees: f32) -> Result<Diagram> {
 /// (coding exercise 1.2, `src/course/exercises/ch01.rs`): the same two orders, each
 /// composed by it.
 pub fn my_order_figure(degrees: f32, compose: mine::Compose) -> Result<Diagram> {
-    let rotate = Transform::rotation_z(degrees.to_radians())?;
-    let translate = Transform::translation(3.0, 0.0, 0.0)?;
+    let rotate = Transform::rotation_z(degrees.to_radians());
+    let translate = Transform::translation(3.0, 0.0, 0.0);
     let yours =
         |first: &Transform, second: &Transform| Transform::from_matrix(compose(first, second));
     figure_of(

@@ -77,6 +77,9 @@ pub enum Error {
         value: String,
         choices: Vec<String>,
     },
+    /// A PFM image could not be read: `path` names the file (or the bytes), `message`
+    /// says what is wrong with it.
+    Pfm { path: String, message: String },
     /// An OBJ file could not be turned into a mesh; `line` (1-based) when known.
     Obj {
         path: String,
@@ -108,7 +111,7 @@ impl Error {
             Error::UpParallelToDirection => "up",
             Error::Interrupted => "interrupt",
             Error::NonFinitePixel { .. } => "pixel",
-            Error::Io { path, .. } | Error::Obj { path, .. } => path,
+            Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
             Error::VertexIndex { .. } => "triangle",
             Error::Exercise { .. } => "exercise",
         }
@@ -153,7 +156,9 @@ impl fmt::Display for Error {
                     "pixel ({x}, {y}) is NaN or infinite; refusing to write it"
                 )
             }
-            Error::Io { path, message } => write!(f, "{path}: {message}"),
+            Error::Io { path, message } | Error::Pfm { path, message } => {
+                write!(f, "{path}: {message}")
+            }
             Error::Exercise { report } => write!(f, "{report}"),
             Error::TooFew { param, value, min } => {
                 write!(f, "{param} must be at least {min} (got {value})")

@@ -103,25 +103,55 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 // ANCHOR_END: reflect
 
 // ANCHOR: fresnel
+/// What light does at a smooth dielectric boundary: the share it reflects, and the
+/// cosine of the angle of the refracted direction with the normal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fresnel {
+    /// F: the fraction reflected, unpolarised; 1 - F is refracted.
+    pub reflectance: f32,
+    /// cos theta_t of the refracted direction; 0 under total internal reflection,
+    /// where nothing is refracted.
+    pub cos_t: f32,
+}
+
 /// The exact Fresnel reflectance of a smooth dielectric for unpolarised light (the
 /// mean of the s and p polarisations; Born and Wolf, pbrt-v3 section 8.2.1):
 ///
 /// r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),
 /// r_p = (cos_i - eta cos_t) / (cos_i + eta cos_t),  F = (r_s^2 + r_p^2) / 2,
 ///
-/// where eta = n_i / n_t and `cos_i` > 0 is the cosine of the incident angle. Returns
-/// 1 (total internal reflection) when sin_t = eta sin_i reaches 1, and at grazing
-/// incidence, cos_i = 0. Schlick's approximation is not used.
-pub fn fresnel(cos_i: f32, eta: f32) -> (f32, f32) {
+/// where eta = `n_i_over_n_t`, the index of the side the light arrives from over the
+/// index of the side it would enter (glass of index 1.5 entered from air: 1/1.5;
+/// pbrt-v4's `eta` is the inverse, n_t / n_i), and `cos_i` > 0 is the cosine of the
+/// incident angle. The reflectance is 1 (total internal reflection) when
+/// sin_t = eta sin_i reaches 1, and at grazing incidence, cos_i = 0. Schlick's
+/// approximation is not used.
+///
+/// ```
+/// use render_lessons::material::fresnel;
+///
+/// let entering = fresnel(1.0, 1.0 / 1.5); // head on, from air into glass
+/// assert!((entering.reflectance - 0.04).abs() < 1e-6 && entering.cos_t == 1.0);
+/// let inside = fresnel(0.5, 1.5); // from glass, 60 degrees: beyond the critical angle
+/// assert_eq!((inside.reflectance, inside.cos_t), (1.0, 0.0));
+/// ```
+pub fn fresnel(cos_i: f32, n_i_over_n_t: f32) -> Fresnel {
+    let eta = n_i_over_n_t;
     let cos_i = cos_i.clamp(0.0, 1.0);
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
     if sin2_t >= 1.0 || cos_i == 0.0 {
-        return (1.0, 0.0);
+        return Fresnel {
+            reflectance: 1.0,
+            cos_t: 0.0,
+        };
     }
     let cos_t = (1.0 - sin2_t).sqrt();
     let r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
     let r_p = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    (0.5 * (r_s * r_s + r_p * r_p), cos_t)
+    Fresnel {
+        reflectance: 0.5 * (r_s * r_s + r_p * r_p),
+        cos_t,
+    }
 }
 // ANCHOR_END: fresnel
 
@@ -163,8 +193,8 @@ impl Material {
             Material::Glass { ior } => {
                 let eta = if entering { 1.0 / ior } else { ior };
                 let cos_i = -d.dot(n);
-                let (f, cos_t) = fresnel(cos_i, eta);
-                if u < f {
+                let Fresnel { reflectance, cos_t } = fresnel(cos_i, eta);
+                if u < reflectance {
                     return Some(mirror(Vec3::ONE));
                 }
                 let t = eta * d + (eta * cos_i - cos_t) * n;

@@ -2,12 +2,14 @@
 
 use glam::Vec3;
 
-use crate::error::{Result, finite3, unit};
+use crate::error::{Error, Result, finite3, unit};
 
-/// A ray with origin `o` and unit direction `d`.
+/// A ray with origin `o` and direction `d`: unit for every ray of [`Ray::new`].
 ///
 /// Because `d` has length 1, the parameter `t` of a point is its signed distance
-/// from the origin; a negative `t` lies behind it.
+/// from the origin; a negative `t` lies behind it. A ray made by
+/// [`Ray::new_unnormalised`] keeps the length of its `d`, and `t` then counts
+/// lengths of `d` instead: the distance is t |d|.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     origin: Vec3,
@@ -27,6 +29,52 @@ impl Ray {
     }
     // ANCHOR_END: new
 
+    /// A ray from `origin` along `direction` as it is, not normalised: the points are
+    /// still r(t) = o + t d, but `t` counts lengths of d, not distance (pbrt's rays
+    /// are all of this kind).
+    ///
+    /// It is what a transform needs. An affine map M takes o + t d to
+    /// M o + t (M d), so the ray (M o, M d) reaches the image of each point at the
+    /// same `t`: a hit found in an instance's object space needs no rescaling to be
+    /// a hit of the world ray. [`Ray::new`] would normalise M d and change every `t`
+    /// by the factor |M d|. Every shape's test takes either kind (none assumes
+    /// |d| = 1), and reports `t` in the ray's own units.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use render_lessons::ray::{Interval, Ray};
+    /// use render_lessons::shapes::Sphere;
+    /// use render_lessons::transform::Transform;
+    ///
+    /// // A world ray, and the unit sphere placed by "scale by 2": the world sphere of radius 2.
+    /// let world = Ray::new(Vec3::new(0.0, 0.0, 10.0), -Vec3::Z)?;
+    /// let to_object = Transform::scale(0.5, 0.5, 0.5);
+    /// let object = Ray::new_unnormalised(
+    ///     to_object.point(world.origin()),
+    ///     to_object.vector(world.direction()), // length 0.5, kept
+    /// )?;
+    /// let unit = Sphere::new(Vec3::ZERO, 1.0)?;
+    /// let t = unit.hit(&object, Interval::AHEAD).unwrap().t;
+    /// assert_eq!(t, 8.0); // the world ray's own t: it meets the radius-2 sphere at z = 2
+    /// assert_eq!(world.at(t), Vec3::new(0.0, 0.0, 2.0));
+    /// // Normalised, the object ray would report 4: its own distance, not the world's.
+    /// let normalised = Ray::new(object.origin(), object.direction())?;
+    /// assert_eq!(unit.hit(&normalised, Interval::AHEAD).unwrap().t, 4.0);
+    /// # Ok::<(), render_lessons::Error>(())
+    /// ```
+    ///
+    /// Rejects a non-finite origin, and a direction that is zero or not finite.
+    pub fn new_unnormalised(origin: Vec3, direction: Vec3) -> Result<Ray> {
+        let direction = finite3("direction", direction)?;
+        if direction == Vec3::ZERO {
+            return Err(Error::ZeroLength { param: "direction" });
+        }
+        Ok(Ray {
+            origin: finite3("origin", origin)?,
+            direction,
+        })
+    }
+
     /// A ray from values the caller has already checked: finite, `direction` of unit length.
     pub(crate) fn from_checked(origin: Vec3, direction: Vec3) -> Ray {
         debug_assert!(origin.is_finite() && direction.is_normalized());
@@ -38,22 +86,24 @@ impl Ray {
         self.origin
     }
 
-    /// The unit direction `d`.
+    /// The direction `d`: unit, unless the ray was made by [`Ray::new_unnormalised`].
     pub fn direction(&self) -> Vec3 {
         self.direction
     }
 
     // ANCHOR: at
-    /// The point r(t) = o + t d, at signed distance `t` from the origin.
+    /// The point r(t) = o + t d, at signed distance `t` from the origin (t |d| for an
+    /// unnormalised ray).
     pub fn at(&self, t: f32) -> Vec3 {
         self.origin + t * self.direction
     }
     // ANCHOR_END: at
 
     // ANCHOR: t_closest_to
-    /// The `t` of the point on the ray's line closest to `p`: (p - o) . d.
+    /// The `t` of the point on the ray's line closest to `p`: (p - o) . d / (d . d),
+    /// which is (p - o) . d for a unit d.
     pub fn t_closest_to(&self, p: Vec3) -> f32 {
-        (p - self.origin).dot(self.direction)
+        (p - self.origin).dot(self.direction) / self.direction.length_squared()
     }
     // ANCHOR_END: t_closest_to
 }

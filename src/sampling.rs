@@ -1,6 +1,26 @@
-//! Turning uniform random numbers into directions.
+//! Turning uniform random numbers into directions, each beside its density.
+//!
+//! Every sampling function `name(u)` has a `name_pdf` giving the density of the
+//! samples it draws, per unit solid angle for directions and per unit area for
+//! points of the disc, and 0 outside the function's domain (pbrt-v4 section A.5).
+//! `tests/10_densities.rs` checks each one: it integrates to 1 over its domain, and
+//! it matches a histogram of a million samples.
+//!
+//! ```
+//! use glam::Vec2;
+//! use render_lessons::sampling::*;
+//!
+//! let u = Vec2::new(0.36, 0.7);
+//! let w = cosine_hemisphere(u);
+//! assert_eq!(cosine_hemisphere_pdf(w.z), w.z / std::f32::consts::PI); // 0.8 / pi
+//! assert_eq!(uniform_hemisphere_pdf(uniform_hemisphere(u).z), 0.5 / std::f32::consts::PI);
+//! assert_eq!(uniform_hemisphere_pdf(-0.1), 0.0); // below the horizon: never drawn
+//! assert_eq!(uniform_sphere_pdf(), 0.25 / std::f32::consts::PI);
+//! assert_eq!(uniform_disc_pdf(uniform_disc(u)), 1.0 / std::f32::consts::PI);
+//! assert_eq!(uniform_disc_pdf(Vec2::new(0.8, 0.8)), 0.0); // outside the disc
+//! ```
 
-use std::f32::consts::TAU;
+use std::f32::consts::{PI, TAU};
 
 use glam::{Vec2, Vec3};
 
@@ -14,6 +34,12 @@ pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
     let (s, c) = phi.sin_cos();
     Vec3::new(r * c, r * s, (1.0 - u.x).max(0.0).sqrt())
 }
+
+/// The density of [`cosine_hemisphere`] per unit solid angle, at a direction whose
+/// cosine with +Z is `cos_theta`: cos(theta) / pi above the horizon, 0 below it.
+pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
+    if cos_theta > 0.0 { cos_theta / PI } else { 0.0 }
+}
 // ANCHOR_END: cosine_hemisphere
 
 // ANCHOR: uniform_hemisphere
@@ -25,6 +51,12 @@ pub fn uniform_hemisphere(u: Vec2) -> Vec3 {
     let (s, c) = (TAU * u.y).sin_cos();
     Vec3::new(r * c, r * s, z)
 }
+
+/// The density of [`uniform_hemisphere`] per unit solid angle, at a direction whose
+/// cosine with +Z is `cos_theta`: 1 / (2 pi) on the hemisphere (z >= 0), 0 below it.
+pub fn uniform_hemisphere_pdf(cos_theta: f32) -> f32 {
+    if cos_theta >= 0.0 { 1.0 / TAU } else { 0.0 }
+}
 // ANCHOR_END: uniform_hemisphere
 
 /// A direction on the whole unit sphere with constant density 1 / (4 pi).
@@ -35,11 +67,27 @@ pub fn uniform_sphere(u: Vec2) -> Vec3 {
     Vec3::new(r * c, r * s, z)
 }
 
+/// The density of [`uniform_sphere`] per unit solid angle: 1 / (4 pi) in every
+/// direction.
+pub fn uniform_sphere_pdf() -> f32 {
+    1.0 / (2.0 * TAU)
+}
+
 /// A point of the unit disc with constant density 1 / pi (polar map: r = sqrt(u)).
 pub fn uniform_disc(u: Vec2) -> Vec2 {
     let r = u.x.sqrt();
     let (s, c) = (TAU * u.y).sin_cos();
     Vec2::new(r * c, r * s)
+}
+
+/// The density of [`uniform_disc`] per unit area at the point `p`: 1 / pi on the
+/// unit disc (|p| <= 1), 0 outside it.
+pub fn uniform_disc_pdf(p: Vec2) -> f32 {
+    if p.length_squared() <= 1.0 {
+        1.0 / PI
+    } else {
+        0.0
+    }
 }
 
 /// An `n` x `n` grid of points at the centres of the cells of the unit square: evenly

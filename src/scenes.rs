@@ -8,7 +8,7 @@ use glam::Vec3;
 
 use crate::bvh::BvhScene;
 use crate::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, finite};
 use crate::raster::{FaceCounts, LoadedMesh, Mesh, Model, Shadows};
 use crate::raster::{check_subdivisions, subdivided_count};
 use crate::ray::{Interval, Ray};
@@ -168,7 +168,7 @@ pub fn lesson09_mesh(path: &Path, subdivisions: u32) -> Result<LessonMesh> {
             reason: "has no triangle with an area: every one is degenerate",
         });
     }
-    let placed = Transform::rotation_x(-0.5)?.then(Transform::translation(2.2, 0.75, 1.6)?);
+    let placed = Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
     let model = match fit(&mesh, 1.4)? {
         Some(fit) => fit.then(placed),
         None => placed,
@@ -200,8 +200,17 @@ fn fit(mesh: &Mesh, half: f32) -> Result<Option<Transform>> {
     if centre == Vec3::ZERO && scale == 1.0 {
         return Ok(None);
     }
-    let to_origin = Transform::translation(-centre.x, -centre.y, -centre.z)?;
-    Ok(Some(to_origin.then(Transform::scale(scale, scale, scale)?)))
+    // A mesh whose size is 0 or overflows has no fit (the transforms take finite numbers).
+    for (param, value) in [
+        ("dx", centre.x),
+        ("dy", centre.y),
+        ("dz", centre.z),
+        ("sx", scale),
+    ] {
+        finite(param, value)?;
+    }
+    let to_origin = Transform::translation(-centre.x, -centre.y, -centre.z);
+    Ok(Some(to_origin.then(Transform::scale(scale, scale, scale))))
 }
 
 /// The floor of `scene` (its first object) with `mesh` standing on it, as the ray

@@ -11,12 +11,42 @@ use std::ops::Mul;
 
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::error::{Error, Result, finite, finite3};
+use crate::error::{Error, Result, finite3};
 
-/// An affine transformation: one 4x4 matrix acting on homogeneous coordinates.
+/// An affine transformation: one 4x4 matrix acting on homogeneous coordinates,
+/// always finite.
+///
+/// The slide constructors (scale, the three rotations, translation) cannot fail: a
+/// finite number always gives a finite matrix, so they return the `Transform`
+/// itself. A NaN or infinite parameter is a bug in the caller, and they panic naming
+/// it rather than build a matrix full of NaN. A value a user types is checked where
+/// it is read, with an error naming the flag, as the lessons do.
+/// Angles are in radians, as `angle_radians` says; a lesson that reads degrees
+/// converts once, with `to_radians`.
+///
+/// ```
+/// use glam::Vec3;
+/// use render_lessons::transform::Transform;
+///
+/// let turn = Transform::rotation_z(90f32.to_radians());
+/// assert!(turn.point(Vec3::X).abs_diff_eq(Vec3::Y, 1e-6));
+/// let moved = turn.then(Transform::translation(1.0, 0.0, 0.0));
+/// assert!(moved.point(Vec3::X).abs_diff_eq(Vec3::new(1.0, 1.0, 0.0), 1e-6));
+/// assert!(std::panic::catch_unwind(|| Transform::rotation_x(f32::NAN)).is_err());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transform {
     matrix: Mat4,
+}
+
+/// `value` itself if it is finite; a panic naming `param` otherwise (see
+/// [`Transform`]: the slide constructors take finite numbers only).
+fn finite(param: &str, value: f32) -> f32 {
+    assert!(
+        value.is_finite(),
+        "{param} must be a finite number (got {value})"
+    );
+    value
 }
 
 /// The homogeneous point (x, y, z, 1): translations move it.
@@ -53,9 +83,9 @@ impl Transform {
 
     // ANCHOR: scale
     /// Scale along X, Y and Z: x' = x s_x, y' = y s_y, z' = z s_z (Lecture 3, "3D Scale").
-    pub fn scale(sx: f32, sy: f32, sz: f32) -> Result<Transform> {
-        let (sx, sy, sz) = (finite("sx", sx)?, finite("sy", sy)?, finite("sz", sz)?);
-        Transform::from_matrix(from_rows([
+    pub fn scale(sx: f32, sy: f32, sz: f32) -> Transform {
+        let (sx, sy, sz) = (finite("sx", sx), finite("sy", sy), finite("sz", sz));
+        Transform::from_finite_matrix(from_rows([
             [sx, 0.0, 0.0, 0.0],
             [0.0, sy, 0.0, 0.0],
             [0.0, 0.0, sz, 0.0],
@@ -65,11 +95,11 @@ impl Transform {
     // ANCHOR_END: scale
 
     // ANCHOR: rotation_x
-    /// Rotation by `theta` radians about the X axis (Lecture 3, "3D Rotation about X"):
+    /// Rotation by `angle_radians` about the X axis (Lecture 3, "3D Rotation about X"):
     /// y' = y cos - z sin, z' = y sin + z cos.
-    pub fn rotation_x(theta: f32) -> Result<Transform> {
-        let (s, c) = finite("theta", theta)?.sin_cos();
-        Transform::from_matrix(from_rows([
+    pub fn rotation_x(angle_radians: f32) -> Transform {
+        let (s, c) = finite("angle_radians", angle_radians).sin_cos();
+        Transform::from_finite_matrix(from_rows([
             [1.0, 0.0, 0.0, 0.0],
             [0.0, c, -s, 0.0],
             [0.0, s, c, 0.0],
@@ -79,15 +109,15 @@ impl Transform {
     // ANCHOR_END: rotation_x
 
     // ANCHOR: rotation_y
-    /// Rotation by `theta` radians about the Y axis (Lecture 3, "3D Rotation about Y"):
+    /// Rotation by `angle_radians` about the Y axis (Lecture 3, "3D Rotation about Y"):
     /// x' = x cos + z sin, z' = -x sin + z cos.
     ///
     /// The minus sign sits bottom-left, not top-right as for X and Z: the rotation
     /// turns Z towards X (the cyclic order x -> y -> z -> x), and in the matrix's
     /// rows X comes before Z.
-    pub fn rotation_y(theta: f32) -> Result<Transform> {
-        let (s, c) = finite("theta", theta)?.sin_cos();
-        Transform::from_matrix(from_rows([
+    pub fn rotation_y(angle_radians: f32) -> Transform {
+        let (s, c) = finite("angle_radians", angle_radians).sin_cos();
+        Transform::from_finite_matrix(from_rows([
             [c, 0.0, s, 0.0],
             [0.0, 1.0, 0.0, 0.0],
             [-s, 0.0, c, 0.0],
@@ -97,11 +127,11 @@ impl Transform {
     // ANCHOR_END: rotation_y
 
     // ANCHOR: rotation_z
-    /// Rotation by `theta` radians about the Z axis (Lecture 3, "3D Rotation about Z"):
+    /// Rotation by `angle_radians` about the Z axis (Lecture 3, "3D Rotation about Z"):
     /// x' = x cos - y sin, y' = x sin + y cos.
-    pub fn rotation_z(theta: f32) -> Result<Transform> {
-        let (s, c) = finite("theta", theta)?.sin_cos();
-        Transform::from_matrix(from_rows([
+    pub fn rotation_z(angle_radians: f32) -> Transform {
+        let (s, c) = finite("angle_radians", angle_radians).sin_cos();
+        Transform::from_finite_matrix(from_rows([
             [c, -s, 0.0, 0.0],
             [s, c, 0.0, 0.0],
             [0.0, 0.0, 1.0, 0.0],
@@ -113,9 +143,9 @@ impl Transform {
     // ANCHOR: translation
     /// Translation by (d_x, d_y, d_z) (Lecture 3, "3D Translation"): in homogeneous
     /// coordinates a translation is a shear of the fourth dimension.
-    pub fn translation(dx: f32, dy: f32, dz: f32) -> Result<Transform> {
-        let (dx, dy, dz) = (finite("dx", dx)?, finite("dy", dy)?, finite("dz", dz)?);
-        Transform::from_matrix(from_rows([
+    pub fn translation(dx: f32, dy: f32, dz: f32) -> Transform {
+        let (dx, dy, dz) = (finite("dx", dx), finite("dy", dy), finite("dz", dz));
+        Transform::from_finite_matrix(from_rows([
             [1.0, 0.0, 0.0, dx],
             [0.0, 1.0, 0.0, dy],
             [0.0, 0.0, 1.0, dz],

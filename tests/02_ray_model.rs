@@ -69,6 +69,63 @@ fn very_short_and_very_long_directions_are_normalised_not_refused() {
     assert!((tilted.direction() - Vec3::new(1.0, 1.0, 0.0).normalize()).length() < 1e-6);
 }
 
+#[test]
+fn an_unnormalised_ray_keeps_its_direction_and_counts_t_in_its_lengths() {
+    let d = Vec3::new(0.0, 0.0, -0.5);
+    let ray = Ray::new_unnormalised(Vec3::new(0.0, 0.0, 4.0), d).unwrap();
+    assert_eq!(ray.direction(), d);
+    assert_eq!(ray.at(2.0), Vec3::new(0.0, 0.0, 3.0)); // 2 lengths of d, distance 1
+    assert_eq!(ray.t_closest_to(Vec3::new(1.0, 0.0, 0.0)), 8.0);
+    assert_eq!(
+        Ray::new_unnormalised(Vec3::ZERO, Vec3::ZERO),
+        Err(Error::ZeroLength { param: "direction" })
+    );
+    assert_eq!(
+        Ray::new_unnormalised(Vec3::NAN, Vec3::X),
+        Err(Error::NotFinite { param: "origin" })
+    );
+    assert_eq!(
+        Ray::new_unnormalised(Vec3::ZERO, Vec3::new(f32::INFINITY, 0.0, 0.0)),
+        Err(Error::NotFinite { param: "direction" })
+    );
+}
+
+#[test]
+fn an_unnormalised_ray_keeps_t_through_a_transform() {
+    use render_lessons::ray::Interval;
+    use render_lessons::shapes::{Instance, Shape, Sphere};
+    use render_lessons::transform::Transform;
+    // The object ray (M^-1 o, M^-1 d), not normalised, finds the world ray's t in
+    // object space: the instance's own answer (which normalises and rescales), to
+    // rounding. Rays aimed inside the sphere's silhouette, where t is well
+    // conditioned; 1e-5 relative.
+    let placements = [
+        Transform::rotation_y(0.7).then(Transform::translation(0.5, -0.2, 1.0)),
+        Transform::scale(2.0, 2.0, 2.0),
+        Transform::scale(2.0, 0.5, 1.5)
+            .then(Transform::rotation_z(0.4))
+            .then(Transform::translation(0.3, 0.1, -0.7)),
+    ];
+    let unit = Shape::from(Sphere::new(Vec3::ZERO, 1.0).unwrap());
+    for m in placements {
+        let instance = Instance::new(unit.clone(), m).unwrap();
+        let to_object = instance.to_object();
+        for i in 0..100 {
+            let (a, b) = ((i % 10) as f32 / 10.0 - 0.45, (i / 10) as f32 / 10.0 - 0.45);
+            let o = Vec3::new(3.0, 7.0, 9.0);
+            let world = Ray::new(o, m.point(Vec3::new(a, b, 0.2)) - o).unwrap();
+            let expected = instance.hit(&world, Interval::AHEAD).unwrap().t;
+            let object = Ray::new_unnormalised(
+                to_object.point(world.origin()),
+                to_object.vector(world.direction()),
+            )
+            .unwrap();
+            let t = unit.hit(&object, Interval::AHEAD).unwrap().t;
+            assert!((t - expected).abs() <= 1e-5 * expected, "{t} vs {expected}");
+        }
+    }
+}
+
 fn finite_vec(range: f32) -> impl Strategy<Value = Vec3> {
     (-range..range, -range..range, -range..range).prop_map(|(x, y, z)| Vec3::new(x, y, z))
 }

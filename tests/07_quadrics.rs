@@ -274,9 +274,8 @@ fn cone_known_answers_and_generator_parallel_ray() {
 /// entry non-zero, Q' = M^-T Q M^-1 (computed in f32, so symmetric only to rounding).
 fn general_quadric() -> Quadric {
     let m = Transform::rotation_x(0.3)
-        .unwrap()
-        .then(Transform::rotation_z(0.7).unwrap())
-        .then(Transform::translation(0.5, -0.25, 1.0).unwrap());
+        .then(Transform::rotation_z(0.7))
+        .then(Transform::translation(0.5, -0.25, 1.0));
     let mi = m.inverse().unwrap().matrix();
     let q = Mat4::from_diagonal(Vec4::new(1.0, 1.0, -1.0, -1.0));
     Quadric::new(mi.transpose() * q * mi).unwrap()
@@ -391,7 +390,7 @@ fn bad_input_names_its_parameter() {
         assert_eq!(param(Quadric::cone(r)), "slope", "{r}");
     }
     let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());
-    let flat = Transform::scale(1.0, 0.0, 1.0).unwrap();
+    let flat = Transform::scale(1.0, 0.0, 1.0);
     assert_eq!(
         Instance::new(sphere, flat).unwrap_err(),
         Error::Singular { param: "to_world" }
@@ -407,9 +406,7 @@ fn unit_sphere() -> Shape {
 #[test]
 fn scaled_translated_sphere_is_the_ellipsoid() {
     let shift = Vec3::new(1.0, -2.0, 3.0);
-    let m = Transform::scale(2.0, 1.0, 1.0)
-        .unwrap()
-        .then(Transform::translation(shift.x, shift.y, shift.z).unwrap());
+    let m = Transform::scale(2.0, 1.0, 1.0).then(Transform::translation(shift.x, shift.y, shift.z));
     let inst = Shape::Instance(Box::new(Instance::new(unit_sphere(), m).unwrap()));
     let e = Quadric::ellipsoid(Vec3::new(2.0, 1.0, 1.0)).unwrap();
     let mut hits = 0;
@@ -453,7 +450,7 @@ fn scaled_translated_sphere_is_the_ellipsoid() {
 fn instance_normal_is_the_inverse_transpose_one() {
     // Unit sphere stretched to x^2/4 + y^2 + z^2 = 1. From (1, 5, 0) along -Y it is hit
     // at y = sqrt(1 - 1/4) = sqrt 3 / 2, t = 5 - sqrt 3 / 2.
-    let m = Transform::scale(2.0, 1.0, 1.0).unwrap();
+    let m = Transform::scale(2.0, 1.0, 1.0);
     let inst = Instance::new(unit_sphere(), m).unwrap();
     let h = inst
         .hit(&ray([1.0, 5.0, 0.0], [0.0, -1.0, 0.0]), Interval::AHEAD)
@@ -499,15 +496,12 @@ fn instance_t_is_world_distance() {
     // Rotate, scale non-uniformly, and move: the object-space direction is far from
     // unit length, yet t must stay a world-space distance along the unit ray.
     let m = Transform::scale(3.0, 0.5, 1.5)
-        .unwrap()
-        .then(Transform::rotation_y(0.4).unwrap())
-        .then(Transform::translation(0.0, 1.0, -2.0).unwrap());
+        .then(Transform::rotation_y(0.4))
+        .then(Transform::translation(0.0, 1.0, -2.0));
     let inst = Instance::new(unit_sphere(), m).unwrap();
     let ellipsoid = Instance::new(
         Shape::Quadric(Quadric::ellipsoid(Vec3::new(3.0, 0.5, 1.5)).unwrap()),
-        Transform::rotation_y(0.4)
-            .unwrap()
-            .then(Transform::translation(0.0, 1.0, -2.0).unwrap()),
+        Transform::rotation_y(0.4).then(Transform::translation(0.0, 1.0, -2.0)),
     )
     .unwrap();
     let mut hits = 0;

@@ -474,9 +474,7 @@ fn the_teapot_in_lesson_09() {
 fn lesson09_mesh_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
     use render_lessons::transform::Transform;
     let torus = lesson09_mesh(Path::new(TORUS_OBJ), 0).unwrap().model;
-    let placed = Transform::rotation_x(-0.5)
-        .unwrap()
-        .then(Transform::translation(2.2, 0.75, 1.6).unwrap());
+    let placed = Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
     assert_eq!(torus.model, placed);
     // The teapot, centred and scaled: its box's longest half side is the torus's 1.4.
     let teapot = lesson09_mesh(Path::new(TEAPOT_OBJ), 0).unwrap().model;

@@ -20,7 +20,7 @@ use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera, Th
 use render_lessons::error::Error;
 use render_lessons::material::{Material, fresnel};
 use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
-use render_lessons::pathtrace::light;
+use render_lessons::pathtrace::light::LightShape;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::scenes::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
@@ -738,8 +738,9 @@ proptest! {
             Shape::Sphere(Sphere::new(Vec3::new(0.2, 0.5, -0.1), 0.7).unwrap())
         };
         let p = Vec3::from(p);
-        if let Some(y) = light::sample(&shape, p, Vec2::from(u), strategy) {
-            let again = light::pdf(&shape, p, y.point, y.normal, strategy);
+        let light = LightShape::new(&shape, strategy).unwrap();
+        if let Some(y) = light.sample(p, Vec2::from(u)) {
+            let again = light.pdf(p, y.point, y.normal);
             prop_assert!(y.pdf.is_finite() && y.pdf > 0.0);
             prop_assert!((again - y.pdf).abs() <= 1e-3 * y.pdf, "{} vs {}", again, y.pdf);
         }
@@ -750,13 +751,12 @@ proptest! {
 fn cone_samples_almost_never_miss_the_sphere() {
     // A cone direction that misses by rounding at the rim gives no sample (a tiny
     // bias); count how often.
-    let sphere = Shape::Sphere(Sphere::new(Vec3::new(0.0, 5.0, 0.0), 0.01).unwrap());
+    let sphere = Sphere::new(Vec3::new(0.0, 5.0, 0.0), 0.01).unwrap();
+    let cone = LightShape::Sphere(sphere, SphereSampling::Cone);
     let mut rng = Rng::for_pixel(1, 2, 3);
     let n = 200_000;
     let misses = (0..n)
-        .filter(|_| {
-            light::sample(&sphere, Vec3::ZERO, rng.next_vec2(), SphereSampling::Cone).is_none()
-        })
+        .filter(|_| cone.sample(Vec3::ZERO, rng.next_vec2()).is_none())
         .count();
     eprintln!("cone misses: {misses} of {n}");
     assert!(misses * 10_000 < n, "{misses} of {n}");
@@ -969,13 +969,72 @@ fn the_thin_lens_focus_point_is_in_front_of_the_eye_at_the_focus_distance() {
 
 #[test]
 fn fresnel_is_4_percent_at_normal_incidence_and_total_beyond_the_critical_angle() {
-    let (f, _) = fresnel(1.0, 1.0 / 1.5);
+    let f = fresnel(1.0, 1.0 / 1.5).reflectance;
     assert!((f - 0.04).abs() < 1e-6, "{f}");
     let critical = (1.0f32 / 1.5).asin();
-    let (f, _) = fresnel((critical + 0.01).cos(), 1.5);
-    assert_eq!(f, 1.0);
-    let (f, _) = fresnel(0.0, 1.0 / 1.5);
-    assert_eq!(f, 1.0);
+    let beyond = fresnel((critical + 0.01).cos(), 1.5);
+    assert_eq!((beyond.reflectance, beyond.cos_t), (1.0, 0.0));
+    assert_eq!(fresnel(0.0, 1.0 / 1.5).reflectance, 1.0);
+}
+
+#[test]
+fn fresnel_ratio_is_n_i_over_n_t_and_cos_t_is_snell_s() {
+    // eta = n_i / n_t: from air into glass 1/1.5, Snell's law sin_t = eta sin_i.
+    for degrees in [0.0f32, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0] {
+        let theta_i = degrees.to_radians();
+        let f = fresnel(theta_i.cos(), 1.0 / 1.5);
+        let sin_t = theta_i.sin() / 1.5;
+        let expected = (1.0 - sin_t * sin_t).sqrt();
+        assert!((f.cos_t - expected).abs() < 1e-6, "{degrees}: {}", f.cos_t);
+        assert!(f.reflectance > 0.0 && f.reflectance < 1.0, "{degrees}");
+        // Light is reversible: the refracted ray traced back out of the glass
+        // reflects the same share.
+        let back = fresnel(f.cos_t, 1.5);
+        assert!((back.reflectance - f.reflectance).abs() < 1e-5, "{degrees}");
+    }
+    // pbrt-v4's eta = n_t / n_i = 1.5 for the same boundary would be total internal
+    // reflection already at 45 degrees: the ratio's direction matters.
+    assert_eq!(fresnel(45f32.to_radians().cos(), 1.5).reflectance, 1.0);
+}
+
+#[test]
+fn power_heuristic_is_the_counted_form_with_one_sample_each() {
+    use render_lessons::pathtrace::mis::{power_heuristic, power_heuristic_with_counts};
+    let values = [
+        0.0f32,
+        -1.0,
+        1e-30,
+        0.2,
+        0.3,
+        1.0,
+        6.535,
+        1e30,
+        f32::INFINITY,
+        f32::NAN,
+    ];
+    for a in values {
+        for b in values {
+            let one = power_heuristic(a, b);
+            let counted = power_heuristic_with_counts(1, a, 1, b);
+            assert_eq!(one.to_bits(), counted.to_bits(), "{a} {b}");
+        }
+    }
+    // Veach's form with counts, against f64: (n_a p_a)^2 / ((n_a p_a)^2 + (n_b p_b)^2),
+    // and the weights of one direction add up to 1.
+    for (n_a, p_a, n_b, p_b) in [(4, 0.5f32, 1, 1.5f32), (1, 2.0, 16, 0.1), (3, 0.7, 5, 0.7)] {
+        let w_a = power_heuristic_with_counts(n_a, p_a, n_b, p_b);
+        let w_b = power_heuristic_with_counts(n_b, p_b, n_a, p_a);
+        let (a, b) = (
+            f64::from(n_a) * f64::from(p_a),
+            f64::from(n_b) * f64::from(p_b),
+        );
+        let exact = a * a / (a * a + b * b);
+        assert!((f64::from(w_a) - exact).abs() < 1e-6, "{w_a} vs {exact}");
+        assert!((w_a + w_b - 1.0).abs() < 1e-6);
+    }
+    // A strategy that drew no sample gets no weight.
+    assert_eq!(power_heuristic_with_counts(0, 1.0, 1, 1.0), 0.0);
+    assert_eq!(power_heuristic_with_counts(1, 1.0, 0, 1.0), 1.0);
 }
 
 #[test]
@@ -1646,7 +1705,7 @@ fn the_light_sample_exercises_are_the_crates_numbers() {
     assert!((quad.area() - 1017.6).abs() < 0.05, "{}", quad.area());
     let page = "10_5_next_event.md";
     let contribution = |p: Vec3| {
-        let pdf = light::pdf(&light.shape, p, centre, quad.normal(), SphereSampling::Area);
+        let pdf = LightShape::Quad(*quad).pdf(p, centre, quad.normal());
         let to_light = (centre - p).normalize();
         let cos = to_light.dot(Vec3::Y);
         let f_r = render_lessons::material::diffuse_brdf(floor.colour()).x;

@@ -13,7 +13,7 @@ use render_lessons::bvh::{Bvh, BvhScene, MAX_DEPTH, Node, NodeKind};
 use render_lessons::raster::mesh::Mesh;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
-use render_lessons::shapes::{Aabb, Instance, Plane, Quadric, Shape, Sphere, Triangle};
+use render_lessons::shapes::{Aabb, Cylinder, Instance, Plane, Quadric, Shape, Sphere, Triangle};
 use render_lessons::transform::Transform;
 
 /// A small deterministic generator (xorshift64*), so every run tests the same rays.
@@ -145,10 +145,9 @@ fn random_soup(rng: &mut Rng, n: usize) -> Vec<Object> {
                         Shape::Aabb(Aabb::new(Vec3::splat(-0.5), Vec3::splat(0.5)).unwrap())
                     };
                     let m = Transform::scale(rng.range(0.2, 2.0), rng.range(0.2, 2.0), 1.0)
-                        .unwrap()
-                        .then(Transform::rotation_y(rng.range(0.0, 6.0)).unwrap())
-                        .then(Transform::rotation_x(rng.range(0.0, 6.0)).unwrap())
-                        .then(Transform::translation(c.x, c.y, c.z).unwrap());
+                        .then(Transform::rotation_y(rng.range(0.0, 6.0)))
+                        .then(Transform::rotation_x(rng.range(0.0, 6.0)))
+                        .then(Transform::translation(c.x, c.y, c.z));
                     Shape::Instance(Box::new(Instance::new(inner, m).unwrap()))
                 }
             };
@@ -548,4 +547,35 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     let sky = Vec3::splat(0.1).to_array().map(f32::to_bits);
     let seen = through_list.iter().filter(|&&p| p != sky).count();
     assert!(seen > through_list.len() / 2, "{seen} pixels see the scene");
+}
+
+#[test]
+fn same_hits_as_the_list_with_capped_cylinders() {
+    // Capped cylinders are bounded: in the tree, as such and placed by instances,
+    // among the random soup; the tree finds what the list finds.
+    let mut rng = Rng(4);
+    let mut objects = random_soup(&mut rng, 300);
+    for k in 0..200 {
+        let c = rng.point(10.0);
+        let can = Cylinder::new(
+            rng.range(0.1, 1.0),
+            -rng.range(0.0, 1.0),
+            rng.range(0.1, 1.5),
+        );
+        let can = Shape::from(can.unwrap());
+        let m = if k % 2 == 0 {
+            Transform::translation(c.x, c.y, c.z)
+        } else {
+            Transform::rotation_x(rng.range(0.0, 6.0))
+                .then(Transform::rotation_z(rng.range(0.0, 6.0)))
+                .then(Transform::translation(c.x, c.y, c.z))
+        };
+        objects.push(object(Shape::from(Instance::new(can, m).unwrap())));
+    }
+    objects.push(object(Shape::from(Cylinder::new(0.7, -1.0, 2.0).unwrap())));
+    let scene = scene(objects);
+    assert!(Bvh::build(scene.objects()).unbounded().is_empty());
+    let rays = random_rays(&mut rng, 4000, 12.0, 10.0);
+    let hits = assert_same_answers(&scene, &rays);
+    assert!(hits > 1500, "{hits} hits");
 }

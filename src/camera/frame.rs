@@ -100,11 +100,17 @@ impl Frame {
     }
 
     /// A frame from a basis built elsewhere (for example [`camera_basis_as_on_slide`]).
-    pub fn from_basis(position: Vec3, basis: Basis) -> Result<Frame> {
-        Ok(Frame {
-            position: finite3("position", position)?,
-            basis,
-        })
+    ///
+    /// Cannot fail for a finite `position`, so it returns the frame itself, as the
+    /// slide transforms do ([`crate::transform::Transform`]); a NaN or infinite one
+    /// is the caller's bug and panics naming `position`. A position the user types
+    /// goes through [`Frame::look`] or [`Frame::look_at`], which return an error.
+    pub fn from_basis(position: Vec3, basis: Basis) -> Frame {
+        assert!(
+            position.is_finite(),
+            "position must be finite (got {position})"
+        );
+        Frame { position, basis }
     }
 
     /// The camera position p.

@@ -24,14 +24,16 @@ use glam::Vec3;
 
 use crate::basis::Basis;
 use crate::material::Material;
-use crate::pathtrace::light;
+use crate::pathtrace::light::LightShape;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::next_event::{Start, direct_light};
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
-use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
+use crate::sampling::{
+    cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
+};
 use crate::scene::Intersect;
 use crate::shapes::Hit;
 
@@ -273,8 +275,8 @@ fn emission_weight(
         Previous::Mis { from, pdf } => {
             let shape = &scene.objects()[index].shape;
             let choose = 1.0 / scene.emitters().len() as f32;
-            let light_pdf =
-                choose * light::pdf(shape, from, hit.point, hit.normal, s.sphere_lights);
+            let light = LightShape::new(shape, s.sphere_lights);
+            let light_pdf = choose * light.map_or(0.0, |l| l.pdf(from, hit.point, hit.normal));
             power_heuristic(pdf, light_pdf)
         }
     }
@@ -300,12 +302,12 @@ fn diffuse_bounce(n: Vec3, albedo: Vec3, rng: &mut Rng, s: &Settings) -> (Vec3, 
     match s.sampling {
         Sampling::UniformHemisphere => {
             let local = uniform_hemisphere(u);
-            let pdf = 1.0 / std::f32::consts::TAU;
+            let pdf = uniform_hemisphere_pdf(local.z);
             (to_unit(frame, local, n), 2.0 * albedo * local.z, pdf)
         }
         _ => {
             let local = cosine_hemisphere(u);
-            let pdf = local.z / std::f32::consts::PI;
+            let pdf = cosine_hemisphere_pdf(local.z);
             (to_unit(frame, local, n), albedo, pdf)
         }
     }

@@ -10,6 +10,13 @@
 //!   with sin theta_max = r / |c - p| (pbrt-v3 section 14.2.2). Every sample then
 //!   lands on the cap p can see, (1 - r/D)/2 of the sphere's area from a distance D
 //!   to its centre; area sampling wastes the other (1 + r/D)/2 on the hidden side.
+//!
+//! Each strategy is a function beside its density (`sphere_area` and
+//! `sphere_area_pdf`, `sphere_cone` and `sphere_cone_pdf`, `quad_area` and
+//! `quad_area_pdf`), and [`LightShape`] holds a light's shape with the strategy its
+//! kind allows: a sphere by area or by cone, a quad by area. `tests/10_densities.rs`
+//! checks that each density integrates to 1 over the directions and matches a
+//! histogram of samples.
 
 use std::f32::consts::{PI, TAU};
 
@@ -88,40 +95,117 @@ fn sample_cone(axis: Vec3, one_minus_cos: f32, u: Vec2) -> Vec3 {
 }
 // ANCHOR_END: cone
 
-/// A point of `shape` (a sphere or a quad; `None` for any other shape) chosen from
-/// `p` with the uniform numbers `u`.
-pub fn sample(shape: &Shape, p: Vec3, u: Vec2, strategy: SphereSampling) -> Option<LightPoint> {
-    match shape {
-        Shape::Sphere(s) => match (strategy, cone(p, s)) {
-            (SphereSampling::Cone, Some((axis, omc))) => {
-                let ray = Ray::new(p, sample_cone(axis, omc, u)).ok()?;
-                let hit = s.hit(&ray, Interval::AHEAD)?;
-                let pdf = 1.0 / (TAU * omc);
-                pdf.is_finite().then_some(LightPoint {
-                    point: hit.point,
-                    normal: hit.normal,
-                    error: hit.error,
-                    pdf,
-                })
-            }
-            _ => {
-                let normal = uniform_sphere(u);
-                let (point, error) = s.surface_point(normal);
-                let pdf = area_to_solid_angle(p, point, normal, sphere_area(s))?;
-                Some(LightPoint {
-                    point,
-                    normal,
-                    error,
-                    pdf,
-                })
-            }
-        },
-        Shape::Quad(q) => quad_point(q, p, u),
-        _ => None,
+/// A light's shape with the strategy that chooses its points: each kind of shape
+/// has its own strategies, so a quad is never asked how a sphere is sampled.
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use render_lessons::pathtrace::light::{LightShape, SphereSampling};
+/// use render_lessons::shapes::{Quad, Shape, Sphere};
+///
+/// let bulb = Shape::from(Sphere::new(Vec3::new(0.0, 3.0, 0.0), 1.0)?);
+/// let light = LightShape::new(&bulb, SphereSampling::Cone).unwrap();
+/// let y = light.sample(Vec3::ZERO, Vec2::new(0.3, 0.6)).unwrap();
+/// // The density the sample reports is the one `pdf` gives for its point: what MIS needs.
+/// assert_eq!(light.pdf(Vec3::ZERO, y.point, y.normal), y.pdf);
+///
+/// // A quad has one strategy; the spheres' choice does not reach it.
+/// let panel = Shape::from(Quad::new(Vec3::new(-1.0, 3.0, -1.0), 2.0 * Vec3::X, 2.0 * Vec3::Z)?);
+/// assert!(matches!(LightShape::new(&panel, SphereSampling::Cone), Some(LightShape::Quad(_))));
+/// # Ok::<(), render_lessons::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightShape {
+    /// A sphere, sampled by area or by the cone it subtends.
+    Sphere(Sphere, SphereSampling),
+    /// A quad, sampled uniformly by area, its only strategy.
+    Quad(Quad),
+}
+
+impl LightShape {
+    /// `shape` as a light, spheres sampled by `spheres`; `None` for a shape no
+    /// strategy here can sample (only spheres and quads can be lights).
+    pub fn new(shape: &Shape, spheres: SphereSampling) -> Option<LightShape> {
+        match shape {
+            Shape::Sphere(s) => Some(LightShape::Sphere(*s, spheres)),
+            Shape::Quad(q) => Some(LightShape::Quad(*q)),
+            _ => None,
+        }
+    }
+
+    /// A point of the light chosen from `p` with the uniform numbers `u`, by the
+    /// shape's strategy; `None` if none can be chosen (no finite density).
+    pub fn sample(&self, p: Vec3, u: Vec2) -> Option<LightPoint> {
+        match *self {
+            LightShape::Sphere(s, SphereSampling::Area) => sphere_area(&s, p, u),
+            LightShape::Sphere(s, SphereSampling::Cone) => sphere_cone(&s, p, u),
+            LightShape::Quad(q) => quad_area(&q, p, u),
+        }
+    }
+
+    /// The solid-angle density with which [`LightShape::sample`] would have chosen
+    /// the point `y` (normal `n`) from `p`; 0 where it cannot be chosen or the density
+    /// is not finite. Used for the MIS weight of a path that hits a light by BRDF
+    /// sampling.
+    pub fn pdf(&self, p: Vec3, y: Vec3, n: Vec3) -> f32 {
+        match *self {
+            LightShape::Sphere(s, SphereSampling::Area) => sphere_area_pdf(&s, p, y, n),
+            LightShape::Sphere(s, SphereSampling::Cone) => sphere_cone_pdf(&s, p, y, n),
+            LightShape::Quad(q) => quad_area_pdf(&q, p, y, n),
+        }
     }
 }
 
-fn quad_point(q: &Quad, p: Vec3, u: Vec2) -> Option<LightPoint> {
+/// A point of the sphere `s` chosen uniformly over its area, seen from `p`.
+pub fn sphere_area(s: &Sphere, p: Vec3, u: Vec2) -> Option<LightPoint> {
+    let normal = uniform_sphere(u);
+    let (point, error) = s.surface_point(normal);
+    let pdf = area_to_solid_angle(p, point, normal, sphere_area_of(s))?;
+    Some(LightPoint {
+        point,
+        normal,
+        error,
+        pdf,
+    })
+}
+
+/// The solid-angle density at `p` of [`sphere_area`] choosing `y` (normal `n`):
+/// |y - p|^2 / (A |cos theta_l|), A = 4 pi r^2; 0 where it is not finite.
+pub fn sphere_area_pdf(s: &Sphere, p: Vec3, y: Vec3, n: Vec3) -> f32 {
+    finite_or_zero(area_to_solid_angle(p, y, n, sphere_area_of(s)))
+}
+
+/// A point of the sphere `s` chosen uniformly inside the cone of directions from `p`
+/// that meet it, the first point each direction meets; [`sphere_area`] where no
+/// cone exists (`p` inside the sphere, on it, or within 0.05 % of its radius).
+pub fn sphere_cone(s: &Sphere, p: Vec3, u: Vec2) -> Option<LightPoint> {
+    let Some((axis, omc)) = cone(p, s) else {
+        return sphere_area(s, p, u);
+    };
+    let ray = Ray::new(p, sample_cone(axis, omc, u)).ok()?;
+    let hit = s.hit(&ray, Interval::AHEAD)?;
+    let pdf = 1.0 / (TAU * omc);
+    pdf.is_finite().then_some(LightPoint {
+        point: hit.point,
+        normal: hit.normal,
+        error: hit.error,
+        pdf,
+    })
+}
+
+/// The solid-angle density at `p` of [`sphere_cone`] choosing `y` (normal `n`):
+/// 1 / (2 pi (1 - cos theta_max)) for every point of the visible cap, whatever `y`
+/// (the caller passes a point the cone can reach); [`sphere_area_pdf`] where no cone
+/// exists; 0 where it is not finite.
+pub fn sphere_cone_pdf(s: &Sphere, p: Vec3, y: Vec3, n: Vec3) -> f32 {
+    match cone(p, s) {
+        Some((_, omc)) => finite_or_zero(Some(1.0 / (TAU * omc))),
+        None => sphere_area_pdf(s, p, y, n),
+    }
+}
+
+/// A point of the quad `q` chosen uniformly over its area, seen from `p`.
+pub fn quad_area(q: &Quad, p: Vec3, u: Vec2) -> Option<LightPoint> {
     let point = q.point(u.x, u.y);
     let pdf = area_to_solid_angle(p, point, q.normal(), q.area())?;
     Some(LightPoint {
@@ -132,21 +216,17 @@ fn quad_point(q: &Quad, p: Vec3, u: Vec2) -> Option<LightPoint> {
     })
 }
 
-fn sphere_area(s: &Sphere) -> f32 {
+/// The solid-angle density at `p` of [`quad_area`] choosing `y` (normal `n`):
+/// |y - p|^2 / (A |cos theta_l|); 0 where it is not finite.
+pub fn quad_area_pdf(q: &Quad, p: Vec3, y: Vec3, n: Vec3) -> f32 {
+    finite_or_zero(area_to_solid_angle(p, y, n, q.area()))
+}
+
+fn sphere_area_of(s: &Sphere) -> f32 {
     4.0 * PI * s.radius() * s.radius()
 }
 
-/// The solid-angle density with which [`sample`] would have chosen the point `y`
-/// (normal `n`) of `shape` from `p`; 0 where it cannot be chosen or the density is
-/// not finite. Used for the MIS weight of a path that hits a light by BRDF sampling.
-pub fn pdf(shape: &Shape, p: Vec3, y: Vec3, n: Vec3, strategy: SphereSampling) -> f32 {
-    let pdf = match shape {
-        Shape::Sphere(s) => match (strategy, cone(p, s)) {
-            (SphereSampling::Cone, Some((_, omc))) => Some(1.0 / (TAU * omc)),
-            _ => area_to_solid_angle(p, y, n, sphere_area(s)),
-        },
-        Shape::Quad(q) => area_to_solid_angle(p, y, n, q.area()),
-        _ => None,
-    };
+/// The density if it is a finite number, else 0.
+fn finite_or_zero(pdf: Option<f32>) -> f32 {
     pdf.filter(|p| p.is_finite()).unwrap_or(0.0)
 }

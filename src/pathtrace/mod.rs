@@ -3,7 +3,8 @@
 //! [`crate::scene::Scene`] (objects with a [`crate::material::Material`] and emission):
 //!
 //! - [`rng`]: one deterministic random stream per pixel;
-//! - [`light`]: choosing points on lights (area, cone);
+//! - [`light`]: choosing points on lights (area, cone), each strategy beside its
+//!   density, and the strategies each light's shape allows;
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
 //! - [`estimator`]: the path, vertex by vertex, and the sum of its light;
 //! - [`record`]: paths recorded vertex by vertex, for figures;
@@ -30,7 +31,7 @@ pub mod scenes;
 pub mod settings;
 
 pub use estimator::{At, Path, Vertex, radiance};
-pub use light::SphereSampling;
+pub use light::{LightShape, SphereSampling};
 pub use progressive::{Accumulator, Passes, PixelSampling};
 pub use record::{PathVertex, RecordedPath, record_path};
 pub use rng::Rng;

@@ -5,11 +5,12 @@
 use glam::Vec3;
 
 use crate::material::diffuse_brdf;
-use crate::pathtrace::light;
+use crate::pathtrace::light::{LightPoint, LightShape};
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
+use crate::sampling::cosine_hemisphere_pdf;
 use crate::scene::Intersect;
 use crate::spawn::Offset;
 
@@ -64,7 +65,7 @@ pub(super) fn direct_light(
     let pick = ((rng.next_f32() * count as f32) as usize).min(count - 1);
     let light = &scene.objects()[scene.emitters()[pick]];
     let u = rng.next_vec2();
-    let y = light::sample(&light.shape, from.point, u, s.sphere_lights)?;
+    let y = LightShape::new(&light.shape, s.sphere_lights)?.sample(from.point, u)?;
     // Behind a lamp there is nothing to see, and no shadow ray to trace.
     let radiance = light.emission_seen(y.normal.dot(from.point - y.point) > 0.0);
     let seen = if radiance == Vec3::ZERO {
@@ -78,7 +79,7 @@ pub(super) fn direct_light(
     };
     let pdf = y.pdf / count as f32;
     let weight = match s.sampling {
-        Sampling::Mis => power_heuristic(pdf, cos / std::f32::consts::PI),
+        Sampling::Mis => power_heuristic(pdf, cosine_hemisphere_pdf(cos)),
         _ => 1.0,
     };
     let light = diffuse_brdf(albedo) * radiance * (cos * weight / pdf);
@@ -98,7 +99,7 @@ fn unoccluded(
     scene: &impl Intersect,
     from: Start,
     n: Vec3,
-    light: &light::LightPoint,
+    light: &LightPoint,
     offset: Offset,
 ) -> Option<f32> {
     let (y, n_l) = (light.point, light.normal);

@@ -87,11 +87,13 @@ impl Instance {
     /// Object-space ray: origin o' = M^-1 o (a point), direction d' = M^-1 d (a
     /// vector). Because M^-1 is affine, M^-1 (o + t d) = o' + t d': with d' left as it
     /// is, every point has the same `t` in both spaces, and the hit's `t` could be
-    /// returned unchanged. But d' is not of unit length under a scale, and [`Ray`]
-    /// always holds a unit direction (its `t` is a distance). So the object ray uses
-    /// d' / |d'|, and object-space distances are world `t` times the stretch |d'|:
-    /// the range is searched as (t_min |d'|, t_max |d'|) and the hit's `t` divided
-    /// by |d'|.
+    /// returned unchanged (pbrt's way; [`Ray::new_unnormalised`] makes that ray). Here
+    /// the object ray uses d' / |d'| instead, a unit direction like every other ray
+    /// of the course, and object-space distances are world `t` times the stretch
+    /// |d'|: the range is searched as (t_min |d'|, t_max |d'|) and the hit's `t`
+    /// divided by |d'|. The two round differently (about half of all hits differ in
+    /// the last bits of `t`, a rigid placement included), and the course's measured
+    /// numbers were taken this way.
     ///
     /// The hit point goes back by M as a point; the normal by the inverse transpose
     /// (M^-1)^T, then is normalised, which keeps it perpendicular to the surface

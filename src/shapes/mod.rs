@@ -1,8 +1,10 @@
 //! Ray / primitive intersection (Lecture 4): sphere, plane, axis-aligned box and
 //! triangle, each in its own file, each with the naive method next to the robust one
-//! (STABILITY cases S1, S2, S4 to S8).
+//! (STABILITY cases S1, S2, S4 to S8); then the quad, the quadrics, the capped
+//! cylinder, and instances of any of them placed by a transform.
 //!
-//! Every routine takes a [`Ray`] (finite origin, unit direction) and reports the
+//! Every routine takes a [`Ray`] (finite origin, a direction of any non-zero
+//! length: `t` is in lengths of it, a distance for a unit direction) and reports the
 //! nearest crossing with `t_min < t < t_max`. For finite input none of them panics or
 //! returns NaN: a comparison that meets a NaN always falls on the "miss" side.
 
@@ -12,6 +14,7 @@ use crate::float::gamma;
 use crate::ray::{Crossings, Interval, Ray};
 
 pub mod aabb;
+pub mod cylinder;
 pub mod instance;
 pub mod plane;
 pub mod prepared;
@@ -21,6 +24,7 @@ pub mod sphere;
 pub mod triangle;
 
 pub use aabb::Aabb;
+pub use cylinder::{Cylinder, CylinderPart};
 pub use instance::Instance;
 pub use plane::Plane;
 pub use prepared::PreparedRay;
@@ -32,7 +36,8 @@ pub use triangle::Triangle;
 /// Where a ray crosses a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
-    /// The ray parameter: the signed distance from the ray's origin.
+    /// The ray parameter, point = o + t d: the signed distance from the ray's origin
+    /// (in lengths of d for a ray made by [`Ray::new_unnormalised`]).
     pub t: f32,
     /// The point on the surface.
     pub point: Vec3,
@@ -94,6 +99,8 @@ enum Detail {
     Barycentric([f32; 3]),
     /// A box's face: the axis and the sign of its outward normal.
     Face { axis: usize, outward: f32 },
+    /// A capped cylinder's surface: the side or a cap.
+    Part(CylinderPart),
     /// An instance: its test is run again, over the same range, for the winner
     /// only (instances are rare; this keeps the candidate small).
     Instance { range: Interval },
@@ -148,6 +155,7 @@ pub enum Shape {
     Triangle(Triangle),
     Quadric(Quadric),
     Quad(Quad),
+    Cylinder(Cylinder),
     Instance(Box<Instance>),
 }
 
@@ -184,6 +192,12 @@ impl From<Quadric> for Shape {
 impl From<Quad> for Shape {
     fn from(shape: Quad) -> Shape {
         Shape::Quad(shape)
+    }
+}
+
+impl From<Cylinder> for Shape {
+    fn from(shape: Cylinder) -> Shape {
+        Shape::Cylinder(shape)
     }
 }
 
@@ -227,6 +241,13 @@ impl Shape {
                     detail: Detail::Face { axis, outward },
                 })
             }
+            Shape::Cylinder(c) => {
+                let (t, part) = c.nearest(ray.ray(), range)?;
+                Some(Candidate {
+                    t,
+                    detail: Detail::Part(part),
+                })
+            }
             Shape::Instance(i) => i.hit(ray.ray(), range).map(|hit| Candidate {
                 t: hit.t,
                 detail: Detail::Instance { range },
@@ -246,6 +267,7 @@ impl Shape {
             }
             (Shape::Triangle(tri), Detail::Barycentric(b)) => tri.hit_at(ray, t, b),
             (Shape::Aabb(b), Detail::Face { axis, outward }) => b.hit_at(ray, t, axis, outward),
+            (Shape::Cylinder(c), Detail::Part(part)) => c.hit_at(ray, t, part),
             (Shape::Sphere(s), _) => s.hit_at(ray, t),
             (Shape::Plane(p), _) => p.hit_at(ray, t),
             (Shape::Quad(q), _) => q.hit_at(ray, t),
@@ -265,6 +287,7 @@ impl Shape {
             Shape::Triangle(tri) => tri.crossings(ray),
             Shape::Quadric(q) => q.crossings(ray),
             Shape::Quad(q) => q.crossings(ray),
+            Shape::Cylinder(c) => c.crossings(ray),
             Shape::Instance(i) => i.crossings(ray),
         }
     }
@@ -279,6 +302,7 @@ impl Shape {
             Shape::Triangle(tri) => tri.normal_at(p),
             Shape::Quadric(q) => q.normal_at(p),
             Shape::Quad(q) => q.normal_at(p),
+            Shape::Cylinder(c) => c.normal_at(p),
             Shape::Instance(i) => i.normal_at(p),
         }
     }
@@ -294,6 +318,7 @@ impl Shape {
             Shape::Aabb(b) => Some(*b),
             Shape::Triangle(tri) => tri.bounds(),
             Shape::Quad(q) => q.bounds(),
+            Shape::Cylinder(c) => c.bounds(),
             Shape::Instance(i) => i.bounds(),
         }
     }

@@ -14,7 +14,9 @@ use render_lessons::pathtrace::progressive::render_progressive;
 use render_lessons::pathtrace::record::{PathVertex, RecordedPath, record_path};
 use render_lessons::pathtrace::scenes::SceneName;
 use render_lessons::pathtrace::{Passes, PixelSampling, Rng, Sampling, Settings, scenes};
-use render_lessons::sampling::{cosine_hemisphere, uniform_hemisphere};
+use render_lessons::sampling::{
+    cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
+};
 use render_lessons::scene::Scene;
 
 /// Writes `10_path.png`, `10_hemisphere.png` and the steps' renders.
@@ -403,8 +405,9 @@ pub fn hemisphere_figure() -> Result<Diagram> {
             .map(|t| plot(t, f(t)))
             .collect()
     };
-    let uniform = curve(|_| 1.0 / std::f32::consts::TAU);
-    let cosine = curve(|t| t.cos() / std::f32::consts::PI);
+    // In f32, cos(pi/2) rounds to just below 0: at the horizon the cosine is 0.
+    let uniform = curve(|t| uniform_hemisphere_pdf(t.cos().max(0.0)));
+    let cosine = curve(|t| cosine_hemisphere_pdf(t.cos().max(0.0)));
     for pair in uniform.windows(2) {
         d.line(pair[0], pair[1], palette::RAY, 1.5);
     }

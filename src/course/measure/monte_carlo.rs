@@ -23,7 +23,7 @@ use crate::course::chart::{Chart, Scale, log_log_slope};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::material::Material;
-use crate::pathtrace::light::{self, SphereSampling};
+use crate::pathtrace::light::{LightShape, SphereSampling};
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::pathtrace::{Rng, radiance};
 use crate::ray::Ray;
@@ -135,7 +135,8 @@ impl Setup {
     /// block a ray from the floor up to the light, so no shadow ray is needed.
     fn cone_sample(&self, u: Vec2) -> f64 {
         let p = Vec3::ZERO;
-        let Some(y) = light::sample(&self.light, p, u, SphereSampling::Cone) else {
+        let cone = LightShape::new(&self.light, SphereSampling::Cone);
+        let Some(y) = cone.and_then(|l| l.sample(p, u)) else {
             return 0.0;
         };
         let cos = Vec3::Y.dot((y.point - p).normalize_or_zero()).max(0.0);

@@ -25,8 +25,8 @@ use render_lessons::pathtrace::PixelSampling;
 use render_lessons::pathtrace::convergence::{Part, Renders, Study};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
-use render_lessons::pathtrace::scenes::SceneName;
 use render_lessons::scene::Scene;
+use render_lessons::scenes::path_tracing::SceneName;
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();

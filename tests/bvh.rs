@@ -510,8 +510,8 @@ fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) 
 #[test]
 fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     use render_lessons::material::Material;
-    use render_lessons::pathtrace::scenes::look_camera;
     use render_lessons::scenes::TORUS_OBJ;
+    use render_lessons::scenes::path_tracing::look_camera;
 
     let mut objects = Mesh::from_obj(std::path::Path::new(TORUS_OBJ))
         .unwrap()

@@ -5,8 +5,8 @@
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
 
-use crate::pathtrace::scenes::SceneName;
 use crate::pathtrace::settings::Sampling;
+use crate::scenes::path_tracing::SceneName;
 
 /// `--sampling uniform|cosine|nee|mis`.
 impl ValueEnum for Sampling {

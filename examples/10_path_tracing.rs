@@ -17,6 +17,7 @@ use clap::Parser;
 use indicatif::ProgressBar;
 use render_lessons::Result;
 use render_lessons::camera::Camera;
+use render_lessons::course::failure::LessonResult;
 use render_lessons::course::ladder_figure::ladder_figure;
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::path_flags::{LensFlags, PathFlags, StudyFlags};
@@ -59,7 +60,12 @@ fn main() -> ExitCode {
 /// pixel more samples of the estimator, `radiance` along a ray through the pixel
 /// (`Accumulator::render_pass`). Each image is written to `out` the moment it is
 /// finished (Ctrl-C keeps them), the reference after every pass: watch it sharpen.
-pub fn render(scene: &Scene, camera: &Camera, study: &Study, out: &Output) -> Result<Renders> {
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    study: &Study,
+    out: &Output,
+) -> LessonResult<Renders> {
     let bar = ProgressBar::new(study.samples());
     let top = study.ladder.last().copied().unwrap_or(0);
     let sampling = study.settings.sampling.flag();

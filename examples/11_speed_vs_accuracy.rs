@@ -38,17 +38,19 @@ use render_lessons::spawn::Offset;
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
-    lesson::run(|| match (&args.mesh, args.subdivide) {
-        (Some(path), subdivide) => {
-            let (text, image) = big_mesh(path, subdivide.unwrap_or(0))?;
+    lesson::run(|| match &args.mesh {
+        Some(path) => {
+            let (text, image) = big_mesh(path, args.subdivide.unwrap_or(0))?;
             lesson::print(&text);
-            args.output.image("11_mesh.png", &image)
+            args.output.image("11_mesh.png", &image)?;
+            Ok(())
         }
-        (None, Some(_)) => Err(Error::Invalid {
+        None if args.subdivide.is_some() => Err(Error::Invalid {
             param: "subdivide",
             reason: "needs --mesh: it splits that mesh's triangles",
-        }),
-        (None, None) => {
+        }
+        .into()),
+        None => {
             let quality = Quality::full_if(args.full);
             let charts = [ALL, &[("11_8_lessons", lessons as Measure)]].concat();
             lesson::stop_on_ctrl_c(); // Ctrl-C keeps the charts already written

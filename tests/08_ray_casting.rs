@@ -320,9 +320,9 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
         );
         // Without the feature, a lesson with two exercises still stops with the error.
         assert!(
-            mine::if_passing(Err::<(), _>(render_lessons::Error::Exercise {
-                report: message
-            }))
+            mine::if_passing(Err::<(), _>(
+                render_lessons::course::failure::Failure::Exercise { report: message }
+            ))
             .is_err()
         );
     }

@@ -146,7 +146,7 @@ fn a_refused_study_renders_nothing_first() {
     let mut passes = 0;
     let err = study.render(&scene, &camera, |_, _| {
         passes += 1;
-        Ok(())
+        Ok::<(), render_lessons::Error>(())
     });
     assert_eq!(err.err().map(|e| e.param().to_string()), Some("spp".into()));
     assert_eq!(passes, 0);
@@ -174,7 +174,7 @@ fn a_pass_with_no_finite_sample_is_an_error_not_a_black_image() {
         &settings,
         passes,
         &[4],
-        |_| Ok(()),
+        |_| Ok::<(), render_lessons::Error>(()),
     );
     assert_eq!(
         result.err().map(|e| e.param().to_string()),

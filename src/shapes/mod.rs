@@ -23,7 +23,7 @@ pub mod quadric;
 pub mod sphere;
 pub mod triangle;
 
-pub use aabb::Aabb;
+pub use aabb::{Aabb, FaceHit};
 pub use cylinder::{Cylinder, CylinderPart};
 pub use instance::Instance;
 pub use plane::Plane;
@@ -31,7 +31,7 @@ pub use prepared::PreparedRay;
 pub use quad::Quad;
 pub use quadric::Quadric;
 pub use sphere::Sphere;
-pub use triangle::Triangle;
+pub use triangle::{Barycentric, Triangle};
 
 /// Where a ray crosses a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,10 +95,10 @@ pub struct Candidate {
 enum Detail {
     /// Nothing: the point is o + t d (sphere, plane, quad, quadric).
     OnRay,
-    /// The barycentric coordinates (b0, b1, b2) of a triangle's point.
-    Barycentric([f32; 3]),
+    /// A triangle's crossing: the barycentric coordinates (b0, b1, b2) of its point.
+    Barycentric(Barycentric),
     /// A box's face: the axis and the sign of its outward normal.
-    Face { axis: usize, outward: f32 },
+    Face(FaceHit),
     /// A capped cylinder's surface: the side or a cap.
     Part(CylinderPart),
     /// An instance: its test is run again, over the same range, for the winner
@@ -227,20 +227,14 @@ impl Shape {
             Shape::Plane(p) => p.nearest(ray.ray(), range).map(Candidate::on_ray),
             Shape::Quad(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
             Shape::Quadric(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
-            Shape::Triangle(tri) => {
-                let (t, b0, b1, b2) = tri.watertight_prepared(ray, range)?;
-                Some(Candidate {
-                    t,
-                    detail: Detail::Barycentric([b0, b1, b2]),
-                })
-            }
-            Shape::Aabb(b) => {
-                let (t, axis, outward) = b.nearest_face(ray, range)?;
-                Some(Candidate {
-                    t,
-                    detail: Detail::Face { axis, outward },
-                })
-            }
+            Shape::Triangle(tri) => tri.watertight_prepared(ray, range).map(|c| Candidate {
+                t: c.t,
+                detail: Detail::Barycentric(c),
+            }),
+            Shape::Aabb(b) => b.nearest_face(ray, range).map(|face| Candidate {
+                t: face.t,
+                detail: Detail::Face(face),
+            }),
             Shape::Cylinder(c) => {
                 let (t, part) = c.nearest(ray.ray(), range)?;
                 Some(Candidate {
@@ -265,8 +259,8 @@ impl Shape {
             (Shape::Instance(i), Detail::Instance { range }) => {
                 i.hit(ray, range).unwrap_or_else(|| fallback(self, ray, t))
             }
-            (Shape::Triangle(tri), Detail::Barycentric(b)) => tri.hit_at(ray, t, b),
-            (Shape::Aabb(b), Detail::Face { axis, outward }) => b.hit_at(ray, t, axis, outward),
+            (Shape::Triangle(tri), Detail::Barycentric(c)) => tri.hit_at(ray, c),
+            (Shape::Aabb(b), Detail::Face(face)) => b.hit_at(ray, face),
             (Shape::Cylinder(c), Detail::Part(part)) => c.hit_at(ray, t, part),
             (Shape::Sphere(s), _) => s.hit_at(ray, t),
             (Shape::Plane(p), _) => p.hit_at(ray, t),

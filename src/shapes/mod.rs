@@ -24,7 +24,7 @@ pub mod sphere;
 pub mod triangle;
 
 pub use aabb::{Aabb, FaceHit};
-pub use cylinder::{Cylinder, CylinderPart};
+pub use cylinder::{Cylinder, CylinderPart, PartHit};
 pub use instance::Instance;
 pub use plane::Plane;
 pub use prepared::PreparedRay;
@@ -99,8 +99,8 @@ enum Detail {
     Barycentric(Barycentric),
     /// A box's face: the axis and the sign of its outward normal.
     Face(FaceHit),
-    /// A capped cylinder's surface: the side or a cap.
-    Part(CylinderPart),
+    /// A capped cylinder's crossing: the side or a cap.
+    Part(PartHit),
     /// An instance: its test is run again, over the same range, for the winner
     /// only (instances are rare; this keeps the candidate small).
     Instance { range: Interval },
@@ -235,13 +235,10 @@ impl Shape {
                 t: face.t,
                 detail: Detail::Face(face),
             }),
-            Shape::Cylinder(c) => {
-                let (t, part) = c.nearest(ray.ray(), range)?;
-                Some(Candidate {
-                    t,
-                    detail: Detail::Part(part),
-                })
-            }
+            Shape::Cylinder(c) => c.nearest(ray.ray(), range).map(|crossing| Candidate {
+                t: crossing.t,
+                detail: Detail::Part(crossing),
+            }),
             Shape::Instance(i) => i.hit(ray.ray(), range).map(|hit| Candidate {
                 t: hit.t,
                 detail: Detail::Instance { range },
@@ -261,7 +258,7 @@ impl Shape {
             }
             (Shape::Triangle(tri), Detail::Barycentric(c)) => tri.hit_at(ray, c),
             (Shape::Aabb(b), Detail::Face(face)) => b.hit_at(ray, face),
-            (Shape::Cylinder(c), Detail::Part(part)) => c.hit_at(ray, t, part),
+            (Shape::Cylinder(c), Detail::Part(crossing)) => c.hit_at(ray, crossing),
             (Shape::Sphere(s), _) => s.hit_at(ray, t),
             (Shape::Plane(p), _) => p.hit_at(ray, t),
             (Shape::Quad(q), _) => q.hit_at(ray, t),

@@ -80,11 +80,7 @@ impl TriangleMethod {
 /// result as the crate's method (and kept out of line like it), so that the two are
 /// timed alike and differ only by the epsilon.
 #[inline(never)]
-pub fn moller_trumbore_epsilon(
-    tri: &Triangle,
-    ray: &Ray,
-    range: Interval,
-) -> Option<Barycentric> {
+pub fn moller_trumbore_epsilon(tri: &Triangle, ray: &Ray, range: Interval) -> Option<Barycentric> {
     let [v0, v1, v2] = tri.vertices();
     let (o, d) = (ray.origin(), ray.direction());
     let (e1, e2) = (v1 - v0, v2 - v0);

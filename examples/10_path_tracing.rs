@@ -26,7 +26,8 @@ use render_lessons::pathtrace::PixelSampling;
 use render_lessons::pathtrace::convergence::{Part, Renders, Study};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
-use render_lessons::scene::Scene;
+use render_lessons::scene::{Intersect, Scene};
+use render_lessons::scenes::MeshScene;
 use render_lessons::scenes::path_tracing::SceneName;
 
 fn main() -> ExitCode {
@@ -40,6 +41,8 @@ fn main() -> ExitCode {
         let lens = (args.lens.aperture, args.lens.focus);
         let (scene, camera) = scene_and_camera(args.scene, size, lens)?;
         let study = args.study.study(args.path.settings(), threads)?;
+        // Every object on every ray while that stays cheap, else lesson 11's BVH.
+        let scene = MeshScene::new(scene, study.samples() * u64::from(args.width * args.height));
         // ANCHOR_END: setup
         let renders = render(&scene, &camera, &study, &args.output)?;
         let seconds = start.elapsed().as_secs_f64();
@@ -61,7 +64,7 @@ fn main() -> ExitCode {
 /// (`Accumulator::render_pass`). Each image is written to `out` the moment it is
 /// finished (Ctrl-C keeps them), the reference after every pass: watch it sharpen.
 pub fn render(
-    scene: &Scene,
+    scene: &impl Intersect,
     camera: &Camera,
     study: &Study,
     out: &Output,

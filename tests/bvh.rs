@@ -549,6 +549,28 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     assert!(seen > through_list.len() / 2, "{seen} pixels see the scene");
 }
 
+/// Lesson 10's `--scene teapot`: the Cornell box with the Newell teapot (4032
+/// triangles) in place of the mirror ball. The lesson draws it through the tree
+/// (`MeshScene`); here a small render through the list and through the tree are the
+/// same, bit for bit.
+#[test]
+fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
+    use render_lessons::scenes::MeshScene;
+    use render_lessons::scenes::path_tracing::SceneName;
+
+    let (list, camera) = SceneName::Teapot.build(16, 12).unwrap();
+    assert_eq!(list.objects().len(), 8 - 1 + 4032);
+    let tree = BvhScene::new(list.clone());
+    assert!(
+        tree.bvh().nodes().len() > 1000,
+        "a real tree over the teapot"
+    );
+    assert_eq!(path_traced(&tree, &camera), path_traced(&list, &camera));
+    // The lesson's own choice at its default size: the tree.
+    let rays = 160 * 120 * 64;
+    assert!(matches!(MeshScene::new(list, rays), MeshScene::Tree(_)));
+}
+
 #[test]
 fn same_hits_as_the_list_with_capped_cylinders() {
     // Capped cylinders are bounded: in the tree, as such and placed by instances,

@@ -151,10 +151,10 @@ pub enum MeshScene {
 
 impl MeshScene {
     /// `scene` as a plain list, or through a BVH (built under a spinner) when a
-    /// render of `pixels` rays would make more than [`BRUTE_FORCE_TESTS`] tests.
-    pub fn new(scene: Scene, pixels: u64) -> MeshScene {
+    /// render of `rays` camera rays would make more than [`BRUTE_FORCE_TESTS`] tests.
+    pub fn new(scene: Scene, rays: u64) -> MeshScene {
         let primitives = scene.objects().len();
-        if pixels.saturating_mul(primitives as u64) <= BRUTE_FORCE_TESTS {
+        if rays.saturating_mul(primitives as u64) <= BRUTE_FORCE_TESTS {
             return MeshScene::List(scene);
         }
         let message = format!("building a BVH over {primitives} primitives");

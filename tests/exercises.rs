@@ -825,9 +825,7 @@ mod checks {
     #[test]
     fn closest_rejects_mistakes() {
         fails_with(
-            check_closest(|ray: &Ray, shapes: &[Shape], range| {
-                each_hit(ray, shapes, range).next()
-            }),
+            check_closest(|ray: &Ray, shapes: &[Shape], range| each_hit(ray, shapes, range).next()),
             "first hit",
         );
         fails_with(

@@ -40,8 +40,9 @@ impl FrameLoop {
     pub fn run(&mut self, camera: &Camera, shade: impl Fn(&Ray) -> Vec3 + Sync) {
         let width = self.width as usize;
         let shade_row = |(y, row): (usize, &mut [Vec3])| {
-            for (x, pixel) in row.iter_mut().enumerate() {
-                *pixel = shade(&camera.ray(x as u32, y as u32));
+            let mut rays = camera.row(y as u32);
+            for pixel in row.iter_mut() {
+                *pixel = shade(&rays.next_ray());
             }
         };
         match &self.pool {

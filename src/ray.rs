@@ -76,6 +76,7 @@ impl Ray {
     }
 
     /// A ray from values the caller has already checked: finite, `direction` of unit length.
+    #[inline]
     pub(crate) fn from_checked(origin: Vec3, direction: Vec3) -> Ray {
         debug_assert!(origin.is_finite() && direction.is_normalized());
         Ray { origin, direction }

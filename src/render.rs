@@ -28,8 +28,9 @@ pub fn render(
     let progress = progress_bar(u64::from(width) * u64::from(height), height);
     let mut pixels = vec![Vec3::ZERO; width as usize * height as usize];
     let shade_row = |(y, row): (usize, &mut [Vec3])| {
-        for (x, pixel) in row.iter_mut().enumerate() {
-            *pixel = shade(&camera.ray(x as u32, y as u32));
+        let mut rays = camera.row(y as u32);
+        for pixel in row.iter_mut() {
+            *pixel = shade(&rays.next_ray());
         }
         progress.inc(1);
     };

@@ -279,7 +279,7 @@ fn fast_path_rays_are_the_readable_rays_bit_for_bit() {
         )
         .unwrap(),
     ];
-    let ortho = Camera::from(OrthoCamera::new(film(), cameras[2].frame().clone()));
+    let ortho = Camera::from(OrthoCamera::new(film(), *cameras[2].frame()));
     for py in 0..film().height() {
         let mut rays = ortho.row(py);
         for px in 0..film().width() {

@@ -20,7 +20,7 @@ use render_benches::frame::FrameLoop;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::plain::PlainScene;
 use render_lessons::raycast::shadowless;
-use render_lessons::scenes::{lesson08, lesson08_pinhole};
+use render_lessons::scenes::{still_life, still_life_pinhole};
 
 const CASTERS: [&str; 6] = ["c", "plain", "robust", "c-camera", "camera", "check"];
 
@@ -64,8 +64,8 @@ fn run(args: Vec<String>) -> Result<String, String> {
     let width = number(&args, 1, "WIDTH", 1920)?;
     let height = number(&args, 2, "HEIGHT", 1080)?;
     let frames = number(&args, 3, "FRAMES", 1)?;
-    let camera = lesson08_pinhole(width, height).map_err(|e| e.to_string())?;
-    let scene = lesson08(Vec3::ZERO).map_err(|e| e.to_string())?;
+    let camera = still_life_pinhole(width, height).map_err(|e| e.to_string())?;
+    let scene = still_life(Vec3::ZERO).map_err(|e| e.to_string())?;
     let plain = PlainScene::new(&scene).ok_or("lesson 08's scene has a shape plain lacks")?;
     let mut frame = FrameLoop::new(&camera, 1);
     if caster == "check" {

@@ -30,10 +30,10 @@ use render_lessons::course::measure::variance::{Seen, pixel_variance};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::pfm::{load_pfm, save_pfm};
 use render_lessons::pathtrace::progressive::rmse;
-use render_lessons::pathtrace::scenes;
 use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling};
 use render_lessons::pathtrace::{Settings, SphereSampling};
 use render_lessons::scene::Scene;
+use render_lessons::scenes::path_tracing;
 
 /// The lesson's settings (examples/10_path_tracing.rs with its defaults) with
 /// `sampling`: depth at most 8, Russian roulette, cone-sampled spheres.
@@ -54,7 +54,7 @@ fn cores() -> usize {
 // ANCHOR: samples_per_second
 fn samples_per_second(c: &mut Criterion) {
     let (width, height) = (1024, 768);
-    let (scene, camera) = scenes::cornell(width, height).expect("the Cornell box");
+    let (scene, camera) = path_tracing::cornell(width, height).expect("the Cornell box");
     let mut group = c.benchmark_group("path tracing, smallpt's Cornell box, 1024x768, 1 spp");
     group.sample_size(10);
     // One iteration takes a second or more: the same number in every sample.
@@ -115,7 +115,7 @@ fn source_hash() -> u64 {
         include_str!("../src/pathtrace/rng.rs"),
         include_str!("../src/pathtrace/roulette.rs"),
         include_str!("../src/scene.rs"),
-        include_str!("../src/pathtrace/scenes.rs"),
+        include_str!("../src/scenes/path_tracing.rs"),
         include_str!("../src/pathtrace/settings.rs"),
         include_str!("../src/sampling.rs"),
         include_str!("../src/spawn.rs"),
@@ -243,7 +243,7 @@ fn equal_time() {
     println!(
         "\nEqual-time comparison: smallpt's Cornell box, {WIDTH}x{HEIGHT}, {threads} thread(s)"
     );
-    let (scene, camera) = scenes::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let (scene, camera) = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
     let halves = REFERENCE_SEEDS.map(|seed| reference_half(&scene, &camera, seed));
     let reference = average(&halves[0], &halves[1]);
     // The halves are independent, each with error e_half; their difference has
@@ -390,7 +390,7 @@ const VARIANCE_SPP: u32 = 256;
 /// to a given error is proportional to sigma^2 times the time per sample, so MIS
 /// gains (sigma^2_a / sigma^2_MIS) x (time_a / time_MIS) where both are measured.
 fn variance_analysis() {
-    let (scene, camera) = scenes::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let (scene, camera) = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
     let methods = [
         ("(a) cosine (smallpt)", Sampling::Cosine),
         ("(b1) NEE", Sampling::NextEvent),

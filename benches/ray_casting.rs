@@ -24,16 +24,16 @@ use render_lessons::course::measure::plain::PlainScene;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
 use render_lessons::scene::Scene;
-use render_lessons::scenes::{lesson08, lesson08_pinhole};
+use render_lessons::scenes::{still_life, still_life_pinhole};
 
 const WIDTH: u32 = 1920;
 const HEIGHT: u32 = 1080;
 const PIXELS: usize = WIDTH as usize * HEIGHT as usize;
 
 fn setup() -> (Scene, PlainScene, Camera) {
-    let scene = lesson08(Vec3::ZERO).expect("the lesson's scene");
+    let scene = still_life(Vec3::ZERO).expect("the lesson's scene");
     let plain = PlainScene::new(&scene).expect("spheres, a plane, a box, a triangle");
-    let pinhole = lesson08_pinhole(WIDTH, HEIGHT).expect("the lesson's camera");
+    let pinhole = still_life_pinhole(WIDTH, HEIGHT).expect("the lesson's camera");
     (scene, plain, pinhole)
 }
 

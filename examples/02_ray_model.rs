@@ -22,7 +22,8 @@ fn main() -> ExitCode {
     lesson::run(|| {
         let ray = Ray::new(args.origin, args.direction)?;
         lesson::print(&numbers(&ray));
-        args.output.diagram("02_ray.png", &ray_figure(&ray)?)
+        args.output.diagram("02_ray.png", &ray_figure(&ray)?)?;
+        Ok(())
     })
 }
 

@@ -21,7 +21,8 @@ fn main() -> ExitCode {
     let Args { angle, b, output } = lesson::parse::<Args>();
     lesson::run(|| {
         lesson::print(&numbers(angle, b)?);
-        output.diagram("04_two_bases.png", &bases_figure(angle, b)?)
+        output.diagram("04_two_bases.png", &bases_figure(angle, b)?)?;
+        Ok(())
     })
 }
 

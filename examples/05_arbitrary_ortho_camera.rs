@@ -25,7 +25,8 @@ fn main() -> ExitCode {
         let cam = camera(args.width, args.height, p, d, k)?;
         lesson::print(&numbers(&cam, d, k));
         let figure = top_figure(&cam)?;
-        args.output.diagram("05_camera_from_above.png", &figure)
+        args.output.diagram("05_camera_from_above.png", &figure)?;
+        Ok(())
     })
 }
 

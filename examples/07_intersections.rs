@@ -76,9 +76,9 @@ pub fn methods(shape: &Shape, ray: &Ray) -> [(&'static str, Vec<f32>); 2] {
         Shape::Triangle(t) => [
             (
                 "Moller-Trumbore",
-                one(t.moller_trumbore(ray, line).map(|h| h.0)),
+                one(t.moller_trumbore(ray, line).map(|c| c.t)),
             ),
-            ("watertight", one(t.watertight(ray, line).map(|h| h.0))),
+            ("watertight", one(t.watertight(ray, line).map(|c| c.t))),
         ],
         Shape::Aabb(b) => [
             ("slab test", pair(b.slab(ray, line))),

@@ -22,7 +22,7 @@ use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Interval;
 use render_lessons::raycast::{lit, shadowless};
 use render_lessons::render::render;
-use render_lessons::scenes::{LESSON08_OBJECTS, lesson08, lesson08_cameras};
+use render_lessons::scenes::{STILL_LIFE_OBJECTS, still_life, still_life_cameras};
 use render_lessons::spawn::Offset;
 use render_lessons::{Error, Result};
 
@@ -73,13 +73,13 @@ pub fn images(
     far: Vec3,
     threads: Option<usize>,
 ) -> Result<[Framebuffer; IMAGES.len()]> {
-    let near = lesson08(Vec3::ZERO)?;
-    let [ortho, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
-    let far_scene = lesson08(far).map_err(|_| Error::Invalid {
+    let near = still_life(Vec3::ZERO)?;
+    let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
+    let far_scene = still_life(far).map_err(|_| Error::Invalid {
         param: "far",
         reason: "moves the scene out of f32's reach (its triangle loses its area)",
     })?;
-    let [_, far_pinhole] = lesson08_cameras(width, height, far)?;
+    let [_, far_pinhole] = still_life_cameras(width, height, far)?;
     let t = threads;
     Ok([
         render(&ortho, t, |r| shadowless(&near, r))?,
@@ -101,12 +101,12 @@ pub fn numbers(
     far: Vec3,
     images: &[Framebuffer; IMAGES.len()],
 ) -> Result<String> {
-    let near = lesson08(Vec3::ZERO)?;
-    let [ortho, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
+    let near = still_life(Vec3::ZERO)?;
+    let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
     let title =
         format!("Shadowless ray casting, {width} x {height} pixels: pixels showing each primitive");
     let cameras = [("orthographic", &ortho), ("pinhole", &pinhole)];
-    let coverage = coverage_table(&title, &near, &LESSON08_OBJECTS, &cameras);
+    let coverage = coverage_table(&title, &near, &STILL_LIFE_OBJECTS, &cameras);
     let [_, _, lambert, fixed, scaled] = images;
     let title = format!(
         "Shadow rays, scene moved by {}: pixels differing from the clean image",
@@ -136,8 +136,8 @@ pub fn my_shadowless_image(
     (width, height): (u32, u32),
     threads: Option<usize>,
 ) -> Result<Framebuffer> {
-    let scene = lesson08(Vec3::ZERO)?;
-    let [_, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
+    let scene = still_life(Vec3::ZERO)?;
+    let [_, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
     let shapes: Vec<_> = scene.objects().iter().map(|o| o.shape.clone()).collect();
     render(&pinhole, threads, |r| {
         match closest(r, &shapes, Interval::AHEAD) {
@@ -154,8 +154,8 @@ pub fn my_lambert_image(
     (width, height): (u32, u32),
     threads: Option<usize>,
 ) -> Result<Framebuffer> {
-    let scene = lesson08(Vec3::ZERO)?;
-    let [_, pinhole] = lesson08_cameras(width, height, Vec3::ZERO)?;
+    let scene = still_life(Vec3::ZERO)?;
+    let [_, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
     render(&pinhole, threads, |r| mine::lit_with(&scene, r, lambert))
 }
 

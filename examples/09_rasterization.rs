@@ -24,9 +24,9 @@ use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, difference};
 use render_lessons::raster::{check_segments, floor_settings, point_light, rasterize};
 use render_lessons::raster::{reference, tessellate};
-use render_lessons::scenes::{LESSON08_OBJECTS, TORUS_OBJ, lesson08, lesson08_pinhole};
-use render_lessons::scenes::{LessonMesh, MeshScene, lesson08_shadows};
-use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
+use render_lessons::scenes::{MeshScene, PlacedMesh, still_life_shadows};
+use render_lessons::scenes::{STILL_LIFE_OBJECTS, TORUS_OBJ, still_life, still_life_pinhole};
+use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
 use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, spawn::Offset};
 use render_lessons::{raycast::lit, render::render, scene::Scene};
 
@@ -35,11 +35,11 @@ fn main() -> ExitCode {
     lesson::run(|| {
         // The images it keeps, and as many again while it works (z-buffers, shadows).
         let ((width, height), threads) = args.image.check(2 * IMAGES.len() as u64)?;
-        let scene = lesson08(Vec3::ZERO)?;
-        let camera = lesson08_pinhole(width, height)?;
-        let shadows = lesson08_shadows(args.shadow_map_size, args.bias);
+        let scene = still_life(Vec3::ZERO)?;
+        let camera = still_life_pinhole(width, height)?;
+        let shadows = still_life_shadows(args.shadow_map_size, args.bias);
         check_segments(&scene, args.segments)?;
-        let mesh = lesson09_mesh(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
+        let mesh = mesh_on_the_floor(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
         let model = &mesh.model;
         let i = images(&scene, &camera, args.segments, shadows, model, threads)?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
@@ -67,16 +67,16 @@ pub fn images(
     mesh: &Model,
     threads: Option<usize>,
 ) -> Result<Lesson> {
-    let instances = tessellate(scene, segments)?; // modeling: vertex and triangle lists
+    let models = tessellate(scene, segments)?; // modeling: vertex and triangle lists
     let light = point_light(scene)?; // lighting
-    let pipeline = |instances: &[Model], shading, shadows| {
+    let pipeline = |models: &[Model], shading, shadows| {
         let settings = floor_settings(scene).with(shading, shadows);
-        rasterize(instances, camera, &light, &settings, threads) // transform ... shading
+        rasterize(models, camera, &light, &settings, threads) // transform ... shading
     };
-    let mapped = |bias| pipeline(&instances, PerPixel, Some(shadows.with_bias(bias)));
-    let floor_and_mesh = [instances[0].clone(), mesh.clone()];
+    let mapped = |bias| pipeline(&models, PerPixel, Some(shadows.with_bias(bias)));
+    let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
     let pixels = u64::from(camera.film().width()) * u64::from(camera.film().height());
-    let meshed = MeshScene::new(lesson09_mesh_scene(scene, mesh)?, pixels);
+    let meshed = MeshScene::new(floor_and_mesh(scene, mesh)?, pixels);
     let mesh_cast = match meshed {
         MeshScene::List(_) => "ray cast, floor + mesh",
         MeshScene::Tree(_) => "ray cast through a BVH, floor + mesh",
@@ -85,9 +85,9 @@ pub fn images(
     let ray_cast = t.time("ray cast, analytic scene", || {
         reference(scene, camera, threads)
     })?;
-    let per_vertex = pipeline(&instances, PerVertex, None)?;
+    let per_vertex = pipeline(&models, PerVertex, None)?;
     let per_pixel = t.time("rasterized, per-pixel shading", || {
-        pipeline(&instances, PerPixel, None)
+        pipeline(&models, PerPixel, None)
     })?;
     let shadow_ray = t.time("ray cast with shadow rays", || {
         render(camera, threads, |r| lit(scene, r, Offset::Scaled))
@@ -96,7 +96,7 @@ pub fn images(
     let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera, threads))?;
     drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes
     let mesh_raster = t.time("rasterized, floor + mesh", || {
-        pipeline(&floor_and_mesh, PerPixel, None)
+        pipeline(&floor_and_mesh_models, PerPixel, None)
     })?;
     let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
     // Each rasterized image against its ray-cast counterpart, away from silhouettes.
@@ -162,11 +162,11 @@ pub struct Lesson {
 pub fn numbers(
     scene: &Scene,
     segments: u32,
-    (mesh, file): (&LessonMesh, &str),
+    (mesh, file): (&PlacedMesh, &str),
     lesson: &Lesson,
 ) -> Result<String> {
-    let instances = tessellate(scene, segments)?;
-    let counts = triangle_table(&LESSON08_OBJECTS, &instances, mesh, file);
+    let models = tessellate(scene, segments)?;
+    let counts = triangle_table(&STILL_LIFE_OBJECTS, &models, mesh, file);
     let size = (lesson.images[0].width(), lesson.images[0].height());
     let compare = agreement_table(size, TOLERANCE, &lesson.agreements);
     Ok(format!("{counts}\n{compare}"))

@@ -17,6 +17,7 @@ use clap::Parser;
 use indicatif::ProgressBar;
 use render_lessons::Result;
 use render_lessons::camera::Camera;
+use render_lessons::course::failure::LessonResult;
 use render_lessons::course::ladder_figure::ladder_figure;
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::path_flags::{LensFlags, PathFlags, StudyFlags};
@@ -25,8 +26,9 @@ use render_lessons::pathtrace::PixelSampling;
 use render_lessons::pathtrace::convergence::{Part, Renders, Study};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
-use render_lessons::pathtrace::scenes::SceneName;
-use render_lessons::scene::Scene;
+use render_lessons::scene::{Intersect, Scene};
+use render_lessons::scenes::MeshScene;
+use render_lessons::scenes::path_tracing::SceneName;
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
@@ -39,6 +41,8 @@ fn main() -> ExitCode {
         let lens = (args.lens.aperture, args.lens.focus);
         let (scene, camera) = scene_and_camera(args.scene, size, lens)?;
         let study = args.study.study(args.path.settings(), threads)?;
+        // Every object on every ray while that stays cheap, else lesson 11's BVH.
+        let scene = MeshScene::new(scene, study.samples() * u64::from(args.width * args.height));
         // ANCHOR_END: setup
         let renders = render(&scene, &camera, &study, &args.output)?;
         let seconds = start.elapsed().as_secs_f64();
@@ -59,7 +63,12 @@ fn main() -> ExitCode {
 /// pixel more samples of the estimator, `radiance` along a ray through the pixel
 /// (`Accumulator::render_pass`). Each image is written to `out` the moment it is
 /// finished (Ctrl-C keeps them), the reference after every pass: watch it sharpen.
-pub fn render(scene: &Scene, camera: &Camera, study: &Study, out: &Output) -> Result<Renders> {
+pub fn render(
+    scene: &impl Intersect,
+    camera: &Camera,
+    study: &Study,
+    out: &Output,
+) -> LessonResult<Renders> {
     let bar = ProgressBar::new(study.samples());
     let top = study.ladder.last().copied().unwrap_or(0);
     let sampling = study.settings.sampling.flag();

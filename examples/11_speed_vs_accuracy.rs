@@ -32,23 +32,25 @@ use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, refe
 use render_lessons::raster::{TOLERANCE, point_light, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows};
-use render_lessons::scenes::{lesson09_mesh, lesson09_mesh_scene};
+use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
+use render_lessons::scenes::{still_life, still_life_pinhole, still_life_shadows};
 use render_lessons::spawn::Offset;
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
-    lesson::run(|| match (&args.mesh, args.subdivide) {
-        (Some(path), subdivide) => {
-            let (text, image) = big_mesh(path, subdivide.unwrap_or(0))?;
+    lesson::run(|| match &args.mesh {
+        Some(path) => {
+            let (text, image) = big_mesh(path, args.subdivide.unwrap_or(0))?;
             lesson::print(&text);
-            args.output.image("11_mesh.png", &image)
+            args.output.image("11_mesh.png", &image)?;
+            Ok(())
         }
-        (None, Some(_)) => Err(Error::Invalid {
+        None if args.subdivide.is_some() => Err(Error::Invalid {
             param: "subdivide",
             reason: "needs --mesh: it splits that mesh's triangles",
-        }),
-        (None, None) => {
+        }
+        .into()),
+        None => {
             let quality = Quality::full_if(args.full);
             let charts = [ALL, &[("11_8_lessons", lessons as Measure)]].concat();
             lesson::stop_on_ctrl_c(); // Ctrl-C keeps the charts already written
@@ -65,8 +67,8 @@ fn main() -> ExitCode {
 /// ray-traced image with shadow rays. The rasterizer's two knobs are swept: the
 /// tessellation of the spheres, and the resolution of the shadow map.
 pub fn lessons(quality: Quality) -> Result<Measured> {
-    let scene = lesson08(glam::Vec3::ZERO)?;
-    let camera = lesson08_pinhole(480, 270)?;
+    let scene = still_life(glam::Vec3::ZERO)?;
+    let camera = still_life_pinhole(480, 270)?;
     let light = point_light(&scene)?;
     let mask = reference(&scene, &camera, None)?.silhouettes;
     let repeats = quality.pick(2, 5);
@@ -75,7 +77,7 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     })?;
     let raster = |segments: u32, map: Option<u32>| -> Result<(f64, f64)> {
         let instances = tessellate(&scene, segments)?;
-        let shadows = map.map(|size| lesson08_shadows(size, 1.0));
+        let shadows = map.map(|size| still_life_shadows(size, 1.0));
         let settings = floor_settings(&scene).with(Shading::PerPixel, shadows);
         let (ms, image) = best_ms(repeats, || {
             rasterize(&instances, &camera, &light, &settings, None)
@@ -101,12 +103,12 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
 /// tree, ray cast 480 x 270 with shadow rays through it, each step timed. Returns
 /// the tables to print and the image.
 pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)> {
-    let scene = lesson08(glam::Vec3::ZERO)?;
-    let camera = lesson08_pinhole(480, 270)?;
+    let scene = still_life(glam::Vec3::ZERO)?;
+    let camera = still_life_pinhole(480, 270)?;
     let mut t = Timings::default();
-    let read = || lesson09_mesh(path, subdivisions).map_err(lesson::flag("--mesh"));
+    let read = || mesh_on_the_floor(path, subdivisions).map_err(lesson::flag("--mesh"));
     let mesh = t.time("read the OBJ file (and subdivide)", read)?;
-    let list = lesson09_mesh_scene(&scene, &mesh.model)?;
+    let list = floor_and_mesh(&scene, &mesh.model)?;
     let primitives = list.objects().len();
     let build = || BvhScene::new(list);
     let message = format!("building a BVH over {primitives} primitives");

@@ -39,8 +39,6 @@ pub enum Error {
     Singular { param: &'static str },
     /// A pixel holds NaN or infinity and must not be written to an image.
     NonFinitePixel { x: u32, y: u32 },
-    /// A student's coding exercise did not pass its check (the report says why).
-    Exercise { report: String },
     /// Reading or writing a file failed.
     Io { path: String, message: String },
     /// Triangle number `triangle` (0-based) refers to vertex `index`, but the mesh
@@ -68,14 +66,6 @@ pub enum Error {
         needed: u64,
         limit: u64,
         unit: &'static str,
-    },
-    /// The user pressed Ctrl-C; the work finished so far was kept.
-    Interrupted,
-    /// A name given for `param` matches none of the `choices`.
-    NoMatch {
-        param: &'static str,
-        value: String,
-        choices: Vec<String>,
     },
     /// A PFM image could not be read: `path` names the file (or the bytes), `message`
     /// says what is wrong with it.
@@ -106,14 +96,11 @@ impl Error {
             | Error::Singular { param }
             | Error::TooFew { param, .. }
             | Error::Invalid { param, .. }
-            | Error::TooMuch { param, .. }
-            | Error::NoMatch { param, .. } => param,
+            | Error::TooMuch { param, .. } => param,
             Error::UpParallelToDirection => "up",
-            Error::Interrupted => "interrupt",
             Error::NonFinitePixel { .. } => "pixel",
             Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
             Error::VertexIndex { .. } => "triangle",
-            Error::Exercise { .. } => "exercise",
         }
     }
 }
@@ -159,21 +146,10 @@ impl fmt::Display for Error {
             Error::Io { path, message } | Error::Pfm { path, message } => {
                 write!(f, "{path}: {message}")
             }
-            Error::Exercise { report } => write!(f, "{report}"),
             Error::TooFew { param, value, min } => {
                 write!(f, "{param} must be at least {min} (got {value})")
             }
             Error::Invalid { param, reason } => write!(f, "{param} {reason}"),
-            Error::Interrupted => write!(f, "interrupted (Ctrl-C)"),
-            Error::NoMatch {
-                param,
-                value,
-                choices,
-            } => write!(
-                f,
-                "{param} '{value}' matches none of: {}",
-                choices.join(", ")
-            ),
             Error::TooMuch {
                 param,
                 needed,

@@ -253,7 +253,7 @@ fn fast_path_rays_are_the_readable_rays_bit_for_bit() {
     // Lesson 08's camera, a camera at the origin (p = 0: B 0 + p is then -0 or 0 by
     // the signs of B), one placed at -0 coordinates, and a tilted one far away.
     let cameras = [
-        *render_lessons::scenes::lesson08_pinhole(96, 54)
+        *render_lessons::scenes::still_life_pinhole(96, 54)
             .unwrap()
             .pinhole()
             .unwrap(),

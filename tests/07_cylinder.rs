@@ -55,9 +55,9 @@ fn through_a_cap() {
     );
     // Slanted: in through the top, out through the side.
     let slant = ray([0.0, 0.0, 3.0], [0.6, 0.0, -0.8]);
-    let (t0, part0) = can().nearest(&slant, Interval::AHEAD).unwrap();
-    assert_eq!(part0, CylinderPart::Top);
-    assert!((t0 - 1.25).abs() < 1e-6);
+    let entry = can().nearest(&slant, Interval::AHEAD).unwrap();
+    assert_eq!(entry.part, CylinderPart::Top);
+    assert!((entry.t - 1.25).abs() < 1e-6);
     let t1 = can().crossings(&slant)[1];
     assert!(
         (slant.at(t1).x - 1.0).abs() < 1e-6,

@@ -15,7 +15,7 @@ use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::course::diagram::cross_section;
 use render_lessons::ray::{Interval, Ray};
-use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
+use render_lessons::shapes::{Aabb, Barycentric, Plane, Shape, Sphere, Triangle};
 
 fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
     Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
@@ -464,14 +464,12 @@ fn triangle_known_answers() {
     let t = Triangle::new(Vec3::ZERO, Vec3::X, Vec3::Y).unwrap();
     let r = ray([0.25, 0.5, 5.0], [0.0, 0.0, -1.0]);
     // b1 = x = 0.25, b2 = y = 0.5, b0 = 0.25, t = 5.
-    assert_eq!(
-        t.moller_trumbore(&r, Interval::AHEAD),
-        Some((5.0, 0.25, 0.5))
-    );
-    assert_eq!(
-        t.watertight(&r, Interval::AHEAD),
-        Some((5.0, 0.25, 0.25, 0.5))
-    );
+    let crossing = Barycentric {
+        t: 5.0,
+        b: [0.25, 0.25, 0.5],
+    };
+    assert_eq!(t.moller_trumbore(&r, Interval::AHEAD), Some(crossing));
+    assert_eq!(t.watertight(&r, Interval::AHEAD), Some(crossing));
     let h = t.hit(&r, Interval::AHEAD).unwrap();
     assert_eq!(h.point, Vec3::new(0.25, 0.5, 0.0));
     assert_eq!(h.normal, Vec3::Z);
@@ -737,8 +735,8 @@ proptest! {
                 prop_assert!((h.point - a).dot(tri.normal()).abs() < tol(h.t), "triangle {:?}", h);
                 prop_assert!((h.point - r.at(h.t)).length() < tol(h.t));
             }
-            if let Some((t, b1, b2)) = tri.moller_trumbore(&r, Interval::AHEAD) {
-                prop_assert!(t.is_finite() && b1.is_finite() && b2.is_finite());
+            if let Some(c) = tri.moller_trumbore(&r, Interval::AHEAD) {
+                prop_assert!(c.t.is_finite() && c.b.iter().all(|b| b.is_finite()));
             }
         }
     }
@@ -838,7 +836,7 @@ fn lesson_crossings_are_each_shapes_own_roots() {
                 .map_or(vec![], |(a, b)| vec![a, b]),
             Shape::Triangle(t) => t
                 .watertight(ray, Interval::new(all.0, all.1))
-                .map(|h| vec![h.0])
+                .map(|h| vec![h.t])
                 .unwrap_or_default(),
             Shape::Quadric(q) => q.roots_stable(ray).to_vec(),
             _ => panic!("{}: no root finder listed", case.name),

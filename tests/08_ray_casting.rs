@@ -14,7 +14,7 @@ use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
 use render_lessons::sampling::{cosine_hemisphere, grid};
 use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
-use render_lessons::scenes::{lesson08, lesson08_cameras};
+use render_lessons::scenes::{still_life, still_life_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
 use render_lessons::spawn::{Offset, offset_ray_origin};
 
@@ -77,8 +77,8 @@ fn closest_hit_wins_whatever_the_list_order() {
 
 #[test]
 fn the_same_image_whatever_the_thread_count() {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let [_, pinhole] = lesson08_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let [_, pinhole] = still_life_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
     let shade = |r: &Ray| render_lessons::raycast::lit(&scene, r, Offset::Scaled);
     let one = render(&pinhole, Some(1), shade).unwrap();
     for threads in [Some(2), Some(3), None] {
@@ -94,8 +94,8 @@ fn the_same_image_whatever_the_thread_count() {
 fn the_lambert_image_matches_the_book_within_one_level() {
     // The committed figure is the reference; a render on this machine may differ from
     // it by rounding in the last bit, never by more than one 8-bit level per channel.
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let [_, pinhole] = lesson08_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let [_, pinhole] = still_life_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
     let ours = render(&pinhole, None, |r| {
         render_lessons::raycast::lit(&scene, r, Offset::Scaled)
     })
@@ -134,8 +134,8 @@ fn every_pixel_is_finite_and_in_range() {
 
 #[test]
 fn orthographic_sees_no_sky_and_pinhole_does() {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let [ortho, pinhole] = lesson08_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let [ortho, pinhole] = still_life_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
     let sky = |camera: &Camera| {
         render(camera, None, |r| shadowless(&scene, r))
             .unwrap()
@@ -266,8 +266,8 @@ fn ray_casting_an_orthographic_disc() {
 fn a_point_in_shadow_gets_only_the_ambient_share() {
     // Pixel (76, 162) of the default image lies in the red sphere's shadow on the floor
     // (albedo 0.75, 0.75, 0.7): its colour is the albedo times AMBIENT, nothing more.
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let [_, pinhole] = lesson08_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let [_, pinhole] = still_life_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
     let c = render_lessons::raycast::lit(&scene, &pinhole.ray(76, 162), Offset::Scaled);
     let expected = Vec3::new(0.75, 0.75, 0.7) * render_lessons::lighting::AMBIENT;
     assert!(
@@ -320,9 +320,9 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
         );
         // Without the feature, a lesson with two exercises still stops with the error.
         assert!(
-            mine::if_passing(Err::<(), _>(render_lessons::Error::Exercise {
-                report: message
-            }))
+            mine::if_passing(Err::<(), _>(
+                render_lessons::course::failure::Failure::Exercise { report: message }
+            ))
             .is_err()
         );
     }

@@ -10,11 +10,11 @@
 
 use glam::{Vec2, Vec3};
 use render_lessons::material::Material;
-use render_lessons::pathtrace::scenes::look_camera;
 use render_lessons::pathtrace::{Rng, Settings, radiance};
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::sampling::uniform_sphere;
 use render_lessons::scene::{Object, Scene};
+use render_lessons::scenes::path_tracing::look_camera;
 use render_lessons::shapes::{
     Aabb, Cylinder, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
 };

@@ -22,9 +22,9 @@ use render_lessons::course::report::num;
 use render_lessons::error::Error;
 use render_lessons::raster::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::raster::{FaceCounts, Mesh, fan, patch_point, reference, teapot_obj};
-use render_lessons::scenes::lesson09_mesh_scene;
-use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, asset_path, lesson08};
-use render_lessons::scenes::{lesson08_pinhole, lesson08_shadows, lesson09_mesh};
+use render_lessons::scenes::floor_and_mesh;
+use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, asset_path, still_life};
+use render_lessons::scenes::{mesh_on_the_floor, still_life_pinhole, still_life_shadows};
 
 /// A scratch folder, and a function that writes `text` to a file of it.
 fn scratch() -> (tempfile::TempDir, impl Fn(&str, &str) -> PathBuf) {
@@ -235,7 +235,7 @@ fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted()
     let huge = write("huge.obj", "v 0 0 0\nv 1e38 0 0\nv 0 1e38 0\nf 1 2 3\n");
     let err = Mesh::from_obj(&huge).unwrap_err();
     assert!(err.to_string().contains("all 1 are degenerate"), "{err}");
-    let err = lesson09_mesh(&huge, 0).unwrap_err();
+    let err = mesh_on_the_floor(&huge, 0).unwrap_err();
     assert!(err.to_string().contains("huge.obj"), "{err}");
 }
 
@@ -423,10 +423,10 @@ fn teapot_load_statistics() {
 /// Lesson 09 at a small size with `mesh` (the book's scene, spheres of 16
 /// segments, a 256^2 shadow map).
 fn small_lesson(mesh: &Path, subdivisions: u32) -> (String, lesson::Lesson) {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let camera = lesson08_pinhole(160, 90).unwrap();
-    let mesh = lesson09_mesh(mesh, subdivisions).unwrap();
-    let shadows = lesson08_shadows(256, 1.0);
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(160, 90).unwrap();
+    let mesh = mesh_on_the_floor(mesh, subdivisions).unwrap();
+    let shadows = still_life_shadows(256, 1.0);
     let lesson = lesson::images(&scene, &camera, 16, shadows, &mesh.model, None).unwrap();
     let file = "teapot.obj";
     (
@@ -438,9 +438,9 @@ fn small_lesson(mesh: &Path, subdivisions: u32) -> (String, lesson::Lesson) {
 /// How many pixels of `camera`'s view see a mesh triangle (not the floor, not
 /// the sky) in lesson 09's floor-and-mesh scene.
 fn mesh_pixels(mesh: &Path, camera: &Camera) -> usize {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let model = lesson09_mesh(mesh, 0).unwrap().model;
-    let floor_and_mesh = lesson09_mesh_scene(&scene, &model).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let model = mesh_on_the_floor(mesh, 0).unwrap().model;
+    let floor_and_mesh = floor_and_mesh(&scene, &model).unwrap();
     let (w, h) = (camera.film().width(), camera.film().height());
     (0..h)
         .flat_map(|y| (0..w).map(move |x| (x, y)))
@@ -455,7 +455,7 @@ fn mesh_pixels(mesh: &Path, camera: &Camera) -> usize {
 fn the_teapot_in_lesson_09() {
     let teapot = asset_path(Path::new(TEAPOT_OBJ));
     let (numbers, lesson) = small_lesson(&teapot, 0);
-    let camera = lesson08_pinhole(160, 90).unwrap();
+    let camera = still_life_pinhole(160, 90).unwrap();
     let covered = mesh_pixels(&teapot, &camera);
     let text = format!("{numbers}\nteapot pixels (ray cast, 160 x 90): {covered}\n");
     insta::assert_snapshot!("teapot_in_lesson_09", text);
@@ -471,13 +471,13 @@ fn the_teapot_in_lesson_09() {
 }
 
 #[test]
-fn lesson09_mesh_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
+fn mesh_on_the_floor_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
     use render_lessons::transform::Transform;
-    let torus = lesson09_mesh(Path::new(TORUS_OBJ), 0).unwrap().model;
+    let torus = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;
     let placed = Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
     assert_eq!(torus.model, placed);
     // The teapot, centred and scaled: its box's longest half side is the torus's 1.4.
-    let teapot = lesson09_mesh(Path::new(TEAPOT_OBJ), 0).unwrap().model;
+    let teapot = mesh_on_the_floor(Path::new(TEAPOT_OBJ), 0).unwrap().model;
     let back = placed.inverse().unwrap();
     let in_box: Vec<Vec3> = teapot
         .mesh
@@ -499,10 +499,10 @@ fn lesson09_mesh_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
 
 #[test]
 fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_same_image() {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let camera = lesson08_pinhole(96, 54).unwrap();
-    let model = lesson09_mesh(Path::new(TORUS_OBJ), 0).unwrap().model;
-    let floor_and_torus = lesson09_mesh_scene(&scene, &model).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(96, 54).unwrap();
+    let model = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;
+    let floor_and_torus = floor_and_mesh(&scene, &model).unwrap();
     // The book's render, 480 x 270 x 1025 primitives: the list.
     let list = MeshScene::new(floor_and_torus.clone(), 480 * 270);
     assert!(matches!(list, MeshScene::List(_)));
@@ -520,10 +520,10 @@ fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_sa
 fn too_much_subdivision_is_refused_before_any_work() {
     let torus = Path::new(TORUS_OBJ);
     // 11 levels: more than the 10 allowed.
-    let err = lesson09_mesh(torus, 11).unwrap_err();
+    let err = mesh_on_the_floor(torus, 11).unwrap_err();
     assert_eq!(err.param(), "subdivide");
     // 10 levels of the torus: 1024 x 4^10 triangles, a terabyte.
-    let err = lesson09_mesh(torus, 10).unwrap_err();
+    let err = mesh_on_the_floor(torus, 10).unwrap_err();
     assert!(
         matches!(
             err,
@@ -557,7 +557,7 @@ fn a_million_triangle_obj_loads() {
 #[test]
 fn the_subdivided_teapot_renders_through_the_tree() {
     let teapot = asset_path(Path::new(TEAPOT_OBJ));
-    let mesh = lesson09_mesh(&teapot, 4).unwrap();
+    let mesh = mesh_on_the_floor(&teapot, 4).unwrap();
     assert_eq!(mesh.model.mesh.triangles.len(), 4032 * 256);
     assert_eq!(mesh.subdivisions, 4);
     let (text, image) = lesson11::big_mesh(&teapot, 4).unwrap();

@@ -21,7 +21,7 @@ use render_lessons::raster::{
 use render_lessons::raster::{TOLERANCE, agreement, reference};
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::{
-    LessonMesh, TORUS_OBJ, lesson08, lesson08_pinhole, lesson08_shadows, lesson09_mesh,
+    PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };
 use render_lessons::transform::Transform;
 
@@ -550,7 +550,7 @@ fn uv_sphere_is_closed_and_faces_out() {
 
 #[test]
 fn segments_are_checked_before_tessellating() {
-    let scene = render_lessons::scenes::lesson08(Vec3::ZERO).unwrap();
+    let scene = render_lessons::scenes::still_life(Vec3::ZERO).unwrap();
     assert!(render_lessons::raster::check_segments(&scene, 4).is_ok());
     let too_few = render_lessons::raster::check_segments(&scene, 3).unwrap_err();
     assert_eq!(too_few.param(), "segments");
@@ -606,11 +606,11 @@ fn same_image_for_any_thread_count() {
 
 /// The lesson at its defaults, as `main` runs it: the scene, the tessellation of 64
 /// segments, the 1024^2 shadow map with a bias of 1, and the torus.
-fn book_lesson() -> (Scene, LessonMesh, lesson::Lesson) {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let camera = lesson08_pinhole(480, 270).unwrap();
-    let mesh = lesson09_mesh(Path::new(TORUS_OBJ), 0).unwrap();
-    let shadows = lesson08_shadows(1024, 1.0);
+fn book_lesson() -> (Scene, PlacedMesh, lesson::Lesson) {
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(480, 270).unwrap();
+    let mesh = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap();
+    let shadows = still_life_shadows(1024, 1.0);
     let lesson = lesson::images(&scene, &camera, 64, shadows, &mesh.model, None).unwrap();
     (scene, mesh, lesson)
 }
@@ -639,7 +639,7 @@ fn numbers() {
     let recomputed = agreement(
         image("09_per_pixel.png"),
         image("09_ray_cast.png"),
-        &reference(&scene, &lesson08_pinhole(480, 270).unwrap(), None)
+        &reference(&scene, &still_life_pinhole(480, 270).unwrap(), None)
             .unwrap()
             .silhouettes,
         TOLERANCE,
@@ -665,8 +665,8 @@ fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_object
     // and a silhouette flag wherever one of the 8 neighbours sees another object.
     use render_lessons::raycast::lit_unshadowed;
     use render_lessons::render::render;
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let camera = lesson08_pinhole(96, 54).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(96, 54).unwrap();
     let one_pass = reference(&scene, &camera, Some(2)).unwrap();
     let colours = render(&camera, Some(1), |r| lit_unshadowed(&scene, r)).unwrap();
     assert_eq!(one_pass.image, colours);
@@ -695,8 +695,8 @@ fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_object
 fn unshadowed_lambert_is_lambert_where_nothing_blocks_the_light() {
     use render_lessons::raycast::{lit, lit_unshadowed};
     use render_lessons::spawn::Offset;
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let camera = lesson08_pinhole(96, 54).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(96, 54).unwrap();
     let (mut same, mut shadowed) = (0, 0);
     for y in 0..54 {
         for x in 0..96 {

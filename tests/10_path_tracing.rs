@@ -22,15 +22,15 @@ use render_lessons::material::{Material, fresnel};
 use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
 use render_lessons::pathtrace::light::LightShape;
 use render_lessons::pathtrace::progressive::rmse;
-use render_lessons::pathtrace::scenes::{
-    cornell, grey_furnace, interior_furnace, look_camera, two_lights,
-};
 use render_lessons::pathtrace::{
     Accumulator, At, Path, PixelSampling, Rng, Sampling, Settings, SphereSampling, radiance,
     record_path,
 };
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene};
+use render_lessons::scenes::path_tracing::{
+    cornell, grey_furnace, interior_furnace, look_camera, two_lights,
+};
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
 use render_lessons::spawn::Offset;
 
@@ -146,7 +146,7 @@ fn a_refused_study_renders_nothing_first() {
     let mut passes = 0;
     let err = study.render(&scene, &camera, |_, _| {
         passes += 1;
-        Ok(())
+        Ok::<(), render_lessons::Error>(())
     });
     assert_eq!(err.err().map(|e| e.param().to_string()), Some("spp".into()));
     assert_eq!(passes, 0);
@@ -174,7 +174,7 @@ fn a_pass_with_no_finite_sample_is_an_error_not_a_black_image() {
         &settings,
         passes,
         &[4],
-        |_| Ok(()),
+        |_| Ok::<(), render_lessons::Error>(()),
     );
     assert_eq!(
         result.err().map(|e| e.param().to_string()),
@@ -583,7 +583,7 @@ fn two_lights_direct_light_sigmas() {
     );
     // It also names the other measurement of cosine sampling that the listing's
     // comment quotes.
-    let listing = std::fs::read_to_string("src/pathtrace/scenes.rs").unwrap();
+    let listing = std::fs::read_to_string("src/scenes/path_tracing.rs").unwrap();
     let page = page("10_6_mis.md");
     for (src, book) in [
         ("cosine sampling gives 9.9", "9.9 and"),
@@ -791,7 +791,7 @@ proptest! {
     ) {
         let (cornell, _) = cornell(4, 4).unwrap();
         // In the plane of the ceiling light, along the floor, along the walls.
-        let light_y = 81.6 - render_lessons::pathtrace::scenes::CORNELL_LIGHT_GAP;
+        let light_y = 81.6 - render_lessons::scenes::path_tracing::CORNELL_LIGHT_GAP;
         let rays = [
             Ray::new(Vec3::new(x, light_y, z), Vec3::new(t, 0.0, 1.0)).unwrap(),
             Ray::new(Vec3::new(x, 0.0, z), Vec3::new(1.0, 0.0, t)).unwrap(),
@@ -1970,7 +1970,7 @@ fn lesson_10_worked_numbers() {
     let poke = 0.27f64;
     let cap = PI * (2.0 * 600.0 * poke - poke * poke);
     assert_quotes("10_7_mirror_glass.md", "= 1017.6$, so", cap);
-    let side = f64::from(render_lessons::pathtrace::scenes::CORNELL_LIGHT_SIDE);
+    let side = f64::from(render_lessons::scenes::path_tracing::CORNELL_LIGHT_SIDE);
     assert_quotes("10_7_mirror_glass.md", "Its side, 31.9002, gives", side);
     assert!(
         (side * side - cap).abs() < 0.05,

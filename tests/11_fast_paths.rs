@@ -16,7 +16,7 @@ use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
 use render_lessons::render::render;
 use render_lessons::scene::{Intersect, Object, Scene, SceneHit};
-use render_lessons::scenes::{lesson08, lesson08_pinhole};
+use render_lessons::scenes::{still_life, still_life_pinhole};
 use render_lessons::shapes::{
     Aabb, Cylinder, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
 };
@@ -132,7 +132,7 @@ fn rays(rng: &mut Rng, n: usize) -> Vec<Ray> {
 #[test]
 fn the_fast_closest_hit_loop_finds_the_readable_loops_hit_bit_for_bit() {
     let mut rng = Rng(0x5eed_cafe);
-    let scenes = [lesson08(Vec3::ZERO).unwrap(), mixed_scene(&mut rng)];
+    let scenes = [still_life(Vec3::ZERO).unwrap(), mixed_scene(&mut rng)];
     let mut ties = 0;
     for scene in &scenes {
         for ray in rays(&mut rng, 4000) {
@@ -172,9 +172,9 @@ fn the_fast_closest_hit_loop_finds_the_readable_loops_hit_bit_for_bit() {
 }
 
 #[test]
-fn lesson_08s_image_is_the_readable_loops_bit_for_bit() {
-    let scene = lesson08(Vec3::ZERO).unwrap();
-    let camera = lesson08_pinhole(192, 108).unwrap();
+fn the_still_lifes_image_is_the_readable_loops_bit_for_bit() {
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(192, 108).unwrap();
     let pinhole = camera.pinhole().unwrap();
     let fast = render(&camera, Some(1), |r| shadowless(&scene, r)).unwrap();
     for y in 0..108 {

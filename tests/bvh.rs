@@ -510,8 +510,8 @@ fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) 
 #[test]
 fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     use render_lessons::material::Material;
-    use render_lessons::pathtrace::scenes::look_camera;
     use render_lessons::scenes::TORUS_OBJ;
+    use render_lessons::scenes::path_tracing::look_camera;
 
     let mut objects = Mesh::from_obj(std::path::Path::new(TORUS_OBJ))
         .unwrap()
@@ -547,6 +547,28 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     let sky = Vec3::splat(0.1).to_array().map(f32::to_bits);
     let seen = through_list.iter().filter(|&&p| p != sky).count();
     assert!(seen > through_list.len() / 2, "{seen} pixels see the scene");
+}
+
+/// Lesson 10's `--scene teapot`: the Cornell box with the Newell teapot (4032
+/// triangles) in place of the mirror ball. The lesson draws it through the tree
+/// (`MeshScene`); here a small render through the list and through the tree are the
+/// same, bit for bit.
+#[test]
+fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
+    use render_lessons::scenes::MeshScene;
+    use render_lessons::scenes::path_tracing::SceneName;
+
+    let (list, camera) = SceneName::Teapot.build(16, 12).unwrap();
+    assert_eq!(list.objects().len(), 8 - 1 + 4032);
+    let tree = BvhScene::new(list.clone());
+    assert!(
+        tree.bvh().nodes().len() > 1000,
+        "a real tree over the teapot"
+    );
+    assert_eq!(path_traced(&tree, &camera), path_traced(&list, &camera));
+    // The lesson's own choice at its default size: the tree.
+    let rays = 160 * 120 * 64;
+    assert!(matches!(MeshScene::new(list, rays), MeshScene::Tree(_)));
 }
 
 #[test]

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use glam::{Vec3, Vec4};
 use render_lessons::raster::tessellate::{FLOOR_SIZE, tessellate};
-use render_lessons::scenes::lesson08;
+use render_lessons::scenes::still_life;
 
 // ---- reading the book ----------------------------------------------------------
 
@@ -753,7 +753,7 @@ fn chapter_09_sagitta_of_the_tessellated_sphere() {
 
 #[test]
 fn chapter_09_gouraud_floor_corners_are_about_7070_from_the_light() {
-    let scene = lesson08(Vec3::ZERO).unwrap();
+    let scene = still_life(Vec3::ZERO).unwrap();
     let light = scene.point_light().unwrap().position;
     let floor = &tessellate(&scene, 64).unwrap()[0];
     assert_eq!(floor.mesh.positions.len(), 4);

@@ -5,8 +5,8 @@
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
 
-use crate::pathtrace::scenes::SceneName;
 use crate::pathtrace::settings::Sampling;
+use crate::scenes::path_tracing::SceneName;
 
 /// `--sampling uniform|cosine|nee|mis`.
 impl ValueEnum for Sampling {
@@ -19,7 +19,7 @@ impl ValueEnum for Sampling {
     }
 }
 
-/// `--scene cornell|two-lights|furnace|grey-furnace`.
+/// `--scene cornell|two-lights|furnace|grey-furnace|teapot`.
 impl ValueEnum for SceneName {
     fn value_variants<'a>() -> &'a [SceneName] {
         &SceneName::ALL
@@ -42,6 +42,10 @@ impl ValueEnum for SceneName {
             SceneName::GreyFurnace => (
                 "grey-furnace",
                 "A grey sphere in a white environment (STABILITY S17)",
+            ),
+            SceneName::Teapot => (
+                "teapot",
+                "The Cornell box with the Newell teapot (4032 triangles), through a BVH",
             ),
         };
         Some(PossibleValue::new(name).help(help))

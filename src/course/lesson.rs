@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use crate::course::diagram::Diagram;
+use crate::course::failure::{Failure, LessonResult};
 use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 
@@ -83,16 +84,22 @@ pub fn budget(
     crate::limits::threads("--threads", threads)
 }
 
-/// Runs a lesson's body: on error, prints `error: ...` and exits with code 2.
-pub fn run(body: impl FnOnce() -> Result<()>) -> ExitCode {
+/// Runs a lesson's body: on error, prints `error: ...` and exits with code 2; on
+/// Ctrl-C ([`check_interrupt`]) with code 130. In the body, `?` turns the
+/// renderer's errors into a [`Failure`].
+pub fn run(body: impl FnOnce() -> LessonResult<()>) -> ExitCode {
     match body() {
         Ok(()) => ExitCode::SUCCESS,
-        Err(crate::error::Error::Interrupted) => {
+        Err(Failure::Interrupted) => {
             eprintln!("interrupted (Ctrl-C): every file written so far is whole");
             ExitCode::from(130)
         }
-        Err(e) => {
+        Err(Failure::Render(e)) => {
             eprintln!("error: {}", as_typed(&e));
+            ExitCode::from(2)
+        }
+        Err(other) => {
+            eprintln!("error: {other}");
             ExitCode::from(2)
         }
     }
@@ -112,11 +119,11 @@ pub fn stop_on_ctrl_c() {
     });
 }
 
-/// `Err(Error::Interrupted)` once Ctrl-C was pressed (see [`stop_on_ctrl_c`]);
+/// `Err(Failure::Interrupted)` once Ctrl-C was pressed (see [`stop_on_ctrl_c`]);
 /// [`run`] then exits with code 130, the shell's code for an interrupt.
-pub fn check_interrupt() -> Result<()> {
+pub fn check_interrupt() -> LessonResult<()> {
     if INTERRUPTED.load(std::sync::atomic::Ordering::SeqCst) {
-        Err(crate::error::Error::Interrupted)
+        Err(Failure::Interrupted)
     } else {
         Ok(())
     }

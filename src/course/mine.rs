@@ -13,13 +13,13 @@ use crate::camera::{Film, Frame};
 #[cfg(feature = "exercises")]
 use crate::course::exercises as ch;
 use crate::course::exercises::check::{self, Exercise};
+use crate::course::failure::{Failure, LessonResult};
 use crate::lighting::AMBIENT;
 use crate::ray::{Interval, Ray};
 use crate::scene::{PointLight, Scene, SceneHit};
 use crate::shapes::Shape;
 use crate::spawn::Offset;
 use crate::transform::Transform;
-use crate::{Error, Result};
 
 /// The signature of coding exercise 1.2, `compose(first, second)`.
 pub type Compose = fn(&Transform, &Transform) -> Mat4;
@@ -37,7 +37,7 @@ pub type Closest = fn(&Ray, &[Shape], Interval) -> Option<SceneHit>;
 pub type Lambert = fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3;
 
 /// The student's `compose` for lesson 01's `--mine` (coding exercise 1.2).
-pub fn my_compose() -> Result<Compose> {
+pub fn my_compose() -> LessonResult<Compose> {
     #[cfg(feature = "exercises")]
     {
         passing(
@@ -54,7 +54,7 @@ pub fn my_compose() -> Result<Compose> {
 }
 
 /// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.1).
-pub fn my_pixel_to_plane() -> Result<PixelToPlane> {
+pub fn my_pixel_to_plane() -> LessonResult<PixelToPlane> {
     #[cfg(feature = "exercises")]
     {
         passing(
@@ -71,7 +71,7 @@ pub fn my_pixel_to_plane() -> Result<PixelToPlane> {
 }
 
 /// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.1).
-pub fn my_pinhole_ray() -> Result<PinholeRay> {
+pub fn my_pinhole_ray() -> LessonResult<PinholeRay> {
     #[cfg(feature = "exercises")]
     {
         passing(
@@ -88,7 +88,7 @@ pub fn my_pinhole_ray() -> Result<PinholeRay> {
 }
 
 /// The student's `closest` for lesson 08's `--mine` (coding exercise 8.1).
-pub fn my_closest() -> Result<Closest> {
+pub fn my_closest() -> LessonResult<Closest> {
     #[cfg(feature = "exercises")]
     {
         passing(
@@ -105,7 +105,7 @@ pub fn my_closest() -> Result<Closest> {
 }
 
 /// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.2).
-pub fn my_lambert() -> Result<Lambert> {
+pub fn my_lambert() -> LessonResult<Lambert> {
     #[cfg(feature = "exercises")]
     {
         passing(
@@ -125,10 +125,10 @@ pub fn my_lambert() -> Result<Lambert> {
 /// the student's function when its exercise passes; `None` when it does not, after
 /// printing the check's report on stderr, so that the pictures of the exercises that
 /// pass are still drawn. Without the `exercises` feature, the error.
-pub fn if_passing<F>(mine: Result<F>) -> Result<Option<F>> {
+pub fn if_passing<F>(mine: LessonResult<F>) -> LessonResult<Option<F>> {
     match mine {
         Ok(f) => Ok(Some(f)),
-        Err(Error::Exercise { report }) if cfg!(feature = "exercises") => {
+        Err(Failure::Exercise { report }) if cfg!(feature = "exercises") => {
             eprintln!("{report}\n(its --mine picture is not drawn)\n");
             Ok(None)
         }
@@ -157,10 +157,10 @@ pub fn lit_with(scene: &Scene, ray: &Ray, lambert: Lambert) -> Vec3 {
 /// The student's function `f` of `exercise` if its check's `outcome` is a pass;
 /// otherwise the check's report as the error.
 #[cfg(feature = "exercises")]
-fn passing<F>(exercise: Exercise, outcome: check::Outcome, f: F) -> Result<F> {
+fn passing<F>(exercise: Exercise, outcome: check::Outcome, f: F) -> LessonResult<F> {
     match outcome {
         check::Outcome::Pass => Ok(f),
-        outcome => Err(Error::Exercise {
+        outcome => Err(Failure::Exercise {
             report: exercise.report(&outcome),
         }),
     }
@@ -169,8 +169,8 @@ fn passing<F>(exercise: Exercise, outcome: check::Outcome, f: F) -> Result<F> {
 /// `--mine` without the `exercises` feature: one line with the `command` that turns
 /// it on.
 #[cfg(not(feature = "exercises"))]
-fn feature_off(exercise: Exercise, command: &str) -> Error {
-    Error::Exercise {
+fn feature_off(exercise: Exercise, command: &str) -> Failure {
+    Failure::Exercise {
         report: format!(
             "--mine runs your code for coding exercise {}; turn the exercises on: {command}",
             exercise.number

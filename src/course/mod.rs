@@ -9,6 +9,8 @@
 //! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
 //! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
 //! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
+//! - [`failure`]: why a lesson stops, besides the renderer's errors (an exercise
+//!   that fails, Ctrl-C, a name that matches nothing);
 //! - [`mine`]: `--mine`, a lesson's picture drawn with the student's exercise code;
 //! - [`flags`]: the flag values that name core types (`--sampling`, `--scene`);
 //! - [`path_flags`]: lesson 10's flags in groups, each making a core value;
@@ -19,6 +21,7 @@
 pub mod chart;
 pub mod diagram;
 pub mod exercises;
+pub mod failure;
 pub mod flags;
 pub mod image_tables;
 pub mod ladder_figure;

@@ -93,13 +93,14 @@ impl Study {
     /// stopping at each rung; the other strategies render the ladder's top; the
     /// reference renders MIS in passes of 16, with its own seed. Jittered passes need
     /// a square number of samples (1, 4, 16 are; 3, 12, 48 are not), so with them
-    /// every rung is rendered afresh. `watch` sees every pass, and of which image.
-    pub fn render(
+    /// every rung is rendered afresh. `watch` sees every pass, and of which image; its
+    /// error (of the caller's type `E`) stops the study.
+    pub fn render<E: From<Error>>(
         &self,
         scene: &impl Intersect,
         camera: &Camera,
-        mut watch: impl FnMut(Part, &Pass) -> Result<()>,
-    ) -> Result<Renders> {
+        mut watch: impl FnMut(Part, &Pass) -> std::result::Result<(), E>,
+    ) -> std::result::Result<Renders, E> {
         let reference_stops = stops_of_16(self.reference_spp, "reference-spp")?;
         self.check_jittered(&reference_stops)?;
         let top = *self.ladder.last().ok_or(Error::TooFew {
@@ -108,14 +109,14 @@ impl Study {
             min: 1,
         })?;
         let mut non_finite = 0;
-        let mut render = |part, settings: Settings, passes, stops: &[u32]| -> Result<Vec<_>> {
+        let mut render = |part, settings: Settings, passes, stops: &[u32]| {
             let mut images = Vec::new();
             non_finite += render_progressive(scene, camera, &settings, passes, stops, |pass| {
                 watch(part, &pass)?;
                 images.push((pass.samples, pass.image));
-                Ok(())
+                Ok::<(), E>(())
             })?;
-            Ok(images)
+            Ok::<_, E>(images)
         };
         let (settings, passes) = (self.settings, self.passes);
         let mut ladder = Vec::new();

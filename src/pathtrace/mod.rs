@@ -15,7 +15,6 @@
 //! - [`convergence`]: the lesson's experiment, a ladder of sample counts, every
 //!   strategy, and a reference;
 //! - [`pfm`]: the floating-point image file;
-//! - [`scenes`]: the Cornell box, the furnaces, the two-light scene.
 
 pub mod convergence;
 pub mod estimator;
@@ -27,7 +26,6 @@ pub mod progressive;
 pub mod record;
 pub mod rng;
 pub mod roulette;
-pub mod scenes;
 pub mod settings;
 
 pub use estimator::{At, Path, Vertex, radiance};

@@ -239,22 +239,24 @@ pub struct Pass {
 // ANCHOR: render_progressive
 /// A progressive render from one accumulator: passes that end at each of `stops`
 /// samples per pixel (increasing), `each` called after every pass. Returns the
-/// number of samples dropped as NaN or infinite.
-pub fn render_progressive(
+/// number of samples dropped as NaN or infinite. An error of `each` (its type `E` is
+/// the caller's: a lesson stops on Ctrl-C) ends the render and is returned.
+pub fn render_progressive<E: From<Error>>(
     scene: &impl Intersect,
     camera: &Camera,
     settings: &Settings,
     passes: Passes,
     stops: &[u32],
-    mut each: impl FnMut(Pass) -> Result<()>,
-) -> Result<u64> {
+    mut each: impl FnMut(Pass) -> std::result::Result<(), E>,
+) -> std::result::Result<u64, E> {
     let mut acc = Accumulator::new(camera, passes.seed);
     for &stop in stops {
         let Some(added) = stop.checked_sub(acc.samples()) else {
             return Err(Error::Invalid {
                 param: "stops",
                 reason: "must increase",
-            });
+            }
+            .into());
         };
         let (pixels, threads) = (passes.pixels, passes.threads);
         let image = acc.render_pass(scene, camera, settings, pixels, added, threads)?;
@@ -265,7 +267,8 @@ pub fn render_progressive(
             return Err(Error::Invalid {
                 param: "scene",
                 reason: "gave NaN or infinity in every sample: there is no image to show",
-            });
+            }
+            .into());
         }
         each(Pass {
             samples: stop,

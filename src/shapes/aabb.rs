@@ -8,6 +8,19 @@ use crate::float::gamma;
 use crate::ray::{Crossings, Interval, Ray};
 use crate::shapes::{Hit, PreparedRay};
 
+/// Where a ray crosses a box's surface: the distance `t`, the `axis` of the face
+/// (0, 1, 2 for x, y, z) and the sign `outward` (+1 or -1) of the face's outward
+/// normal along it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FaceHit {
+    /// The ray parameter of the crossing.
+    pub t: f32,
+    /// The axis the face is perpendicular to.
+    pub axis: usize,
+    /// The sign of the outward normal along `axis`.
+    pub outward: f32,
+}
+
 /// The box of points with `min <= p <= max` on every axis (a closed set).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb {
@@ -180,28 +193,28 @@ impl Aabb {
     // ANCHOR_END: span
 
     // ANCHOR: box_hit
-    /// The nearest crossing of the box surface with `t_min < t < t_max`: the entry,
-    /// or the exit for a ray starting inside; as `(t, axis, outward sign)`, the axis
-    /// whose slab set that end of the interval and the sign of the face's outward
-    /// normal along it.
+    /// The nearest crossing of the box surface within `range`: the entry, or the
+    /// exit for a ray starting inside; on the face of the axis whose slab set that end
+    /// of the interval, with the sign of the face's outward normal along it.
     #[inline]
-    pub fn nearest_face(&self, ray: &PreparedRay, range: Interval) -> Option<(f32, usize, f32)> {
+    pub fn nearest_face(&self, ray: &PreparedRay, range: Interval) -> Option<FaceHit> {
         let (o, d) = (ray.ray().origin(), ray.ray().direction());
         let s = self.span(o, ray.inv_d, Interval::EVERYWHERE, 1.0)?;
+        let face = |t, axis: usize, outward| FaceHit { t, axis, outward };
         if range.contains(s.t0) {
-            Some((s.t0, s.axis0, -d[s.axis0].signum()))
+            Some(face(s.t0, s.axis0, -d[s.axis0].signum()))
         } else if range.contains(s.t1) {
-            Some((s.t1, s.axis1, d[s.axis1].signum()))
+            Some(face(s.t1, s.axis1, d[s.axis1].signum()))
         } else {
             None
         }
     }
 
-    /// The hit record at `t` on the face of `axis` with outward sign `outward`: that
-    /// normal, and the point snapped onto the face. Along the face's axis the point
+    /// The hit record of `face`: its normal, and the point snapped onto the face. Along the face's axis the point
     /// is the face's own coordinate, exact: its error there is 0. Along the face it
     /// carries o + t d's rounding, which an offset along the normal never needs.
-    pub fn hit_at(&self, ray: &Ray, t: f32, axis: usize, outward: f32) -> Hit {
+    pub fn hit_at(&self, ray: &Ray, face: FaceHit) -> Hit {
+        let FaceHit { t, axis, outward } = face;
         let mut normal = Vec3::ZERO;
         normal[axis] = outward;
         let mut point = ray.at(t);
@@ -218,8 +231,8 @@ impl Aabb {
     /// The nearest crossing of the box surface with `t_min < t < t_max`:
     /// [`Aabb::nearest_face`], then [`Aabb::hit_at`].
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let (t, axis, outward) = self.nearest_face(&PreparedRay::new(ray), range)?;
-        Some(self.hit_at(ray, t, axis, outward))
+        let face = self.nearest_face(&PreparedRay::new(ray), range)?;
+        Some(self.hit_at(ray, face))
     }
     // ANCHOR_END: box_hit
 

@@ -121,17 +121,15 @@ impl ShapesByKind {
                     p.nearest(ray.ray(), r).map(Candidate::on_ray)
                 }),
                 Shapes::Boxes(v) => closest_in(v, first, &mut range, found, |b, r| {
-                    let (t, axis, outward) = b.nearest_face(ray, r)?;
-                    Some(Candidate {
-                        t,
-                        detail: Detail::Face { axis, outward },
+                    b.nearest_face(ray, r).map(|face| Candidate {
+                        t: face.t,
+                        detail: Detail::Face(face),
                     })
                 }),
                 Shapes::Triangles(v) => closest_in(v, first, &mut range, found, |tri, r| {
-                    let (t, b0, b1, b2) = tri.watertight_prepared(ray, r)?;
-                    Some(Candidate {
-                        t,
-                        detail: Detail::Barycentric([b0, b1, b2]),
+                    tri.watertight_prepared(ray, r).map(|c| Candidate {
+                        t: c.t,
+                        detail: Detail::Barycentric(c),
                     })
                 }),
                 Shapes::Others(v) => {

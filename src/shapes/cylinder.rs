@@ -22,12 +22,13 @@ use crate::shapes::{Aabb, Hit};
 /// ```
 /// use glam::Vec3;
 /// use render_lessons::ray::{Interval, Ray};
-/// use render_lessons::shapes::{Cylinder, CylinderPart};
+/// use render_lessons::shapes::{Cylinder, CylinderPart, PartHit};
 ///
 /// let can = Cylinder::new(1.0, 0.0, 2.0)?;
 /// // Through the side, from x = -5 at half height: the side at x = -1.
 /// let side = Ray::new(Vec3::new(-5.0, 0.0, 1.0), Vec3::X)?;
-/// assert_eq!(can.nearest(&side, Interval::AHEAD), Some((4.0, CylinderPart::Side)));
+/// let entry = PartHit { t: 4.0, part: CylinderPart::Side };
+/// assert_eq!(can.nearest(&side, Interval::AHEAD), Some(entry));
 /// // Down onto the top cap, then out through the bottom one.
 /// let down = Ray::new(Vec3::new(0.5, 0.0, 5.0), -Vec3::Z)?;
 /// assert_eq!(can.crossings(&down).as_slice(), [3.0, 5.0]);
@@ -53,6 +54,15 @@ pub enum CylinderPart {
     Bottom,
     /// The cap z = z_max, normal +Z.
     Top,
+}
+
+/// Where a ray crosses a [`Cylinder`]: the distance `t` and the surface it is on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PartHit {
+    /// The ray parameter of the crossing.
+    pub t: f32,
+    /// The side or a cap.
+    pub part: CylinderPart,
 }
 
 /// The span of a ray's line inside the solid: entry and exit, and the part of each.
@@ -173,21 +183,27 @@ impl Cylinder {
     }
     // ANCHOR_END: cylinder_span
 
-    /// The nearest crossing with `t_min < t < t_max` and the part it is on: the
-    /// entry, or the exit for a ray starting inside.
-    pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<(f32, CylinderPart)> {
+    /// The nearest crossing within `range` and the part it is on: the entry, or the
+    /// exit for a ray starting inside.
+    pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<PartHit> {
         let s = self.span(ray)?;
         if range.contains(s.t0) {
-            Some((s.t0, s.part0))
+            Some(PartHit {
+                t: s.t0,
+                part: s.part0,
+            })
         } else if range.contains(s.t1) {
-            Some((s.t1, s.part1))
+            Some(PartHit {
+                t: s.t1,
+                part: s.part1,
+            })
         } else {
             None
         }
     }
 
-    /// The hit record at `t` on `part`: the point moved onto that surface, its error
-    /// bound and the outward normal.
+    /// The hit record of `crossing` (at `t` on `part`): the point moved onto that
+    /// surface, its error bound and the outward normal.
     ///
     /// On a cap the height is the cap's own, exact (error 0 along Z), and (x, y) is
     /// o + t d pulled in to the rim if rounding left it just outside; its error
@@ -195,7 +211,8 @@ impl Cylinder {
     /// carries t's error, which grows with t, so (x, y) is scaled back onto the
     /// circle, (x, y) r / |(x, y)| (as the sphere's point is, pbrt-v4 section 6.8.5),
     /// with error gamma(5) |x| and gamma(5) |y|, and z is clamped to the caps.
-    pub fn hit_at(&self, ray: &Ray, t: f32, part: CylinderPart) -> Hit {
+    pub fn hit_at(&self, ray: &Ray, crossing: PartHit) -> Hit {
+        let PartHit { t, part } = crossing;
         let p = ray.at(t);
         let xy = p.truncate();
         let length = xy.length();
@@ -230,11 +247,11 @@ impl Cylinder {
         Hit::new(ray, t, point, normal.normalize_or(-ray.direction()), error)
     }
 
-    /// The nearest crossing with `t_min < t < t_max`: [`Cylinder::nearest`], then
+    /// The nearest crossing within `range`: [`Cylinder::nearest`], then
     /// [`Cylinder::hit_at`].
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let (t, part) = self.nearest(ray, range)?;
-        Some(self.hit_at(ray, t, part))
+        let crossing = self.nearest(ray, range)?;
+        Some(self.hit_at(ray, crossing))
     }
 
     /// Both crossings of the ray's line with the closed surface, entry and exit,

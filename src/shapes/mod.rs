@@ -24,16 +24,16 @@ pub mod quadric;
 pub mod sphere;
 pub mod triangle;
 
-pub use aabb::Aabb;
+pub use aabb::{Aabb, FaceHit};
 pub use by_kind::ShapesByKind;
-pub use cylinder::{Cylinder, CylinderPart};
+pub use cylinder::{Cylinder, CylinderPart, PartHit};
 pub use instance::Instance;
 pub use plane::Plane;
 pub use prepared::PreparedRay;
 pub use quad::Quad;
 pub use quadric::Quadric;
 pub use sphere::Sphere;
-pub use triangle::Triangle;
+pub use triangle::{Barycentric, Triangle};
 
 /// Where a ray crosses a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -97,12 +97,12 @@ pub struct Candidate {
 enum Detail {
     /// Nothing: the point is o + t d (sphere, plane, quad, quadric).
     OnRay,
-    /// The barycentric coordinates (b0, b1, b2) of a triangle's point.
-    Barycentric([f32; 3]),
+    /// A triangle's crossing: the barycentric coordinates (b0, b1, b2) of its point.
+    Barycentric(Barycentric),
     /// A box's face: the axis and the sign of its outward normal.
-    Face { axis: usize, outward: f32 },
-    /// A capped cylinder's surface: the side or a cap.
-    Part(CylinderPart),
+    Face(FaceHit),
+    /// A capped cylinder's crossing: the side or a cap.
+    Part(PartHit),
     /// An instance: its test is run again, over the same range, for the winner
     /// only (instances are rare; this keeps the candidate small).
     Instance { range: Interval },
@@ -229,27 +229,18 @@ impl Shape {
             Shape::Plane(p) => p.nearest(ray.ray(), range).map(Candidate::on_ray),
             Shape::Quad(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
             Shape::Quadric(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
-            Shape::Triangle(tri) => {
-                let (t, b0, b1, b2) = tri.watertight_prepared(ray, range)?;
-                Some(Candidate {
-                    t,
-                    detail: Detail::Barycentric([b0, b1, b2]),
-                })
-            }
-            Shape::Aabb(b) => {
-                let (t, axis, outward) = b.nearest_face(ray, range)?;
-                Some(Candidate {
-                    t,
-                    detail: Detail::Face { axis, outward },
-                })
-            }
-            Shape::Cylinder(c) => {
-                let (t, part) = c.nearest(ray.ray(), range)?;
-                Some(Candidate {
-                    t,
-                    detail: Detail::Part(part),
-                })
-            }
+            Shape::Triangle(tri) => tri.watertight_prepared(ray, range).map(|c| Candidate {
+                t: c.t,
+                detail: Detail::Barycentric(c),
+            }),
+            Shape::Aabb(b) => b.nearest_face(ray, range).map(|face| Candidate {
+                t: face.t,
+                detail: Detail::Face(face),
+            }),
+            Shape::Cylinder(c) => c.nearest(ray.ray(), range).map(|crossing| Candidate {
+                t: crossing.t,
+                detail: Detail::Part(crossing),
+            }),
             Shape::Instance(i) => i.hit(ray.ray(), range).map(|hit| Candidate {
                 t: hit.t,
                 detail: Detail::Instance { range },
@@ -267,9 +258,9 @@ impl Shape {
             (Shape::Instance(i), Detail::Instance { range }) => {
                 i.hit(ray, range).unwrap_or_else(|| fallback(self, ray, t))
             }
-            (Shape::Triangle(tri), Detail::Barycentric(b)) => tri.hit_at(ray, t, b),
-            (Shape::Aabb(b), Detail::Face { axis, outward }) => b.hit_at(ray, t, axis, outward),
-            (Shape::Cylinder(c), Detail::Part(part)) => c.hit_at(ray, t, part),
+            (Shape::Triangle(tri), Detail::Barycentric(c)) => tri.hit_at(ray, c),
+            (Shape::Aabb(b), Detail::Face(face)) => b.hit_at(ray, face),
+            (Shape::Cylinder(c), Detail::Part(crossing)) => c.hit_at(ray, crossing),
             (Shape::Sphere(s), _) => s.hit_at(ray, t),
             (Shape::Plane(p), _) => p.hit_at(ray, t),
             (Shape::Quad(q), _) => q.hit_at(ray, t),

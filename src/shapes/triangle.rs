@@ -8,6 +8,19 @@ use crate::float::gamma;
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Aabb, Crossings, Hit, PreparedRay};
 
+// ANCHOR: barycentric
+/// Where a ray crosses a triangle: the distance `t` along the ray and the barycentric
+/// coordinates `b` = (b0, b1, b2) of the point, p = b0 v0 + b1 v1 + b2 v2 with
+/// b0 + b1 + b2 = 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Barycentric {
+    /// The ray parameter of the crossing.
+    pub t: f32,
+    /// The weights of v0, v1 and v2.
+    pub b: [f32; 3],
+}
+// ANCHOR_END: barycentric
+
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
 /// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,10 +79,10 @@ impl Triangle {
     /// q = T x e1: det = e1 . p, b1 = T . p / det, b2 = d . q / det, t = e2 . q / det
     /// (the paper's names: `tvec` is T).
     ///
-    /// Returns `(t, b1, b2)` for a hit with `t_min < t < t_max`. Fast, but b1 and b2
+    /// Returns the crossing for a hit with `t` in `range`. Fast, but b1 and b2
     /// of two triangles sharing an edge are rounded separately, so a ray aimed exactly
     /// at the edge or a vertex can slip between them (STABILITY S4, S5).
-    pub fn moller_trumbore(&self, ray: &Ray, range: Interval) -> Option<(f32, f32, f32)> {
+    pub fn moller_trumbore(&self, ray: &Ray, range: Interval) -> Option<Barycentric> {
         let (o, d) = (ray.origin(), ray.direction());
         let (e1, e2) = (self.v1 - self.v0, self.v2 - self.v0);
         let p = d.cross(e2);
@@ -89,12 +102,13 @@ impl Triangle {
             return None;
         }
         let t = e2.dot(q) * inv;
-        range.contains(t).then_some((t, b1, b2))
+        let b = [1.0 - b1 - b2, b1, b2];
+        range.contains(t).then_some(Barycentric { t, b })
     }
     // ANCHOR_END: moller_trumbore
 
     /// [`Triangle::watertight_prepared`] for a single ray: prepares it first.
-    pub fn watertight(&self, ray: &Ray, range: Interval) -> Option<(f32, f32, f32, f32)> {
+    pub fn watertight(&self, ray: &Ray, range: Interval) -> Option<Barycentric> {
         self.watertight_prepared(&PreparedRay::new(ray), range)
     }
 
@@ -111,13 +125,9 @@ impl Triangle {
     /// three of one sign; then b_i = e_i / (e0 + e1 + e2) and t interpolates the
     /// sheared z.
     ///
-    /// Returns `(t, b0, b1, b2)` for a hit with `t_min < t < t_max`.
+    /// Returns the crossing for a hit with `t` in `range`.
     #[inline]
-    pub fn watertight_prepared(
-        &self,
-        ray: &PreparedRay,
-        range: Interval,
-    ) -> Option<(f32, f32, f32, f32)> {
+    pub fn watertight_prepared(&self, ray: &PreparedRay, range: Interval) -> Option<Barycentric> {
         let (o, shear) = (ray.ray().origin(), ray.shear);
         let [p0, p1, p2] = [self.v0, self.v1, self.v2].map(|v| sheared(ray.permute(v - o), shear));
         let mut e = [edge(p1, p2), edge(p2, p0), edge(p0, p1)];
@@ -141,18 +151,19 @@ impl Triangle {
         if range.min >= 0.0 && t <= t_error([p0, p1, p2], z, e, inv) {
             return None; // t may be rounding above a crossing at or behind the origin
         }
-        (finite && range.contains(t)).then_some((t, b[0], b[1], b[2]))
+        (finite && range.contains(t)).then_some(Barycentric { t, b })
     }
     // ANCHOR_END: watertight
 
     // ANCHOR: triangle_hit
-    /// The hit record at `t` with barycentric coordinates `b` (from
-    /// [`Triangle::watertight`]).
+    /// The hit record of a `crossing` (from [`Triangle::watertight`]): at its `t`, with
+    /// its barycentric coordinates `b`.
     ///
     /// The point is b0 v0 + b1 v1 + b2 v2, not o + t d: far from the origin the
     /// barycentric point stays on the triangle's plane, o + t d does not (STABILITY S7).
     /// Its error bound is gamma(7) (|b0 v0| + |b1 v1| + |b2 v2|) per coordinate.
-    pub fn hit_at(&self, ray: &Ray, t: f32, b: [f32; 3]) -> Hit {
+    pub fn hit_at(&self, ray: &Ray, crossing: Barycentric) -> Hit {
+        let (t, b) = (crossing.t, crossing.b);
         let [w0, w1, w2] = [b[0] * self.v0, b[1] * self.v1, b[2] * self.v2];
         let point = w0 + w1 + w2;
         // pbrt-v4 section 6.8.5: three products and two sums, gamma(7) of their sizes.
@@ -160,10 +171,10 @@ impl Triangle {
         Hit::new(ray, t, point, self.normal(), error)
     }
 
-    /// The crossing with `t_min < t < t_max`, by [`Triangle::watertight`].
+    /// The crossing within `range`, by [`Triangle::watertight`].
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
-        let (t, b0, b1, b2) = self.watertight(ray, range)?;
-        Some(self.hit_at(ray, t, [b0, b1, b2]))
+        let crossing = self.watertight(ray, range)?;
+        Some(self.hit_at(ray, crossing))
     }
     // ANCHOR_END: triangle_hit
 
@@ -171,7 +182,7 @@ impl Triangle {
     /// [`Triangle::watertight`] over the whole line, -inf < t < inf.
     pub fn crossings(&self, ray: &Ray) -> Crossings {
         self.watertight(ray, Interval::EVERYWHERE)
-            .map_or(Crossings::NONE, |(t, ..)| Crossings::one(t))
+            .map_or(Crossings::NONE, |crossing| Crossings::one(crossing.t))
     }
 
     /// The unit normal normalize(e1 x e2), e1 = v1 - v0, e2 = v2 - v0, the same at

@@ -14,8 +14,10 @@ use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVerte
 use render_lessons::raster::{rasterize, rasterize_triangle, reference, tessellate};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, lesson09_mesh_scene};
-use render_lessons::scenes::{lesson08, lesson08_pinhole, lesson08_shadows, lesson09_mesh};
+use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
+use render_lessons::scenes::{
+    mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
+};
 use render_lessons::spawn::Offset;
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
@@ -25,10 +27,10 @@ use render_lessons::{Error, Result};
 /// defaults (480 x 270, spheres of 64 segments, a 1024^2 shadow map, a bias of one
 /// texel footprint), and with `--mesh assets/meshes/teapot.obj`.
 pub fn figures(output: &Output) -> Result<()> {
-    let scene = lesson08(Vec3::ZERO)?;
-    let camera = lesson08_pinhole(480, 270)?;
-    let shadows = lesson08_shadows(1024, 1.0);
-    let mesh = lesson09_mesh(std::path::Path::new(TORUS_OBJ), 0)?.model;
+    let scene = still_life(Vec3::ZERO)?;
+    let camera = still_life_pinhole(480, 270)?;
+    let shadows = still_life_shadows(1024, 1.0);
+    let mesh = mesh_on_the_floor(std::path::Path::new(TORUS_OBJ), 0)?.model;
     let instances = tessellate(&scene, 64)?;
     let light = point_light(&scene)?;
     let book = floor_settings(&scene);
@@ -47,10 +49,10 @@ pub fn figures(output: &Output) -> Result<()> {
     let per_vertex = draw(&instances, PerVertex, None)?;
     let traced = render(&camera, None, |r| lit(&scene, r, Offset::Scaled))?;
     let (shadow_map, acne, peter_pan) = (mapped(1.0)?, mapped(0.0)?, mapped(50.0)?);
-    let mesh_cast = reference(&lesson09_mesh_scene(&scene, &mesh)?, &camera, None)?.image;
+    let mesh_cast = reference(&floor_and_mesh(&scene, &mesh)?, &camera, None)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
-    let teapot = lesson09_mesh(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
-    let teapot_scene = MeshScene::new(lesson09_mesh_scene(&scene, &teapot)?, 480 * 270);
+    let teapot = mesh_on_the_floor(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
+    let teapot_scene = MeshScene::new(floor_and_mesh(&scene, &teapot)?, 480 * 270);
     let teapot_cast = reference(&teapot_scene, &camera, None)?.image;
     let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];

@@ -12,12 +12,13 @@ use render_lessons::framebuffer::Framebuffer;
 use render_lessons::material::Material;
 use render_lessons::pathtrace::progressive::render_progressive;
 use render_lessons::pathtrace::record::{PathVertex, RecordedPath, record_path};
-use render_lessons::pathtrace::scenes::SceneName;
-use render_lessons::pathtrace::{Passes, PixelSampling, Rng, Sampling, Settings, scenes};
+use render_lessons::pathtrace::{Passes, PixelSampling, Rng, Sampling, Settings};
 use render_lessons::sampling::{
     cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
 };
 use render_lessons::scene::Scene;
+use render_lessons::scenes::path_tracing;
+use render_lessons::scenes::path_tracing::SceneName;
 
 /// Writes `10_path.png`, `10_hemisphere.png` and the steps' renders.
 pub fn figures(out: &Output) -> Result<()> {
@@ -236,7 +237,7 @@ fn is_diffuse(scene: &Scene, v: &PathVertex) -> bool {
 /// estimator's own `Path`, with next event estimation (MIS draws the same random numbers,
 /// so its paths take the same turns).
 pub fn path_figure() -> Result<Diagram> {
-    let (scene, camera) = scenes::cornell(160, 120)?;
+    let (scene, camera) = path_tracing::cornell(160, 120)?;
     let s = Settings {
         sampling: Sampling::NextEvent,
         ..Settings::default()
@@ -269,8 +270,8 @@ pub fn path_figure() -> Result<Diagram> {
     d.line(Vec2::new(99.0, 0.0), Vec2::new(99.0, 81.6), blue, 4.0);
     d.line(Vec2::new(1.0, 0.0), Vec2::new(99.0, 0.0), grey, 4.0);
     d.line(Vec2::new(1.0, 81.6), Vec2::new(99.0, 81.6), grey, 4.0);
-    let half = scenes::CORNELL_LIGHT_SIDE / 2.0;
-    let light_y = 81.6 - scenes::CORNELL_LIGHT_GAP;
+    let half = path_tracing::CORNELL_LIGHT_SIDE / 2.0;
+    let light_y = 81.6 - path_tracing::CORNELL_LIGHT_GAP;
     d.line(
         Vec2::new(50.0 - half, light_y),
         Vec2::new(50.0 + half, light_y),

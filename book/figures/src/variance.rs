@@ -7,7 +7,8 @@ use render_lessons::Result;
 use render_lessons::course::lesson::Output;
 use render_lessons::course::measure::variance::pixel_variance;
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::pathtrace::{Sampling, Settings, SphereSampling, scenes};
+use render_lessons::pathtrace::{Sampling, Settings, SphereSampling};
+use render_lessons::scenes::path_tracing;
 
 /// The figure's size per panel and its samples per pixel.
 const WIDTH: u32 = 256;
@@ -17,7 +18,7 @@ const SPP: u32 = 32;
 /// Writes `10_variance.png`: sigma / (sigma + 1) per pixel, cosine sampling (left)
 /// and MIS (right), the lesson's default settings otherwise.
 pub fn figures(out: &Output) -> Result<()> {
-    let (scene, camera) = scenes::cornell(WIDTH, HEIGHT)?;
+    let (scene, camera) = path_tracing::cornell(WIDTH, HEIGHT)?;
     let panel = |sampling| -> Result<Framebuffer> {
         let settings = Settings {
             sampling,

@@ -263,6 +263,7 @@ pub fn check_moller_trumbore(
         Triangle::new(v0, v1, v2)
             .expect("valid triangle")
             .moller_trumbore(&Ray::new(o, d).expect("valid ray"), Interval::AHEAD)
+            .map(|c| (c.t, c.b[1], c.b[2]))
     };
     let hits_inside = |a: &TriangleArgs| {
         reference(a).is_some_and(|(_, b1, b2)| b1 > 0.0 && b2 > 0.0 && b1 + b2 < 1.0)

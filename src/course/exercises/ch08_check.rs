@@ -57,8 +57,8 @@ impl Answer for SceneHit {
 }
 
 /// Every hit in list order, as the closest-hit loop would record it without
-/// shrinking the range.
-fn each_hit<'a>(
+/// shrinking the range: what the two typical mistakes of exercise 8.1 pick from.
+pub fn each_hit<'a>(
     ray: &'a Ray,
     shapes: &'a [Shape],
     range: Interval,

@@ -15,6 +15,7 @@
 //! cargo test --features exercises --test exercises ch03     # chapter 03 only
 //! ```
 
+pub mod answer;
 pub mod ch01_check;
 pub mod ch02_check;
 pub mod ch03_check;

@@ -17,9 +17,9 @@ use crate::course::report::{BookNumbers, Quoted};
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
-use crate::pathtrace::scenes::cornell;
 use crate::pathtrace::{Accumulator, PixelSampling, Sampling, Settings};
 use crate::scene::Scene;
+use crate::scenes::path_tracing::cornell;
 
 /// The four strategies of lesson 10, worst first, with their names in the legend.
 pub const TECHNIQUES: [(Sampling, &str); 4] = [

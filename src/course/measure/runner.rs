@@ -4,9 +4,9 @@
 use std::time::Instant;
 
 use super::{Measure, Quality};
+use crate::course::failure::{Failure, LessonResult};
 use crate::course::lesson::{self, Output};
 use crate::course::report::Run;
-use crate::error::{Error, Result};
 use crate::files::write_atomically;
 
 /// Measures every chart of `charts` (file stem, measurement) whose stem starts with
@@ -19,13 +19,13 @@ pub fn run_charts(
     only: Option<&str>,
     quality: Quality,
     out: &Output,
-) -> Result<String> {
+) -> LessonResult<String> {
     let chosen: Vec<_> = charts
         .iter()
         .filter(|(stem, _)| only.is_none_or(|o| stem.starts_with(o)))
         .collect();
     if chosen.is_empty() {
-        return Err(Error::NoMatch {
+        return Err(Failure::NoMatch {
             param: "--only",
             value: only.unwrap_or_default().to_string(),
             choices: charts.iter().map(|(stem, _)| stem.to_string()).collect(),

@@ -20,16 +20,16 @@ use crate::error::{Error, Result};
 use crate::ray::Ray;
 use crate::raycast::shadowless;
 use crate::scene::{Object, Scene};
-use crate::scenes::{lesson08, lesson08_pinhole};
+use crate::scenes::{still_life, still_life_pinhole};
 
 /// Lesson 08's objects `copies` times, each copy 20 units further back.
 fn copies(copies: u32) -> Result<Scene> {
     let mut objects: Vec<Object> = Vec::new();
     for k in 0..copies {
         let shift = Vec3::new(0.0, 0.0, -20.0 * k as f32);
-        objects.extend(lesson08(shift)?.objects().iter().cloned());
+        objects.extend(still_life(shift)?.objects().iter().cloned());
     }
-    Scene::new(objects, lesson08(Vec3::ZERO)?.background())
+    Scene::new(objects, still_life(Vec3::ZERO)?.background())
 }
 
 /// Nanoseconds per ray of `cast` over `rays`, the fastest of `rounds`, for each
@@ -53,7 +53,7 @@ fn ns_per_ray(rays: &[Ray], rounds: u32, robust: &Scene, plain: &PlainScene) -> 
 /// Measures chart 9.
 pub fn measure(quality: Quality) -> Result<Measured> {
     let (width, height) = quality.pick((240, 135), (960, 540));
-    let camera = lesson08_pinhole(width, height)?;
+    let camera = still_life_pinhole(width, height)?;
     let rays: Vec<Ray> = (0..height)
         .flat_map(|y| (0..width).map(move |x| (x, y)))
         .map(|(x, y)| camera.ray(x, y))

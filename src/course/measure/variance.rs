@@ -196,8 +196,8 @@ fn with_caustics(scene: &Scene, path: Path<'_, Scene>) -> (Vec3, Vec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pathtrace::scenes::cornell;
     use crate::pathtrace::{Sampling, radiance};
+    use crate::scenes::path_tracing::cornell;
 
     /// The measurement watches the estimator's own path: its sample is, bit for bit,
     /// the one `radiance` returns, and the caustic part is a part of it.

@@ -28,7 +28,7 @@ use super::{Measured, Quality, ns_per_call};
 use crate::course::chart::{Chart, Scale};
 use crate::error::Result;
 use crate::ray::{Interval, Ray};
-use crate::shapes::Triangle;
+use crate::shapes::{Barycentric, Triangle};
 use tables::quoted_times;
 
 /// The ray/triangle tests on the chart.
@@ -80,11 +80,7 @@ impl TriangleMethod {
 /// result as the crate's method (and kept out of line like it), so that the two are
 /// timed alike and differ only by the epsilon.
 #[inline(never)]
-pub fn moller_trumbore_epsilon(
-    tri: &Triangle,
-    ray: &Ray,
-    range: Interval,
-) -> Option<(f32, f32, f32)> {
+pub fn moller_trumbore_epsilon(tri: &Triangle, ray: &Ray, range: Interval) -> Option<Barycentric> {
     let [v0, v1, v2] = tri.vertices();
     let (o, d) = (ray.origin(), ray.direction());
     let (e1, e2) = (v1 - v0, v2 - v0);
@@ -105,7 +101,8 @@ pub fn moller_trumbore_epsilon(
         return None;
     }
     let t = e2.dot(q) * inv;
-    range.contains(t).then_some((t, b1, b2))
+    let b = [1.0 - b1 - b2, b1, b2];
+    range.contains(t).then_some(Barycentric { t, b })
 }
 
 /// A closed bumpy UV sphere of `rings` x `segments` (the mesh of lesson 07's S4/S5

@@ -3,11 +3,16 @@
 
 use glam::Vec3;
 
+use std::path::Path;
+
+use super::{TEAPOT_OBJ, asset_path};
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::error::Result;
 use crate::material::Material;
+use crate::raster::Mesh;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
+use crate::transform::Transform;
 
 /// The lesson's scenes, by the names its `--scene` flag takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,15 +25,18 @@ pub enum SceneName {
     Furnace,
     /// A grey sphere in a white environment (STABILITY S17).
     GreyFurnace,
+    /// The Cornell box with the Newell teapot (4032 triangles) for the mirror ball.
+    Teapot,
 }
 
 impl SceneName {
     /// Every scene, in the order `--help` lists them.
-    pub const ALL: [SceneName; 4] = [
+    pub const ALL: [SceneName; 5] = [
         SceneName::Cornell,
         SceneName::TwoLights,
         SceneName::Furnace,
         SceneName::GreyFurnace,
+        SceneName::Teapot,
     ];
 
     /// The scene at `width` x `height` pixels, and its pinhole camera.
@@ -38,6 +46,7 @@ impl SceneName {
             SceneName::TwoLights => two_lights(width, height),
             SceneName::Furnace => interior_furnace(width, height),
             SceneName::GreyFurnace => grey_furnace(width, height, Vec3::ZERO),
+            SceneName::Teapot => cornell_teapot(width, height),
         }
     }
 }
@@ -129,6 +138,29 @@ pub fn cornell(width: u32, height: u32) -> Result<(Scene, Camera)> {
     Ok((scene, camera))
 }
 // ANCHOR_END: cornell
+
+// ANCHOR: cornell_teapot
+/// The Cornell box with the Newell teapot (`assets/meshes/teapot.obj`, 4032
+/// triangles once its quads are split) standing where the mirror ball was, white and
+/// diffuse. A scene a plain list renders slowly: lesson 10 draws it through lesson
+/// 11's BVH ([`crate::scenes::MeshScene`]).
+pub fn cornell_teapot(width: u32, height: u32) -> Result<(Scene, Camera)> {
+    let (box_scene, camera) = cornell(width, height)?;
+    let teapot = Mesh::from_obj(&asset_path(Path::new(TEAPOT_OBJ)))?.mesh;
+    // The teapot's y starts at 0, so it stands on the floor (y = 0); seven times its
+    // size is about as wide as the ball was.
+    let placed = Transform::scale(7.0, 7.0, 7.0).then(Transform::translation(30.0, 0.0, 50.0));
+    let mut world = teapot;
+    for p in &mut world.positions {
+        *p = placed.point(*p);
+    }
+    let mirror_ball = 5;
+    let mut objects: Vec<Object> = box_scene.objects().to_vec();
+    objects.remove(mirror_ball);
+    objects.extend(world.objects(Vec3::splat(0.75))?);
+    Ok((Scene::new(objects, box_scene.background())?, camera))
+}
+// ANCHOR_END: cornell_teapot
 
 // ANCHOR: furnaces
 /// STABILITY S16 (pbrt-v4's interior furnace): a unit sphere of albedo 0.5 that

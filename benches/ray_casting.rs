@@ -9,20 +9,21 @@
 //! After criterion's figures, one run measures every variant interleaved (the
 //! fastest of 7 rounds each) and prints the ratios: the Rust casters against the C
 //! anchor, what robustness costs, what the second core buys, and what
-//! `render::render`'s set-up (a thread pool, the framebuffer and a progress bar,
-//! made on every call) adds to a frame. First it checks that the C anchor computes
+//! `render::render`'s set-up (the framebuffer and a progress bar, made on every
+//! call; the thread pool is made once, by the caller) adds to a frame. First it checks that the C anchor computes
 //! the plain caster's image and camera rays bit for bit. Last, the machine and
 //! whether the CPU was quiet.
 
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
+use rayon::ThreadPool;
 use render_benches::anchor;
 use render_benches::frame::FrameLoop;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::plain::PlainScene;
 use render_lessons::raycast::shadowless;
-use render_lessons::render::render;
+use render_lessons::render::{render, thread_pool};
 use render_lessons::scene::Scene;
 use render_lessons::scenes::{still_life, still_life_pinhole};
 
@@ -46,13 +47,15 @@ fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("primary rays, lesson 08 scene, 1920x1080");
     group.sample_size(10);
     group.throughput(Throughput::Elements(PIXELS as u64));
+    let one = thread_pool(1).expect("a thread pool");
     for threads in [1, cores()] {
+        let pool = thread_pool(threads).expect("a thread pool");
         group.bench_function(format!("robust, {threads} thread(s)"), |b| {
-            b.iter(|| render(&pinhole, Some(threads), |r| shadowless(&scene, r)).expect("render"))
+            b.iter(|| pool.install(|| render(&pinhole, |r| shadowless(&scene, r)).expect("render")))
         });
     }
     group.bench_function("plain (textbook tests), 1 thread", |b| {
-        b.iter(|| render(&pinhole, Some(1), |r| plain.shadowless(r)).expect("render"))
+        b.iter(|| one.install(|| render(&pinhole, |r| plain.shadowless(r)).expect("render")))
     });
     let mut rgb = vec![Vec3::ZERO; PIXELS];
     if anchor::available() {
@@ -61,7 +64,7 @@ fn bench(c: &mut Criterion) {
         });
     }
     group.bench_function("camera rays only, 1 thread", |b| {
-        b.iter(|| render(&pinhole, Some(1), |r| r.direction()).expect("render"))
+        b.iter(|| one.install(|| render(&pinhole, |r| r.direction()).expect("render")))
     });
     group.finish();
 }
@@ -76,7 +79,8 @@ fn differ(a: &[Vec3], b: &[Vec3]) -> usize {
 struct Variant<'a> {
     name: &'static str,
     threads: usize,
-    /// "frame": buffer (and pool) made once; "render()": `render::render` as it is.
+    /// "frame": buffer made once; "render()": `render::render` as it is, on a pool
+    /// made once.
     timed: &'static str,
     work: Box<dyn FnMut() + 'a>,
 }
@@ -109,15 +113,15 @@ fn one_run() {
     let cores = cores();
     println!("\none run, 1920x1080 primary rays of lesson 08:");
     check_anchor(&plain, &pinhole);
-    let robust = |t| render(&pinhole, Some(t), |r| shadowless(&scene, r)).expect("render");
-    let textbook = || render(&pinhole, Some(1), |r| plain.shadowless(r)).expect("render");
-    let (a, b) = (robust(1), textbook());
+    let pools = [1, cores].map(|t| (t, thread_pool(t).expect("a thread pool")));
+    let a = render(&pinhole, |r| shadowless(&scene, r)).expect("render");
+    let b = render(&pinhole, |r| plain.shadowless(r)).expect("render");
     let differ = (0..HEIGHT)
         .flat_map(|y| (0..WIDTH).map(move |x| (x, y)))
         .filter(|&(x, y)| a.get(x, y) != b.get(x, y))
         .count();
 
-    let mut variants = variants(&scene, &plain, &pinhole, cores);
+    let mut variants = variants(&scene, &plain, &pinhole, &pools);
     let times = interleaved_min(
         7,
         &mut variants
@@ -133,8 +137,9 @@ fn one_run() {
             .map(|(_, t)| PIXELS as f64 / t.as_secs_f64() / 1e6)
     };
     let c = rate(C, 1, "frame");
-    println!("  fastest of 7 interleaved rounds; frame = buffer (and pool) made once,");
-    println!("  render() = render::render as it is (pool, buffer and progress bar per call):");
+    println!("  fastest of 7 interleaved rounds; frame = buffer made once,");
+    println!("  render() = render::render as it is (buffer and progress bar per call),");
+    println!("  both on a thread pool made once:");
     println!(
         "  {:<36} {:>7} {:>9} {:>10} {:>9}",
         "caster", "threads", "timed", "M rays/s", "/ C"
@@ -200,7 +205,7 @@ fn variants<'a>(
     scene: &'a Scene,
     plain: &'a PlainScene,
     pinhole: &'a Camera,
-    cores: usize,
+    pools: &'a [(usize, ThreadPool); 2],
 ) -> Vec<Variant<'a>> {
     let frame = |threads| FrameLoop::new(pinhole, threads);
     let variant = |name, threads, timed, work: Box<dyn FnMut() + 'a>| Variant {
@@ -241,9 +246,14 @@ fn variants<'a>(
         PLAIN,
         1,
         "render()",
-        Box::new(move || drop(render(pinhole, Some(1), |r| plain.shadowless(r)))),
+        Box::new(move || {
+            pools[0]
+                .1
+                .install(|| drop(render(pinhole, |r| plain.shadowless(r))))
+        }),
     ));
-    for threads in [1, cores] {
+    for (threads, pool) in pools {
+        let threads = *threads;
         let mut f = frame(threads);
         v.push(variant(
             ROBUST,
@@ -255,7 +265,7 @@ fn variants<'a>(
             ROBUST,
             threads,
             "render()",
-            Box::new(move || drop(render(pinhole, Some(threads), |r| shadowless(scene, r)))),
+            Box::new(move || pool.install(|| drop(render(pinhole, |r| shadowless(scene, r))))),
         ));
     }
     let mut f = frame(1);
@@ -269,7 +279,11 @@ fn variants<'a>(
         CAMERA,
         1,
         "render()",
-        Box::new(move || drop(render(pinhole, Some(1), |r| r.direction()))),
+        Box::new(move || {
+            pools[0]
+                .1
+                .install(|| drop(render(pinhole, |r| r.direction())))
+        }),
     ));
     v
 }

@@ -176,7 +176,7 @@ fn the_still_lifes_image_is_the_readable_loops_bit_for_bit() {
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(192, 108).unwrap();
     let pinhole = camera.pinhole().unwrap();
-    let fast = render(&camera, Some(1), |r| shadowless(&scene, r)).unwrap();
+    let fast = render(&camera, |r| shadowless(&scene, r)).unwrap();
     for y in 0..108 {
         for x in 0..192 {
             let readable = match scene.closest(&pinhole.ray(x, y), Interval::AHEAD) {

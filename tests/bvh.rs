@@ -487,14 +487,7 @@ fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) 
     use render_lessons::pathtrace::{Accumulator, PixelSampling, Settings};
     let settings = Settings::default();
     let image = Accumulator::new(camera, 7)
-        .render_pass(
-            scene,
-            camera,
-            &settings,
-            PixelSampling::Independent,
-            4,
-            None,
-        )
+        .render_pass(scene, camera, &settings, PixelSampling::Independent, 4)
         .unwrap();
     (0..image.height())
         .flat_map(|y| (0..image.width()).map(move |x| (x, y)))

@@ -13,15 +13,25 @@
 //! call; the thread pool is made once, by the caller) adds to a frame. First it checks that the C anchor computes
 //! the plain caster's image and camera rays bit for bit. Last, the machine and
 //! whether the CPU was quiet.
+//!
+//! With `RENDER_BENCHES_FIGURES=chapters/figures` the run also writes lesson 11's
+//! chart 10, the C anchor against the plain and the robust Rust casters
+//! (`11_10_c_anchor.svg`, `.csv`, and `.md` with the numbers the book quotes).
+
+use std::path::{Path, PathBuf};
 
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
 use rayon::ThreadPool;
 use render_benches::anchor;
 use render_benches::frame::FrameLoop;
+use render_lessons::Result;
 use render_lessons::camera::Camera;
+use render_lessons::course::bars::Bars;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::plain::PlainScene;
+use render_lessons::course::report::{BookNumbers, Quoted, Run};
+use render_lessons::files::write_atomically;
 use render_lessons::raycast::shadowless;
 use render_lessons::render::{render, thread_pool};
 use render_lessons::scene::Scene;
@@ -108,7 +118,7 @@ fn check_anchor(plain: &PlainScene, pinhole: &Camera) {
 }
 
 /// Every variant in one run, interleaved, and the ratios between them.
-fn one_run() {
+fn one_run(watch: &CpuWatch) {
     let (scene, plain, pinhole) = setup();
     let cores = cores();
     println!("\none run, 1920x1080 primary rays of lesson 08:");
@@ -191,7 +201,85 @@ fn one_run() {
         rate(ROBUST, cores, "frame"),
         rate(ROBUST, cores, "render()"),
     );
+    if let Some(camera) = rate(CAMERA, 1, "frame") {
+        println!(
+            "  camera rays: {:.2} ns each (frame, 1 thread)",
+            1e3 / camera
+        );
+    }
     println!("  robust and plain images differ in {differ} of {PIXELS} pixels");
+    if let (Some(dir), Some(c), Some(plain), Some(robust)) =
+        (std::env::var_os(FIGURES), c, plain1, robust1)
+    {
+        let written = figure(Path::new(&dir), [c, plain, robust], watch);
+        match written {
+            Ok(paths) => paths
+                .iter()
+                .for_each(|p| println!("  wrote {}", p.display())),
+            Err(e) => println!("  could not write the chart: {e}"),
+        }
+    }
+}
+
+/// Set to a folder (`chapters/figures`) to have the run write lesson 11's chart of
+/// the C anchor against the Rust casters there.
+const FIGURES: &str = "RENDER_BENCHES_FIGURES";
+
+/// The chart's file stem, and the command that writes it.
+const STEM: &str = "11_10_c_anchor";
+const COMMAND: &str =
+    "`RENDER_BENCHES_FIGURES=chapters/figures cargo bench -p render-benches --bench ray_casting`";
+
+/// Lesson 11's chart 10 from one run's M rays/s of the C anchor, the plain and the
+/// robust caster (frames, one thread): what structure costs (C against plain Rust,
+/// the same tests) and what robustness costs (plain against robust Rust). Writes
+/// `STEM.svg`, `.csv` and `.md` (the numbers the book quotes) into `dir`.
+fn figure(dir: &Path, [c, plain, robust]: [f64; 3], watch: &CpuWatch) -> Result<Vec<PathBuf>> {
+    let ns = |rate: f64| 1e3 / rate;
+    let bars = Bars::new(
+        "10. One ray of lesson 08, three casters (one thread)",
+        "ns per primary ray",
+    )
+    .with("plain C (textbook tests)", ns(c))
+    .with("plain Rust (textbook tests)", ns(plain))
+    .with("robust Rust (this crate)", ns(robust));
+    let mut table = Quoted::new(
+        "anchor",
+        true,
+        &["caster", "ns per ray", "M rays/s", "against the C anchor"],
+    );
+    for (name, rate) in [
+        ("plain C (textbook tests)", c),
+        ("plain Rust (textbook tests)", plain),
+        ("robust Rust (this crate)", robust),
+    ] {
+        table = table.row(vec![
+            name.to_string(),
+            format!("{:.1}", ns(rate)),
+            format!("{rate:.1}"),
+            format!("{:.2}x", rate / c),
+        ]);
+    }
+    let numbers = BookNumbers::default()
+        .table(table)
+        .value("structure", true, format!("{:.2}", c / plain))
+        .value("robustness", true, format!("{:.2}", plain / robust));
+    let load = watch.others_share().map_or("load unknown".into(), |share| {
+        format!("other processes used {:.0}% of a core", 100.0 * share)
+    });
+    let here = Run::here("");
+    let run = Run {
+        quality: COMMAND,
+        machine: format!("{}, {load}", here.machine),
+        date: here.date,
+    };
+    let mut written = bars.save(dir, STEM)?.to_vec();
+    let md = dir.join(format!("{STEM}.md"));
+    let again = format!("rerun {COMMAND}");
+    let text = numbers.markdown_by(STEM, &run, "benches/ray_casting.rs", &again);
+    write_atomically(&md, text.as_bytes())?;
+    written.push(md);
+    Ok(written)
 }
 
 const C: &str = "C anchor (textbook tests, -O2)";
@@ -295,7 +383,7 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     if benchmarking() {
-        one_run();
+        one_run(&watch);
         println!("{}", watch.report());
     }
 }

@@ -98,6 +98,11 @@ fn assert_same_answers(scene: &Scene, rays: &[Ray]) -> usize {
             }
             (a, b) => panic!("ray {k}: {ray:?}: list {a:?}, tree {b:?}"),
         }
+        assert_eq!(
+            bvh.closest_object(ray, Interval::AHEAD),
+            list.map(|found| found.object),
+            "ray {k}: {ray:?}"
+        );
         // Shadow-ray questions over a few ranges, including one that ends just
         // before the closest hit.
         let t_hit = list.map_or(10.0, |found| found.hit.t);

@@ -127,10 +127,7 @@ impl ShapesByKind {
                     })
                 }),
                 Shapes::Triangles(v) => closest_in(v, first, &mut range, found, |tri, r| {
-                    tri.watertight_prepared(ray, r).map(|c| Candidate {
-                        t: c.t,
-                        detail: Detail::Barycentric(c),
-                    })
+                    tri.watertight_prepared(ray, r).map(Candidate::triangle)
                 }),
                 Shapes::Others(v) => {
                     closest_in(v, first, &mut range, found, |s, r| s.candidate(ray, r))

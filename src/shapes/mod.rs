@@ -116,6 +116,15 @@ impl Candidate {
             detail: Detail::OnRay,
         }
     }
+
+    /// A triangle's candidate, from its watertight crossing.
+    #[inline(always)]
+    pub(crate) fn triangle(crossing: Barycentric) -> Candidate {
+        Candidate {
+            t: crossing.t,
+            detail: Detail::Barycentric(crossing),
+        }
+    }
 }
 
 /// A hit record at `t` from the point on the ray and the shape's `normal_at`: what

@@ -211,7 +211,9 @@ fn one_run(watch: &CpuWatch) {
     if let (Some(dir), Some(c), Some(plain), Some(robust)) =
         (std::env::var_os(FIGURES), c, plain1, robust1)
     {
-        let written = figure(Path::new(&dir), [c, plain, robust], watch);
+        // A relative folder is the repository's (cargo runs a bench in its package).
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(dir);
+        let written = figure(&dir, [c, plain, robust], watch);
         match written {
             Ok(paths) => paths
                 .iter()
@@ -221,8 +223,8 @@ fn one_run(watch: &CpuWatch) {
     }
 }
 
-/// Set to a folder (`chapters/figures`) to have the run write lesson 11's chart of
-/// the C anchor against the Rust casters there.
+/// Set to a folder (`chapters/figures`, relative to the repository's root) to have
+/// the run write lesson 11's chart of the C anchor against the Rust casters there.
 const FIGURES: &str = "RENDER_BENCHES_FIGURES";
 
 /// The chart's file stem, and the command that writes it.

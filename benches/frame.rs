@@ -1,8 +1,9 @@
 //! A frame as a renderer that keeps going spends it: the framebuffer and, for more
 //! than one thread, the thread pool are made once, before the clock starts; one
-//! frame is then only the per-pixel work. `render::render` makes both (and a
-//! progress bar) on every call; the ray-casting bench times it as it is too, and
-//! the difference is what that set-up costs a frame.
+//! frame is then only the per-pixel work. `render::render` makes a framebuffer
+//! (and a progress bar) on every call, on the pool its caller installed; the
+//! ray-casting bench times it as it is too, and the difference is what that
+//! set-up costs a frame.
 
 use glam::Vec3;
 use rayon::prelude::*;
@@ -40,8 +41,9 @@ impl FrameLoop {
     pub fn run(&mut self, camera: &Camera, shade: impl Fn(&Ray) -> Vec3 + Sync) {
         let width = self.width as usize;
         let shade_row = |(y, row): (usize, &mut [Vec3])| {
-            for (x, pixel) in row.iter_mut().enumerate() {
-                *pixel = shade(&camera.ray(x as u32, y as u32));
+            let mut rays = camera.row(y as u32);
+            for pixel in row.iter_mut() {
+                *pixel = shade(&rays.next_ray());
             }
         };
         match &self.pool {

@@ -65,17 +65,13 @@ fn samples_per_second(c: &mut Criterion) {
     for (name, sampling) in [("MIS", Sampling::Mis), ("cosine", Sampling::Cosine)] {
         let settings = settings(sampling);
         for threads in [1, cores()] {
+            let pool = render_lessons::render::thread_pool(threads).expect("a thread pool");
             let mut acc = Accumulator::new(&camera, 1);
             group.bench_function(format!("{name}, {threads} thread(s)"), |b| {
                 b.iter(|| {
-                    acc.render_pass(
-                        &scene,
-                        &camera,
-                        &settings,
-                        PixelSampling::Independent,
-                        1,
-                        Some(threads),
-                    )
+                    pool.install(|| {
+                        acc.render_pass(&scene, &camera, &settings, PixelSampling::Independent, 1)
+                    })
                     .expect("pass")
                 })
             });
@@ -168,14 +164,7 @@ fn reference_half(scene: &Scene, camera: &Camera, seed: u64) -> Framebuffer {
     let mut image = None;
     while acc.samples() < REFERENCE_HALF_SPP {
         let spp = 64.min(REFERENCE_HALF_SPP - acc.samples());
-        let pass = acc.render_pass(
-            scene,
-            camera,
-            &settings,
-            PixelSampling::Independent,
-            spp,
-            None,
-        );
+        let pass = acc.render_pass(scene, camera, &settings, PixelSampling::Independent, spp);
         image = Some(pass.expect("reference pass"));
     }
     assert_eq!(
@@ -256,10 +245,7 @@ fn equal_time() {
         REFERENCE_SEEDS[1],
         reference.mean()
     );
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .expect("thread pool");
+    let pool = render_lessons::render::thread_pool(threads).expect("a thread pool");
     let methods = [
         ("(a) cosine, no light sampling (smallpt)", Sampling::Cosine),
         ("(b1) next event estimation", Sampling::NextEvent),
@@ -288,7 +274,6 @@ fn equal_time() {
                         &run.settings,
                         PixelSampling::Independent,
                         1,
-                        None,
                     )
                     .expect("pass");
                 run.seconds += start.elapsed().as_secs_f64();
@@ -399,15 +384,8 @@ fn variance_analysis() {
     let measured: Vec<_> = methods
         .iter()
         .map(|&(name, sampling)| {
-            let v = pixel_variance(
-                &scene,
-                &camera,
-                &settings(sampling),
-                VARIANCE_SPP,
-                SEED,
-                None,
-            )
-            .expect("variance");
+            let v = pixel_variance(&scene, &camera, &settings(sampling), VARIANCE_SPP, SEED)
+                .expect("variance");
             (name, v)
         })
         .collect();

@@ -17,7 +17,7 @@ use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::measure::machine::CpuWatch;
 use render_lessons::raster::{Cull, Mesh, Model, RasterSettings, rasterize};
 use render_lessons::raycast::lit_unshadowed;
-use render_lessons::render::render;
+use render_lessons::render::{render, thread_pool};
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::TORUS_OBJ;
 
@@ -64,6 +64,7 @@ fn triangle_scene(mesh: &Mesh) -> Scene {
 }
 
 fn raster(c: &mut Criterion) {
+    let one = thread_pool(1).expect("a thread pool");
     let camera = camera();
     let sphere = Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere");
     let meshes = [("uv sphere", sphere), ("torus.obj", torus())];
@@ -81,7 +82,7 @@ fn raster(c: &mut Criterion) {
                 ..RasterSettings::default()
             };
             group.bench_function(format!("{name}, {triangles} triangles, {cull:?}"), |b| {
-                b.iter(|| rasterize(&instances, &camera, &LIGHT, &settings, Some(1)))
+                b.iter(|| one.install(|| rasterize(&instances, &camera, &LIGHT, &settings)))
             });
         }
     }
@@ -110,6 +111,7 @@ fn ray_cast(c: &mut Criterion) {
 }
 
 fn bvh_ray_cast(c: &mut Criterion) {
+    let one = thread_pool(1).expect("a thread pool");
     let camera = camera();
     let scene = triangle_scene(&Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere"));
     let tree = BvhScene::new(scene);
@@ -117,7 +119,7 @@ fn bvh_ray_cast(c: &mut Criterion) {
     group.sample_size(10);
     group.throughput(Throughput::Elements(u64::from(WIDTH) * u64::from(HEIGHT)));
     group.bench_function("uv sphere, 99904 triangles", |b| {
-        b.iter(|| render(&camera, Some(1), |r| lit_unshadowed(&tree, r)))
+        b.iter(|| one.install(|| render(&camera, |r| lit_unshadowed(&tree, r))))
     });
     group.finish();
 }

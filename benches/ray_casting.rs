@@ -9,20 +9,31 @@
 //! After criterion's figures, one run measures every variant interleaved (the
 //! fastest of 7 rounds each) and prints the ratios: the Rust casters against the C
 //! anchor, what robustness costs, what the second core buys, and what
-//! `render::render`'s set-up (a thread pool, the framebuffer and a progress bar,
-//! made on every call) adds to a frame. First it checks that the C anchor computes
+//! `render::render`'s set-up (the framebuffer and a progress bar, made on every
+//! call; the thread pool is made once, by the caller) adds to a frame. First it checks that the C anchor computes
 //! the plain caster's image and camera rays bit for bit. Last, the machine and
 //! whether the CPU was quiet.
+//!
+//! With `RENDER_BENCHES_FIGURES=chapters/figures` the run also writes lesson 11's
+//! chart 10, the C anchor against the plain and the robust Rust casters
+//! (`11_10_c_anchor.svg`, `.csv`, and `.md` with the numbers the book quotes).
+
+use std::path::{Path, PathBuf};
 
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
+use rayon::ThreadPool;
 use render_benches::anchor;
 use render_benches::frame::FrameLoop;
+use render_lessons::Result;
 use render_lessons::camera::Camera;
+use render_lessons::course::bars::Bars;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
 use render_lessons::course::measure::plain::PlainScene;
+use render_lessons::course::report::{BookNumbers, Quoted, Run};
+use render_lessons::files::write_atomically;
 use render_lessons::raycast::shadowless;
-use render_lessons::render::render;
+use render_lessons::render::{render, thread_pool};
 use render_lessons::scene::Scene;
 use render_lessons::scenes::{still_life, still_life_pinhole};
 
@@ -46,13 +57,15 @@ fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("primary rays, lesson 08 scene, 1920x1080");
     group.sample_size(10);
     group.throughput(Throughput::Elements(PIXELS as u64));
+    let one = thread_pool(1).expect("a thread pool");
     for threads in [1, cores()] {
+        let pool = thread_pool(threads).expect("a thread pool");
         group.bench_function(format!("robust, {threads} thread(s)"), |b| {
-            b.iter(|| render(&pinhole, Some(threads), |r| shadowless(&scene, r)).expect("render"))
+            b.iter(|| pool.install(|| render(&pinhole, |r| shadowless(&scene, r)).expect("render")))
         });
     }
     group.bench_function("plain (textbook tests), 1 thread", |b| {
-        b.iter(|| render(&pinhole, Some(1), |r| plain.shadowless(r)).expect("render"))
+        b.iter(|| one.install(|| render(&pinhole, |r| plain.shadowless(r)).expect("render")))
     });
     let mut rgb = vec![Vec3::ZERO; PIXELS];
     if anchor::available() {
@@ -61,7 +74,7 @@ fn bench(c: &mut Criterion) {
         });
     }
     group.bench_function("camera rays only, 1 thread", |b| {
-        b.iter(|| render(&pinhole, Some(1), |r| r.direction()).expect("render"))
+        b.iter(|| one.install(|| render(&pinhole, |r| r.direction()).expect("render")))
     });
     group.finish();
 }
@@ -76,7 +89,8 @@ fn differ(a: &[Vec3], b: &[Vec3]) -> usize {
 struct Variant<'a> {
     name: &'static str,
     threads: usize,
-    /// "frame": buffer (and pool) made once; "render()": `render::render` as it is.
+    /// "frame": buffer made once; "render()": `render::render` as it is, on a pool
+    /// made once.
     timed: &'static str,
     work: Box<dyn FnMut() + 'a>,
 }
@@ -104,20 +118,20 @@ fn check_anchor(plain: &PlainScene, pinhole: &Camera) {
 }
 
 /// Every variant in one run, interleaved, and the ratios between them.
-fn one_run() {
+fn one_run(watch: &CpuWatch) {
     let (scene, plain, pinhole) = setup();
     let cores = cores();
     println!("\none run, 1920x1080 primary rays of lesson 08:");
     check_anchor(&plain, &pinhole);
-    let robust = |t| render(&pinhole, Some(t), |r| shadowless(&scene, r)).expect("render");
-    let textbook = || render(&pinhole, Some(1), |r| plain.shadowless(r)).expect("render");
-    let (a, b) = (robust(1), textbook());
+    let pools = [1, cores].map(|t| (t, thread_pool(t).expect("a thread pool")));
+    let a = render(&pinhole, |r| shadowless(&scene, r)).expect("render");
+    let b = render(&pinhole, |r| plain.shadowless(r)).expect("render");
     let differ = (0..HEIGHT)
         .flat_map(|y| (0..WIDTH).map(move |x| (x, y)))
         .filter(|&(x, y)| a.get(x, y) != b.get(x, y))
         .count();
 
-    let mut variants = variants(&scene, &plain, &pinhole, cores);
+    let mut variants = variants(&scene, &plain, &pinhole, &pools);
     let times = interleaved_min(
         7,
         &mut variants
@@ -133,8 +147,9 @@ fn one_run() {
             .map(|(_, t)| PIXELS as f64 / t.as_secs_f64() / 1e6)
     };
     let c = rate(C, 1, "frame");
-    println!("  fastest of 7 interleaved rounds; frame = buffer (and pool) made once,");
-    println!("  render() = render::render as it is (pool, buffer and progress bar per call):");
+    println!("  fastest of 7 interleaved rounds; frame = buffer made once,");
+    println!("  render() = render::render as it is (buffer and progress bar per call),");
+    println!("  both on a thread pool made once:");
     println!(
         "  {:<36} {:>7} {:>9} {:>10} {:>9}",
         "caster", "threads", "timed", "M rays/s", "/ C"
@@ -186,7 +201,87 @@ fn one_run() {
         rate(ROBUST, cores, "frame"),
         rate(ROBUST, cores, "render()"),
     );
+    if let Some(camera) = rate(CAMERA, 1, "frame") {
+        println!(
+            "  camera rays: {:.2} ns each (frame, 1 thread)",
+            1e3 / camera
+        );
+    }
     println!("  robust and plain images differ in {differ} of {PIXELS} pixels");
+    if let (Some(dir), Some(c), Some(plain), Some(robust)) =
+        (std::env::var_os(FIGURES), c, plain1, robust1)
+    {
+        // A relative folder is the repository's (cargo runs a bench in its package).
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(dir);
+        let written = figure(&dir, [c, plain, robust], watch);
+        match written {
+            Ok(paths) => paths
+                .iter()
+                .for_each(|p| println!("  wrote {}", p.display())),
+            Err(e) => println!("  could not write the chart: {e}"),
+        }
+    }
+}
+
+/// Set to a folder (`chapters/figures`, relative to the repository's root) to have
+/// the run write lesson 11's chart of the C anchor against the Rust casters there.
+const FIGURES: &str = "RENDER_BENCHES_FIGURES";
+
+/// The chart's file stem, and the command that writes it.
+const STEM: &str = "11_10_c_anchor";
+const COMMAND: &str =
+    "`RENDER_BENCHES_FIGURES=chapters/figures cargo bench -p render-benches --bench ray_casting`";
+
+/// Lesson 11's chart 10 from one run's M rays/s of the C anchor, the plain and the
+/// robust caster (frames, one thread): what structure costs (C against plain Rust,
+/// the same tests) and what robustness costs (plain against robust Rust). Writes
+/// `STEM.svg`, `.csv` and `.md` (the numbers the book quotes) into `dir`.
+fn figure(dir: &Path, [c, plain, robust]: [f64; 3], watch: &CpuWatch) -> Result<Vec<PathBuf>> {
+    let ns = |rate: f64| 1e3 / rate;
+    let bars = Bars::new(
+        "10. One ray of lesson 08, three casters (one thread)",
+        "ns per primary ray",
+    )
+    .with("plain C (textbook tests)", ns(c))
+    .with("plain Rust (textbook tests)", ns(plain))
+    .with("robust Rust (this crate)", ns(robust));
+    let mut table = Quoted::new(
+        "anchor",
+        true,
+        &["caster", "ns per ray", "M rays/s", "against the C anchor"],
+    );
+    for (name, rate) in [
+        ("plain C (textbook tests)", c),
+        ("plain Rust (textbook tests)", plain),
+        ("robust Rust (this crate)", robust),
+    ] {
+        table = table.row(vec![
+            name.to_string(),
+            format!("{:.1}", ns(rate)),
+            format!("{rate:.1}"),
+            format!("{:.2}x", rate / c),
+        ]);
+    }
+    let numbers = BookNumbers::default()
+        .table(table)
+        .value("structure", true, format!("{:.2}", c / plain))
+        .value("robustness", true, format!("{:.2}", plain / robust));
+    let load = watch.others_share().map_or("load unknown".into(), |share| {
+        format!("other processes used {:.0}% of a core", 100.0 * share)
+    });
+    let here = Run::here("");
+    let run = Run {
+        quality: COMMAND,
+        machine: format!("{}, {load}", here.machine),
+        date: here.date,
+    };
+    let mut written = bars.save(dir, STEM)?.to_vec();
+    let md = dir.join(format!("{STEM}.md"));
+    let again = format!("rerun {COMMAND}");
+    let text = numbers.markdown_by(STEM, &run, "benches/ray_casting.rs", &again);
+    write_atomically(&md, text.as_bytes())?;
+    written.push(md);
+    Ok(written)
 }
 
 const C: &str = "C anchor (textbook tests, -O2)";
@@ -200,7 +295,7 @@ fn variants<'a>(
     scene: &'a Scene,
     plain: &'a PlainScene,
     pinhole: &'a Camera,
-    cores: usize,
+    pools: &'a [(usize, ThreadPool); 2],
 ) -> Vec<Variant<'a>> {
     let frame = |threads| FrameLoop::new(pinhole, threads);
     let variant = |name, threads, timed, work: Box<dyn FnMut() + 'a>| Variant {
@@ -241,9 +336,14 @@ fn variants<'a>(
         PLAIN,
         1,
         "render()",
-        Box::new(move || drop(render(pinhole, Some(1), |r| plain.shadowless(r)))),
+        Box::new(move || {
+            pools[0]
+                .1
+                .install(|| drop(render(pinhole, |r| plain.shadowless(r))))
+        }),
     ));
-    for threads in [1, cores] {
+    for (threads, pool) in pools {
+        let threads = *threads;
         let mut f = frame(threads);
         v.push(variant(
             ROBUST,
@@ -255,7 +355,7 @@ fn variants<'a>(
             ROBUST,
             threads,
             "render()",
-            Box::new(move || drop(render(pinhole, Some(threads), |r| shadowless(scene, r)))),
+            Box::new(move || pool.install(|| drop(render(pinhole, |r| shadowless(scene, r))))),
         ));
     }
     let mut f = frame(1);
@@ -269,7 +369,11 @@ fn variants<'a>(
         CAMERA,
         1,
         "render()",
-        Box::new(move || drop(render(pinhole, Some(1), |r| r.direction()))),
+        Box::new(move || {
+            pools[0]
+                .1
+                .install(|| drop(render(pinhole, |r| r.direction())))
+        }),
     ));
     v
 }
@@ -281,7 +385,7 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     if benchmarking() {
-        one_run();
+        one_run(&watch);
         println!("{}", watch.report());
     }
 }

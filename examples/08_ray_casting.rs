@@ -21,7 +21,7 @@ use render_lessons::course::report::vec3;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Interval;
 use render_lessons::raycast::{lit, shadowless};
-use render_lessons::render::render;
+use render_lessons::render::{render, with_threads};
 use render_lessons::scenes::{STILL_LIFE_OBJECTS, still_life, still_life_cameras};
 use render_lessons::spawn::Offset;
 use render_lessons::{Error, Result};
@@ -37,20 +37,22 @@ fn main() -> ExitCode {
         };
         let mine_images = u64::from(closest.is_some()) + u64::from(lambert.is_some());
         let (size, threads) = args.image.check(IMAGES.len() as u64 + mine_images)?;
-        let images = images(size, args.epsilon, args.far, threads)?;
-        lesson::print(&numbers(size, args.epsilon, args.far, &images)?);
-        for (name, image) in IMAGES.iter().zip(&images) {
-            args.output.image(name, image)?;
-        }
-        if let Some(closest) = closest {
-            let image = my_shadowless_image(closest, size, threads)?;
-            args.output.image("08_shadowless_mine.png", &image)?;
-        }
-        if let Some(lambert) = lambert {
-            let image = my_lambert_image(lambert, size, threads)?;
-            args.output.image("08_lambert_mine.png", &image)?;
-        }
-        Ok(())
+        with_threads(threads, || {
+            let images = images(size, args.epsilon, args.far)?;
+            lesson::print(&numbers(size, args.epsilon, args.far, &images)?);
+            for (name, image) in IMAGES.iter().zip(&images) {
+                args.output.image(name, image)?;
+            }
+            if let Some(closest) = closest {
+                let image = my_shadowless_image(closest, size)?;
+                args.output.image("08_shadowless_mine.png", &image)?;
+            }
+            if let Some(lambert) = lambert {
+                let image = my_lambert_image(lambert, size)?;
+                args.output.image("08_lambert_mine.png", &image)?;
+            }
+            Ok(())
+        })
     })
 }
 
@@ -71,7 +73,6 @@ pub fn images(
     (width, height): (u32, u32),
     epsilon: f32,
     far: Vec3,
-    threads: Option<usize>,
 ) -> Result<[Framebuffer; IMAGES.len()]> {
     let near = still_life(Vec3::ZERO)?;
     let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
@@ -80,15 +81,12 @@ pub fn images(
         reason: "moves the scene out of f32's reach (its triangle loses its area)",
     })?;
     let [_, far_pinhole] = still_life_cameras(width, height, far)?;
-    let t = threads;
     Ok([
-        render(&ortho, t, |r| shadowless(&near, r))?,
-        render(&pinhole, t, |r| shadowless(&near, r))?,
-        render(&pinhole, t, |r| lit(&near, r, Offset::Scaled))?,
-        render(&far_pinhole, t, |r| {
-            lit(&far_scene, r, Offset::Fixed(epsilon))
-        })?,
-        render(&far_pinhole, t, |r| lit(&far_scene, r, Offset::Scaled))?,
+        render(&ortho, |r| shadowless(&near, r))?,
+        render(&pinhole, |r| shadowless(&near, r))?,
+        render(&pinhole, |r| lit(&near, r, Offset::Scaled))?,
+        render(&far_pinhole, |r| lit(&far_scene, r, Offset::Fixed(epsilon)))?,
+        render(&far_pinhole, |r| lit(&far_scene, r, Offset::Scaled))?,
     ])
 }
 // ANCHOR_END: images
@@ -134,16 +132,13 @@ pub fn numbers(
 pub fn my_shadowless_image(
     closest: mine::Closest,
     (width, height): (u32, u32),
-    threads: Option<usize>,
 ) -> Result<Framebuffer> {
     let scene = still_life(Vec3::ZERO)?;
     let [_, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
     let shapes: Vec<_> = scene.objects().iter().map(|o| o.shape.clone()).collect();
-    render(&pinhole, threads, |r| {
-        match closest(r, &shapes, Interval::AHEAD) {
-            Some(found) => scene.object(&found).colour(),
-            None => scene.background(),
-        }
+    render(&pinhole, |r| match closest(r, &shapes, Interval::AHEAD) {
+        Some(found) => scene.object(&found).colour(),
+        None => scene.background(),
     })
 }
 
@@ -152,11 +147,10 @@ pub fn my_shadowless_image(
 pub fn my_lambert_image(
     lambert: mine::Lambert,
     (width, height): (u32, u32),
-    threads: Option<usize>,
 ) -> Result<Framebuffer> {
     let scene = still_life(Vec3::ZERO)?;
     let [_, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
-    render(&pinhole, threads, |r| mine::lit_with(&scene, r, lambert))
+    render(&pinhole, |r| mine::lit_with(&scene, r, lambert))
 }
 
 /// The lesson's parameters; every one has a default that reproduces the book.

@@ -24,11 +24,12 @@ use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, difference};
 use render_lessons::raster::{check_segments, floor_settings, point_light, rasterize};
 use render_lessons::raster::{reference, tessellate};
+use render_lessons::render::{render, with_threads};
 use render_lessons::scenes::{MeshScene, PlacedMesh, still_life_shadows};
 use render_lessons::scenes::{STILL_LIFE_OBJECTS, TORUS_OBJ, still_life, still_life_pinhole};
 use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
 use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, spawn::Offset};
-use render_lessons::{raycast::lit, render::render, scene::Scene};
+use render_lessons::{raycast::lit, scene::Scene};
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
@@ -41,7 +42,9 @@ fn main() -> ExitCode {
         check_segments(&scene, args.segments)?;
         let mesh = mesh_on_the_floor(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
         let model = &mesh.model;
-        let i = images(&scene, &camera, args.segments, shadows, model, threads)?;
+        let i = with_threads(threads, || {
+            images(&scene, &camera, args.segments, shadows, model)
+        })?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
         lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &i)?);
         lesson::print(&i.times.table().to_string()); // the terminal only
@@ -65,13 +68,12 @@ pub fn images(
     segments: u32,
     shadows: Shadows,
     mesh: &Model,
-    threads: Option<usize>,
 ) -> Result<Lesson> {
     let models = tessellate(scene, segments)?; // modeling: vertex and triangle lists
     let light = point_light(scene)?; // lighting
     let pipeline = |models: &[Model], shading, shadows| {
         let settings = floor_settings(scene).with(shading, shadows);
-        rasterize(models, camera, &light, &settings, threads) // transform ... shading
+        rasterize(models, camera, &light, &settings) // transform ... shading
     };
     let mapped = |bias| pipeline(&models, PerPixel, Some(shadows.with_bias(bias)));
     let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
@@ -82,18 +84,16 @@ pub fn images(
         MeshScene::Tree(_) => "ray cast through a BVH, floor + mesh",
     };
     let mut t = Timings::default();
-    let ray_cast = t.time("ray cast, analytic scene", || {
-        reference(scene, camera, threads)
-    })?;
+    let ray_cast = t.time("ray cast, analytic scene", || reference(scene, camera))?;
     let per_vertex = pipeline(&models, PerVertex, None)?;
     let per_pixel = t.time("rasterized, per-pixel shading", || {
         pipeline(&models, PerPixel, None)
     })?;
     let shadow_ray = t.time("ray cast with shadow rays", || {
-        render(camera, threads, |r| lit(scene, r, Offset::Scaled))
+        render(camera, |r| lit(scene, r, Offset::Scaled))
     })?;
     let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
-    let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera, threads))?;
+    let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera))?;
     drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes
     let mesh_raster = t.time("rasterized, floor + mesh", || {
         pipeline(&floor_and_mesh_models, PerPixel, None)

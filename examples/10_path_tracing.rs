@@ -26,6 +26,7 @@ use render_lessons::pathtrace::PixelSampling;
 use render_lessons::pathtrace::convergence::{Part, Renders, Study};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
+use render_lessons::render::with_threads;
 use render_lessons::scene::{Intersect, Scene};
 use render_lessons::scenes::MeshScene;
 use render_lessons::scenes::path_tracing::SceneName;
@@ -40,11 +41,11 @@ fn main() -> ExitCode {
         let size = (args.width, args.height);
         let lens = (args.lens.aperture, args.lens.focus);
         let (scene, camera) = scene_and_camera(args.scene, size, lens)?;
-        let study = args.study.study(args.path.settings(), threads)?;
+        let study = args.study.study(args.path.settings())?;
         // Every object on every ray while that stays cheap, else lesson 11's BVH.
         let scene = MeshScene::new(scene, study.samples() * u64::from(args.width * args.height));
         // ANCHOR_END: setup
-        let renders = render(&scene, &camera, &study, &args.output)?;
+        let renders = with_threads(threads, || render(&scene, &camera, &study, &args.output))?;
         let seconds = start.elapsed().as_secs_f64();
         lesson::print(&numbers(args.scene, &study, &renders));
         lesson::print(&format!("rendered in {seconds:.1} s\n"));

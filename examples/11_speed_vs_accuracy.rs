@@ -70,17 +70,17 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
     let scene = still_life(glam::Vec3::ZERO)?;
     let camera = still_life_pinhole(480, 270)?;
     let light = point_light(&scene)?;
-    let mask = reference(&scene, &camera, None)?.silhouettes;
+    let mask = reference(&scene, &camera)?.silhouettes;
     let repeats = quality.pick(2, 5);
     let (traced_ms, traced) = best_ms(repeats, || {
-        render(&camera, None, |r| lit(&scene, r, Offset::Scaled))
+        render(&camera, |r| lit(&scene, r, Offset::Scaled))
     })?;
     let raster = |segments: u32, map: Option<u32>| -> Result<(f64, f64)> {
         let instances = tessellate(&scene, segments)?;
         let shadows = map.map(|size| still_life_shadows(size, 1.0));
         let settings = floor_settings(&scene).with(Shading::PerPixel, shadows);
         let (ms, image) = best_ms(repeats, || {
-            rasterize(&instances, &camera, &light, &settings, None)
+            rasterize(&instances, &camera, &light, &settings)
         })?;
         let a = agreement(&image, &traced, &mask, TOLERANCE);
         Ok((ms, 100.0 - a.percent_agreeing()))
@@ -114,7 +114,7 @@ pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)>
     let message = format!("building a BVH over {primitives} primitives");
     let tree = t.time("build the BVH", || progress::spinner(message, build));
     let image = t.time("ray cast with shadow rays", || {
-        render(&camera, None, |r| lit(&tree, r, Offset::Scaled))
+        render(&camera, |r| lit(&tree, r, Offset::Scaled))
     })?;
     let file = path.file_name().unwrap_or_default().to_string_lossy();
     let title = format!("{file}, split in four {subdivisions} times, and its tree");

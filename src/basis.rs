@@ -109,6 +109,7 @@ impl Basis {
 
     // ANCHOR: change
     /// a = B b: from coordinates in this basis to standard (world) coordinates.
+    #[inline]
     pub fn to_world(&self, b: Vec3) -> Vec3 {
         b.x * self.u + b.y * self.v + b.z * self.w
     }

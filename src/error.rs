@@ -37,6 +37,8 @@ pub enum Error {
     NotSymmetric { param: &'static str, error: f32 },
     /// A matrix has no inverse.
     Singular { param: &'static str },
+    /// The operating system would not start a pool of `threads` worker threads.
+    ThreadPool { threads: usize, message: String },
     /// A pixel holds NaN or infinity and must not be written to an image.
     NonFinitePixel { x: u32, y: u32 },
     /// Reading or writing a file failed.
@@ -99,6 +101,7 @@ impl Error {
             | Error::TooMuch { param, .. } => param,
             Error::UpParallelToDirection => "up",
             Error::NonFinitePixel { .. } => "pixel",
+            Error::ThreadPool { .. } => "threads",
             Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
             Error::VertexIndex { .. } => "triangle",
         }
@@ -141,6 +144,12 @@ impl fmt::Display for Error {
                 write!(
                     f,
                     "pixel ({x}, {y}) is NaN or infinite; refusing to write it"
+                )
+            }
+            Error::ThreadPool { threads, message } => {
+                write!(
+                    f,
+                    "threads: could not start {threads} worker threads ({message})"
                 )
             }
             Error::Io { path, message } | Error::Pfm { path, message } => {

@@ -76,6 +76,7 @@ impl Ray {
     }
 
     /// A ray from values the caller has already checked: finite, `direction` of unit length.
+    #[inline]
     pub(crate) fn from_checked(origin: Vec3, direction: Vec3) -> Ray {
         debug_assert!(origin.is_finite() && direction.is_normalized());
         Ray { origin, direction }
@@ -183,23 +184,32 @@ impl Crossings {
     };
 
     /// One crossing, or none if `t` is not finite.
+    #[inline]
     pub(crate) fn one(t: f32) -> Crossings {
-        Crossings::from_finite([t])
+        Crossings::from_finite([t, f32::NAN])
     }
 
     /// Two crossings in ascending order; a non-finite one is dropped.
+    #[inline]
     pub(crate) fn two(t0: f32, t1: f32) -> Crossings {
         Crossings::from_finite([t0.min(t1), t0.max(t1)])
     }
 
-    /// At most two values, in order; the non-finite ones dropped.
-    fn from_finite(ts: impl IntoIterator<Item = f32>) -> Crossings {
-        let mut out = Crossings::NONE;
-        for t in ts.into_iter().filter(|t| t.is_finite()).take(2) {
-            out.ts[out.len] = t;
-            out.len += 1;
+    /// The finite ones of `ts`, in order.
+    #[inline]
+    fn from_finite([a, b]: [f32; 2]) -> Crossings {
+        match (a.is_finite(), b.is_finite()) {
+            (true, true) => Crossings { ts: [a, b], len: 2 },
+            (true, false) => Crossings {
+                ts: [a, 0.0],
+                len: 1,
+            },
+            (false, true) => Crossings {
+                ts: [b, 0.0],
+                len: 1,
+            },
+            (false, false) => Crossings::NONE,
         }
-        out
     }
 
     /// The `t` values, ascending.
@@ -216,14 +226,27 @@ impl Crossings {
     }
 
     /// The smallest `t` inside `range`, if any.
+    #[inline]
     pub fn first_in(&self, range: Interval) -> Option<f32> {
-        self.iter().copied().find(|&t| range.contains(t))
+        let [t0, t1] = self.ts;
+        if self.len > 0 && range.contains(t0) {
+            Some(t0)
+        } else if self.len > 1 && range.contains(t1) {
+            Some(t1)
+        } else {
+            None
+        }
     }
 
     /// Each `t` mapped by `f`, which must keep the order (the instance's division by a
     /// positive scale does).
     pub(crate) fn map(self, f: impl Fn(f32) -> f32) -> Crossings {
-        Crossings::from_finite(self.as_slice().iter().map(|&t| f(t)))
+        let [t0, t1] = self.ts;
+        match self.len {
+            0 => Crossings::NONE,
+            1 => Crossings::one(f(t0)),
+            _ => Crossings::from_finite([f(t0), f(t1)]),
+        }
     }
 }
 

@@ -11,8 +11,8 @@ use crate::spawn::Offset;
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive
 /// with the closest intersection, or the background colour.
 pub fn shadowless(scene: &impl Intersect, ray: &Ray) -> Vec3 {
-    match scene.closest(ray, Interval::AHEAD) {
-        Some(found) => scene.object(&found).colour(),
+    match scene.closest_object(ray, Interval::AHEAD) {
+        Some(object) => scene.objects()[object].colour(),
         None => scene.background(),
     }
 }

@@ -18,47 +18,58 @@ pub const PROGRESS_PIXELS: u64 = 1 << 20;
 
 // ANCHOR: render
 /// The image `camera` sees, each pixel coloured by `shade` of its ray through the
-/// pixel centre. `threads` = `None` uses every core.
-pub fn render(
-    camera: &Camera,
-    threads: Option<usize>,
-    shade: impl Fn(&Ray) -> Vec3 + Sync,
-) -> Result<Framebuffer> {
+/// pixel centre, rows in parallel on the current thread pool (see [`with_threads`]).
+pub fn render(camera: &Camera, shade: impl Fn(&Ray) -> Vec3 + Sync) -> Result<Framebuffer> {
     let (width, height) = (camera.film().width(), camera.film().height());
     let progress = progress_bar(u64::from(width) * u64::from(height), height);
     let mut pixels = vec![Vec3::ZERO; width as usize * height as usize];
     let shade_row = |(y, row): (usize, &mut [Vec3])| {
-        for (x, pixel) in row.iter_mut().enumerate() {
-            *pixel = shade(&camera.ray(x as u32, y as u32));
+        let mut rays = camera.row(y as u32);
+        for pixel in row.iter_mut() {
+            *pixel = shade(&rays.next_ray());
         }
         progress.inc(1);
     };
-    in_pool(threads, || {
-        pixels
-            .par_chunks_mut(width as usize)
-            .enumerate()
-            .for_each(shade_row)
-    })?;
+    pixels
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .for_each(shade_row);
     progress.finish_and_clear();
     Framebuffer::from_pixels(width, height, pixels)
 }
 // ANCHOR_END: render
 
-/// Runs `work` on a pool of `threads` threads, or on rayon's global pool.
-pub fn in_pool<T: Send>(threads: Option<usize>, work: impl FnOnce() -> T + Send) -> Result<T> {
+// ANCHOR: with_threads
+/// Runs `work` on a pool of `threads` worker threads, or, for `None`, on the pool it
+/// is called from (rayon's global pool, one thread per core, unless the caller
+/// installed another).
+///
+/// The renderers ([`render`], the rasterizer, the path tracer) take no thread
+/// count: they run on the current pool. A program makes its pool once, here,
+/// around all its work (a lesson from its `--threads`), instead of every call
+/// making one; the images are the same bit for bit whatever the count.
+pub fn with_threads<T: Send, E: Send + From<Error>>(
+    threads: Option<usize>,
+    work: impl FnOnce() -> std::result::Result<T, E> + Send,
+) -> std::result::Result<T, E> {
     match threads {
-        None => Ok(work()),
-        Some(n) => {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(n)
-                .build()
-                .map_err(|e| Error::Io {
-                    path: "thread pool".into(),
-                    message: e.to_string(),
-                })?;
-            Ok(pool.install(work))
-        }
+        None => work(),
+        Some(n) => thread_pool(n)?.install(work),
     }
+}
+// ANCHOR_END: with_threads
+
+/// A pool of `threads` worker threads, for a caller that runs many pieces of work
+/// on it (`pool.install(...)`, as [`with_threads`] does once); an error
+/// ([`Error::ThreadPool`]) if the system would not start them.
+pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| Error::ThreadPool {
+            threads,
+            message: e.to_string(),
+        })
 }
 
 /// A bar counting rows, hidden for small work (`work` below [`PROGRESS_PIXELS`]:

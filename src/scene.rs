@@ -13,7 +13,7 @@ use glam::Vec3;
 use crate::error::{Error, Result, finite3};
 use crate::material::Material;
 use crate::ray::{Interval, Ray};
-use crate::shapes::{Candidate, Hit, PreparedRay, Shape};
+use crate::shapes::{Candidate, Hit, PreparedRay, Shape, ShapesByKind};
 
 /// One primitive with its material and the radiance L_e it emits.
 ///
@@ -131,6 +131,9 @@ pub struct PointLight {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     objects: Vec<Object>,
+    /// The objects' shapes again, in runs of one kind: the closest-hit loop's fast
+    /// path ([`Scene::closest_fast`]).
+    by_kind: ShapesByKind,
     emitters: Vec<usize>,
     background: Vec3,
     point_light: Option<PointLight>,
@@ -174,6 +177,7 @@ impl Scene {
             }
         }
         Ok(Scene {
+            by_kind: ShapesByKind::new(objects.iter().map(|o| &o.shape)),
             objects,
             emitters,
             background: check_radiance("background", background)?,
@@ -240,12 +244,28 @@ impl Scene {
     }
     // ANCHOR_END: closest_hit
 
+    // ANCHOR: closest_fast
+    /// The fast path of [`Scene::closest`], the same hit bit for bit: the same tests
+    /// in the same order, but over the shapes grouped in runs of one kind
+    /// ([`ShapesByKind`]), so that no `match` picks the test for every object. What
+    /// the renderers call, through [`Intersect`].
+    pub fn closest_fast(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
+        let prepared = PreparedRay::new(ray);
+        let (candidate, object) = self.by_kind.closest(&prepared, range)?;
+        let hit = self.objects[object].shape.record(&prepared, candidate);
+        Some(SceneHit { hit, object })
+    }
+
+    /// The object [`Scene::closest_fast`] finds, without building its hit record:
+    /// all that shadowless ray casting needs.
+    pub fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
+        self.by_kind.closest_index(&PreparedRay::new(ray), range)
+    }
+    // ANCHOR_END: closest_fast
+
     /// True if anything lies on the ray within `range` (a shadow ray's question).
     pub fn occluded(&self, ray: &Ray, range: Interval) -> bool {
-        let prepared = PreparedRay::new(ray);
-        self.objects
-            .iter()
-            .any(|o| o.shape.candidate(&prepared, range).is_some())
+        self.by_kind.any(&PreparedRay::new(ray), range)
     }
 }
 
@@ -262,6 +282,13 @@ pub trait Intersect: Sync {
     /// The closest hit within `range`, and its object; on a tie (equal `t`), the
     /// object listed first.
     fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit>;
+
+    /// The index (into [`Scene::objects`]) of the object [`Intersect::closest`]
+    /// finds, for a renderer that needs no more (shadowless ray casting); the
+    /// scene's list answers it without building the hit record.
+    fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
+        self.closest(ray, range).map(|found| found.object)
+    }
 
     /// True if anything lies on the ray within `range` (a shadow ray's question).
     fn occluded(&self, ray: &Ray, range: Interval) -> bool;
@@ -293,14 +320,19 @@ pub trait Intersect: Sync {
 }
 // ANCHOR_END: intersect
 
-/// The plain list: every object tested for every ray.
+/// The plain list: every object tested for every ray, through the fast path
+/// ([`Scene::closest_fast`]).
 impl Intersect for Scene {
     fn scene(&self) -> &Scene {
         self
     }
 
     fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        Scene::closest(self, ray, range)
+        Scene::closest_fast(self, ray, range)
+    }
+
+    fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
+        Scene::closest_object(self, ray, range)
     }
 
     fn occluded(&self, ray: &Ray, range: Interval) -> bool {

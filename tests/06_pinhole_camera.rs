@@ -241,3 +241,74 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
     );
     assert_eq!(message.lines().count(), 1, "{message}");
 }
+
+/// The bits of a ray, so that -0 and 0 count as different.
+fn bits(ray: &render_lessons::ray::Ray) -> [u32; 6] {
+    let (o, d) = (ray.origin(), ray.direction());
+    [o.x, o.y, o.z, d.x, d.y, d.z].map(f32::to_bits)
+}
+
+#[test]
+fn fast_path_rays_are_the_readable_rays_bit_for_bit() {
+    // Lesson 08's camera, a camera at the origin (p = 0: B 0 + p is then -0 or 0 by
+    // the signs of B), one placed at -0 coordinates, and a tilted one far away.
+    let cameras = [
+        *render_lessons::scenes::still_life_pinhole(96, 54)
+            .unwrap()
+            .pinhole()
+            .unwrap(),
+        PinholeCamera::at_origin(film(), 8.0).unwrap(),
+        PinholeCamera::new(
+            film(),
+            3.0,
+            Frame::look(
+                Vec3::new(-0.0, 0.0, -0.0),
+                Vec3::new(1.0, -2.0, -0.5),
+                Vec3::Y,
+            )
+            .unwrap(),
+        )
+        .unwrap(),
+        PinholeCamera::look_at(
+            Vec3::new(1e4, -3e3, 7.5),
+            Vec3::new(0.3, 0.2, -0.1),
+            Vec3::new(0.1, 1.0, 0.2),
+            37.0,
+            31,
+            17,
+        )
+        .unwrap(),
+    ];
+    let ortho = Camera::from(OrthoCamera::new(film(), *cameras[2].frame()));
+    for py in 0..film().height() {
+        let mut rays = ortho.row(py);
+        for px in 0..film().width() {
+            assert_eq!(bits(&rays.next_ray()), bits(&ortho.ray(px, py)));
+        }
+    }
+    for camera in cameras {
+        let lens = Camera::from(camera).with_lens(0.0, 1.0).unwrap();
+        for py in 0..camera.film().height() {
+            for px in 0..camera.film().width() {
+                let readable = bits(&camera.ray(px, py));
+                let centre = render_lessons::camera::Film::pixel_centre(px, py);
+                assert_eq!(bits(&camera.ray_through_fast(centre)), readable);
+                assert_eq!(bits(&Camera::from(camera).ray(px, py)), readable);
+                assert_eq!(bits(&lens.ray(px, py)), readable);
+            }
+            let whole = Camera::from(camera);
+            let (mut rays, mut lens_rays) = (whole.row(py), lens.row(py));
+            let row: Vec<_> = (0..camera.film().width())
+                .map(|_| bits(&rays.next_ray()))
+                .collect();
+            let lens_row: Vec<_> = (0..camera.film().width())
+                .map(|_| bits(&lens_rays.next_ray()))
+                .collect();
+            assert_eq!(lens_row, row, "row {py} through a lens of aperture 0");
+            let readable: Vec<_> = (0..camera.film().width())
+                .map(|px| bits(&camera.ray(px, py)))
+                .collect();
+            assert_eq!(row, readable, "row {py}");
+        }
+    }
+}

@@ -11,7 +11,7 @@ use render_lessons::basis::Basis;
 use render_lessons::camera::{Camera, Film, OrthoCamera};
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
-use render_lessons::render::render;
+use render_lessons::render::{render, with_threads};
 use render_lessons::sampling::{cosine_hemisphere, grid};
 use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
 use render_lessons::scenes::{still_life, still_life_cameras};
@@ -27,7 +27,7 @@ const SMALL: (u32, u32) = (96, 54);
 
 #[test]
 fn numbers() {
-    let images = lesson::images(BOOK, EPSILON, FAR, None).unwrap();
+    let images = lesson::images(BOOK, EPSILON, FAR).unwrap();
     let numbers = lesson::numbers(BOOK, EPSILON, FAR, &images).unwrap();
     insta::assert_snapshot!("numbers", numbers);
     // The second and third tables on their own, for the page on light and shadows
@@ -80,13 +80,10 @@ fn the_same_image_whatever_the_thread_count() {
     let scene = still_life(Vec3::ZERO).unwrap();
     let [_, pinhole] = still_life_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
     let shade = |r: &Ray| render_lessons::raycast::lit(&scene, r, Offset::Scaled);
-    let one = render(&pinhole, Some(1), shade).unwrap();
+    let on = |threads| with_threads(threads, || render(&pinhole, shade)).unwrap();
+    let one = on(Some(1));
     for threads in [Some(2), Some(3), None] {
-        assert_eq!(
-            render(&pinhole, threads, shade).unwrap(),
-            one,
-            "{threads:?} threads"
-        );
+        assert_eq!(on(threads), one, "{threads:?} threads");
     }
 }
 
@@ -96,7 +93,7 @@ fn the_lambert_image_matches_the_book_within_one_level() {
     // it by rounding in the last bit, never by more than one 8-bit level per channel.
     let scene = still_life(Vec3::ZERO).unwrap();
     let [_, pinhole] = still_life_cameras(BOOK.0, BOOK.1, Vec3::ZERO).unwrap();
-    let ours = render(&pinhole, None, |r| {
+    let ours = render(&pinhole, |r| {
         render_lessons::raycast::lit(&scene, r, Offset::Scaled)
     })
     .unwrap()
@@ -118,7 +115,7 @@ fn the_lambert_image_matches_the_book_within_one_level() {
 
 #[test]
 fn every_pixel_is_finite_and_in_range() {
-    let images = lesson::images(SMALL, EPSILON, FAR, None).unwrap();
+    let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
     for (name, image) in lesson::IMAGES.iter().zip(images) {
         for y in 0..image.height() {
             for x in 0..image.width() {
@@ -137,7 +134,7 @@ fn orthographic_sees_no_sky_and_pinhole_does() {
     let scene = still_life(Vec3::ZERO).unwrap();
     let [ortho, pinhole] = still_life_cameras(SMALL.0, SMALL.1, Vec3::ZERO).unwrap();
     let sky = |camera: &Camera| {
-        render(camera, None, |r| shadowless(&scene, r))
+        render(camera, |r| shadowless(&scene, r))
             .unwrap()
             .get(0, 0)
             .unwrap()
@@ -250,7 +247,7 @@ fn ray_casting_an_orthographic_disc() {
         Vec3::ONE,
     );
     let scene = Scene::new(vec![sphere], Vec3::ZERO).unwrap();
-    let image = render(&camera, None, |r| shadowless(&scene, r)).unwrap();
+    let image = render(&camera, |r| shadowless(&scene, r)).unwrap();
     let covered = (0..200)
         .flat_map(|y| (0..200).map(move |x| (x, y)))
         .filter(|&(x, y)| image.get(x, y) == Some(Vec3::ONE))
@@ -288,8 +285,8 @@ fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
         let scene = Scene::new(objects, Vec3::ZERO).unwrap();
         scene.closest(ray, range)
     }
-    let mine = lesson::my_shadowless_image(reference, SMALL, None).unwrap();
-    let [_, pinhole, ..] = lesson::images(SMALL, EPSILON, FAR, None).unwrap();
+    let mine = lesson::my_shadowless_image(reference, SMALL).unwrap();
+    let [_, pinhole, ..] = lesson::images(SMALL, EPSILON, FAR).unwrap();
     assert_eq!(mine, pinhole);
 }
 
@@ -300,8 +297,8 @@ fn mine_draws_the_lambert_image_with_the_given_lambert() {
     fn reference(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
         render_lessons::lighting::lambert(p, n, albedo, light, || visible)
     }
-    let mine = lesson::my_lambert_image(reference, SMALL, None).unwrap();
-    let [_, _, lambert, ..] = lesson::images(SMALL, EPSILON, FAR, None).unwrap();
+    let mine = lesson::my_lambert_image(reference, SMALL).unwrap();
+    let [_, _, lambert, ..] = lesson::images(SMALL, EPSILON, FAR).unwrap();
     assert_eq!(mine, lambert);
 }
 
@@ -375,7 +372,7 @@ fn lesson_08_worked_numbers() {
     assert_eq!(format!("{:.1e}", 1.0 / 65536.0), "1.5e-5");
     // The acne table for a smaller epsilon, and the scene moved to 1e5.
     let acne = |epsilon: f32, far: Vec3| {
-        let images = lesson::images(BOOK, epsilon, far, None).unwrap();
+        let images = lesson::images(BOOK, epsilon, far).unwrap();
         lesson::numbers(BOOK, epsilon, far, &images).unwrap()
     };
     let small = acne(1e-6, FAR);
@@ -385,4 +382,23 @@ fn lesson_08_worked_numbers() {
     assert!(larger.contains("  10      0.01%"), "{larger}");
     let far = acne(EPSILON, Vec3::new(1e5, 0.0, 0.0));
     assert!(far.contains("scaled offset     1306    1.01%"), "{far}");
+}
+
+#[test]
+fn with_threads_runs_the_work_on_a_pool_of_that_many_threads() {
+    for n in [1, 2, 3] {
+        let seen = with_threads(Some(n), || {
+            Ok::<_, render_lessons::Error>(rayon::current_num_threads())
+        });
+        assert_eq!(seen, Ok(n));
+    }
+    let error = render_lessons::Error::ThreadPool {
+        threads: 2,
+        message: "no more threads".into(),
+    };
+    assert_eq!(error.param(), "threads");
+    assert_eq!(
+        error.to_string(),
+        "threads: could not start 2 worker threads (no more threads)"
+    );
 }

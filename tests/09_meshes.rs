@@ -427,7 +427,7 @@ fn small_lesson(mesh: &Path, subdivisions: u32) -> (String, lesson::Lesson) {
     let camera = still_life_pinhole(160, 90).unwrap();
     let mesh = mesh_on_the_floor(mesh, subdivisions).unwrap();
     let shadows = still_life_shadows(256, 1.0);
-    let lesson = lesson::images(&scene, &camera, 16, shadows, &mesh.model, None).unwrap();
+    let lesson = lesson::images(&scene, &camera, 16, shadows, &mesh.model).unwrap();
     let file = "teapot.obj";
     (
         lesson::numbers(&scene, 16, (&mesh, file), &lesson).unwrap(),
@@ -509,10 +509,7 @@ fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_sa
     // At 1920 x 1080 the list would make 2 x 10^9 tests: the tree.
     let tree = MeshScene::new(floor_and_torus, 1920 * 1080);
     assert!(matches!(tree, MeshScene::Tree(_)));
-    let (a, b) = (
-        reference(&list, &camera, None),
-        reference(&tree, &camera, None),
-    );
+    let (a, b) = (reference(&list, &camera), reference(&tree, &camera));
     assert_eq!(a.unwrap(), b.unwrap());
 }
 

@@ -19,6 +19,7 @@ use render_lessons::raster::{
     rasterize, rasterize_triangle,
 };
 use render_lessons::raster::{TOLERANCE, agreement, reference};
+use render_lessons::render::with_threads;
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::{
     PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
@@ -332,22 +333,8 @@ fn z_buffer_order_does_not_matter() {
             shading,
             ..RasterSettings::default()
         };
-        let a = rasterize(
-            &[near.clone(), far.clone()],
-            &camera,
-            &light,
-            &settings,
-            Some(1),
-        )
-        .unwrap();
-        let b = rasterize(
-            &[far.clone(), near.clone()],
-            &camera,
-            &light,
-            &settings,
-            Some(1),
-        )
-        .unwrap();
+        let a = rasterize(&[near.clone(), far.clone()], &camera, &light, &settings).unwrap();
+        let b = rasterize(&[far.clone(), near.clone()], &camera, &light, &settings).unwrap();
         assert_eq!(a, b);
         let centre = a.get(8, 4).unwrap();
         assert!(
@@ -492,7 +479,6 @@ fn near_plane_clipping() {
             &camera,
             &LIGHT,
             &settings,
-            None,
         )
         .unwrap();
         image.to_srgb8().unwrap();
@@ -592,12 +578,15 @@ fn same_image_for_any_thread_count() {
                 cull: Cull::Back,
                 ..RasterSettings::default()
             };
-            let one = rasterize(&instances, &camera, &LIGHT, &settings, Some(1)).unwrap();
+            let on = |threads| {
+                with_threads(threads, || {
+                    rasterize(&instances, &camera, &LIGHT, &settings)
+                })
+                .unwrap()
+            };
+            let one = on(Some(1));
             for threads in [Some(2), Some(5), None] {
-                assert_eq!(
-                    one,
-                    rasterize(&instances, &camera, &LIGHT, &settings, threads).unwrap()
-                );
+                assert_eq!(one, on(threads));
             }
             one.to_srgb8().unwrap();
         }
@@ -611,7 +600,7 @@ fn book_lesson() -> (Scene, PlacedMesh, lesson::Lesson) {
     let camera = still_life_pinhole(480, 270).unwrap();
     let mesh = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap();
     let shadows = still_life_shadows(1024, 1.0);
-    let lesson = lesson::images(&scene, &camera, 64, shadows, &mesh.model, None).unwrap();
+    let lesson = lesson::images(&scene, &camera, 64, shadows, &mesh.model).unwrap();
     (scene, mesh, lesson)
 }
 
@@ -639,7 +628,7 @@ fn numbers() {
     let recomputed = agreement(
         image("09_per_pixel.png"),
         image("09_ray_cast.png"),
-        &reference(&scene, &still_life_pinhole(480, 270).unwrap(), None)
+        &reference(&scene, &still_life_pinhole(480, 270).unwrap())
             .unwrap()
             .silhouettes,
         TOLERANCE,
@@ -667,8 +656,8 @@ fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_object
     use render_lessons::render::render;
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(96, 54).unwrap();
-    let one_pass = reference(&scene, &camera, Some(2)).unwrap();
-    let colours = render(&camera, Some(1), |r| lit_unshadowed(&scene, r)).unwrap();
+    let one_pass = reference(&scene, &camera).unwrap();
+    let colours = render(&camera, |r| lit_unshadowed(&scene, r)).unwrap();
     assert_eq!(one_pass.image, colours);
     let id = |x: i64, y: i64| {
         let ray = camera.ray(x.clamp(0, 95) as u32, y.clamp(0, 53) as u32);
@@ -820,7 +809,11 @@ fn shadowed_rasterization_is_the_same_on_any_number_of_threads() {
         shadows: Some(shadows(1.0)),
         ..RasterSettings::default()
     };
-    let draw = |threads| rasterize(&floor_and_blocker(), &camera, &OVERHEAD, &settings, threads);
+    let draw = |threads| {
+        with_threads(threads, || {
+            rasterize(&floor_and_blocker(), &camera, &OVERHEAD, &settings)
+        })
+    };
     assert_eq!(draw(Some(1)).unwrap(), draw(Some(2)).unwrap());
 }
 

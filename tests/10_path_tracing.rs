@@ -27,6 +27,7 @@ use render_lessons::pathtrace::{
     record_path,
 };
 use render_lessons::ray::{Interval, Ray};
+use render_lessons::render::{thread_pool, with_threads};
 use render_lessons::scene::{Object, Scene};
 use render_lessons::scenes::path_tracing::{
     cornell, grey_furnace, interior_furnace, look_camera, two_lights,
@@ -56,21 +57,24 @@ fn small_args(extra: &[&str]) -> lesson::Args {
 
 /// What `main` makes of the flags: the scene, its camera and the study.
 fn setup(args: &lesson::Args) -> render_lessons::Result<(Scene, Camera, Study)> {
-    let threads =
-        render_lessons::course::lesson::budget(args.width, args.height, args.threads, 20)?;
     let lens = (args.lens.aperture, args.lens.focus);
     let (scene, camera) = lesson::scene_and_camera(args.scene, (args.width, args.height), lens)?;
-    let study = args.study.study(args.path.settings(), threads)?;
+    let study = args.study.study(args.path.settings())?;
     Ok((scene, camera, study))
 }
 
-/// What `main` does with the flags: the scene, the study, and its images.
+/// What `main` does with the flags: the scene, the study, and its images, on a pool
+/// of `--threads` threads.
 fn render(args: &lesson::Args) -> render_lessons::Result<(Study, Renders)> {
+    let threads =
+        render_lessons::course::lesson::budget(args.width, args.height, args.threads, 20)?;
     let (scene, camera, study) = setup(args)?;
     let mut samples = 0;
-    let renders = study.render(&scene, &camera, |_, pass| {
-        samples += u64::from(pass.added);
-        Ok(())
+    let renders = with_threads(threads, || {
+        study.render(&scene, &camera, |_, pass| {
+            samples += u64::from(pass.added);
+            Ok(())
+        })
     })?;
     assert_eq!(samples, study.samples(), "the progress bar's total");
     Ok((study, renders))
@@ -165,7 +169,6 @@ fn a_pass_with_no_finite_sample_is_an_error_not_a_black_image() {
     let passes = render_lessons::pathtrace::Passes {
         pixels: PixelSampling::Independent,
         seed: 1,
-        threads: Some(1),
     };
     let settings = Settings::default();
     let result = render_lessons::pathtrace::progressive::render_progressive(
@@ -366,8 +369,7 @@ fn edge_image(
     let camera = look_camera(24, 24, 3.0 * Vec3::Z, -Vec3::Z, 0.45).unwrap();
     let s = settings(Sampling::Cosine, Some(1), false);
     let mut acc = Accumulator::new(&camera, seed);
-    acc.render_pass(&scene, &camera, &s, pixels, spp, Some(1))
-        .unwrap()
+    acc.render_pass(&scene, &camera, &s, pixels, spp).unwrap()
 }
 
 /// Least-squares slope of log(rmse) against log(n).
@@ -625,12 +627,11 @@ fn cornell_image(threads: usize, passes: &[u32], pixels: PixelSampling) -> Vec<V
     let (scene, camera) = cornell(16, 12).unwrap();
     let mut acc = Accumulator::new(&camera, 42);
     let s = Settings::default();
+    let pool = thread_pool(threads).unwrap();
     let mut last = None;
     for &spp in passes {
-        last = Some(
-            acc.render_pass(&scene, &camera, &s, pixels, spp, Some(threads))
-                .unwrap(),
-        );
+        let pass = pool.install(|| acc.render_pass(&scene, &camera, &s, pixels, spp));
+        last = Some(pass.unwrap());
     }
     assert_eq!(acc.non_finite(), 0);
     let img = last.unwrap();
@@ -855,8 +856,7 @@ fn no_non_finite_samples_in_any_scene_with_any_flags() {
                 for pixels in [PixelSampling::Independent, PixelSampling::Jittered] {
                     let s = settings(sampling, Some(6), rr);
                     let mut acc = Accumulator::new(&camera, 11);
-                    acc.render_pass(&scene, &camera, &s, pixels, 4, Some(1))
-                        .unwrap();
+                    acc.render_pass(&scene, &camera, &s, pixels, 4).unwrap();
                     assert_eq!(acc.non_finite(), 0, "{sampling:?} rr {rr} {pixels:?}");
                 }
             }
@@ -1087,9 +1087,8 @@ fn bad_input_is_an_error_naming_the_parameter() {
     let (scene, camera) = cornell(4, 4).unwrap();
     let mut acc = Accumulator::new(&camera, 0);
     let s = Settings::default();
-    let pass = |acc: &mut Accumulator, s: &Settings, p, spp| {
-        acc.render_pass(&scene, &camera, s, p, spp, Some(1))
-    };
+    let pass =
+        |acc: &mut Accumulator, s: &Settings, p, spp| acc.render_pass(&scene, &camera, s, p, spp);
     assert_eq!(
         param(pass(&mut acc, &s, PixelSampling::Independent, 0).unwrap_err()),
         "spp"
@@ -1114,7 +1113,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
     let (_, other) = cornell(5, 4).unwrap();
     assert_eq!(
         param(
-            acc.render_pass(&scene, &other, &s, PixelSampling::Independent, 1, Some(1))
+            acc.render_pass(&scene, &other, &s, PixelSampling::Independent, 1)
                 .unwrap_err()
         ),
         "camera"
@@ -1204,7 +1203,7 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
     ] {
         let mut acc = Accumulator::new(&camera, 1);
         let first = acc
-            .render_pass(&scene, &camera, &s, PixelSampling::Independent, 1, None)
+            .render_pass(&scene, &camera, &s, PixelSampling::Independent, 1)
             .unwrap();
         let mut compared = 0;
         for y in (0..120).step_by(3) {
@@ -1293,7 +1292,7 @@ fn the_grey_furnace_renders_through_an_orthographic_camera() {
     let s = settings(Sampling::Cosine, Some(8), false);
     let mut acc = Accumulator::new(&camera, 3);
     let image = acc
-        .render_pass(&scene, &camera, &s, PixelSampling::Jittered, 16, Some(2))
+        .render_pass(&scene, &camera, &s, PixelSampling::Jittered, 16)
         .unwrap();
     assert_eq!(acc.non_finite(), 0);
     let (mut inside, mut outside) = (0, 0);

@@ -98,6 +98,11 @@ fn assert_same_answers(scene: &Scene, rays: &[Ray]) -> usize {
             }
             (a, b) => panic!("ray {k}: {ray:?}: list {a:?}, tree {b:?}"),
         }
+        assert_eq!(
+            bvh.closest_object(ray, Interval::AHEAD),
+            list.map(|found| found.object),
+            "ray {k}: {ray:?}"
+        );
         // Shadow-ray questions over a few ranges, including one that ends just
         // before the closest hit.
         let t_hit = list.map_or(10.0, |found| found.hit.t);
@@ -487,14 +492,7 @@ fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) 
     use render_lessons::pathtrace::{Accumulator, PixelSampling, Settings};
     let settings = Settings::default();
     let image = Accumulator::new(camera, 7)
-        .render_pass(
-            scene,
-            camera,
-            &settings,
-            PixelSampling::Independent,
-            4,
-            None,
-        )
+        .render_pass(scene, camera, &settings, PixelSampling::Independent, 4)
         .unwrap();
     (0..image.height())
         .flat_map(|y| (0..image.width()).map(move |x| (x, y)))

@@ -17,7 +17,7 @@
 
 use glam::{Vec3, Vec3A};
 
-use crate::bvh::{Bvh, MAX_DEPTH, Node, NodeKind};
+use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH, Node, NodeKind};
 use crate::scene::Object;
 
 /// The cost of visiting a node, relative to testing one primitive (pbrt-v4's 1/2).
@@ -125,6 +125,7 @@ impl Bvh {
             .iter()
             .map(|&i| objects[i].shape.clone())
             .collect();
+        let shapes = LeafShapes::new(shapes);
         Bvh {
             nodes: builder.nodes,
             primitives,

@@ -165,7 +165,48 @@ impl Bvh {
     /// over) and its index: the unbounded objects first, then the tree,
     /// whose boxes are tested only up to the nearest hit so far.
     pub fn closest(&self, objects: &[Object], ray: &Ray, range: Interval) -> Option<SceneHit> {
+        if self.misses_everything(ray, range) {
+            return None;
+        }
         let prepared = PreparedRay::new(ray);
+        let (candidate, object) = self.closest_candidate(objects, &prepared, range)?;
+        let hit = objects[object].shape.record(&prepared, candidate);
+        Some(SceneHit { hit, object })
+    }
+
+    /// The object [`Bvh::closest`] finds, without its hit record.
+    pub fn closest_object(&self, objects: &[Object], ray: &Ray, range: Interval) -> Option<usize> {
+        if self.misses_everything(ray, range) {
+            return None;
+        }
+        let prepared = PreparedRay::new(ray);
+        Some(self.closest_candidate(objects, &prepared, range)?.1)
+    }
+
+    /// True if the ray can meet nothing: no unbounded object, and it misses the
+    /// root's box. Tested with 1/d alone, before the rest of the ray's set-up (the
+    /// watertight test's shear costs two more divisions) is made for nothing.
+    fn misses_everything(&self, ray: &Ray, range: Interval) -> bool {
+        let Some(root) = self.nodes.first() else {
+            return self.unbounded.is_empty();
+        };
+        let inv_d = Vec3A::from(ray.direction().recip());
+        let box_ray = BoxRay {
+            origin: Vec3A::from(ray.origin()),
+            inv_d,
+            finite: inv_d.is_finite(),
+        };
+        self.unbounded.is_empty()
+            && box_entry(root, &box_ray, range.up_to(widened(range.max))).is_none()
+    }
+
+    /// The closest candidate and its object, as [`Bvh::closest`] finds them.
+    fn closest_candidate(
+        &self,
+        objects: &[Object],
+        prepared: &PreparedRay,
+        range: Interval,
+    ) -> Option<(Candidate, usize)> {
         let mut nearest = Nearest {
             best: None,
             t_max: range.max,
@@ -173,15 +214,15 @@ impl Bvh {
         for &i in &self.unbounded {
             if let Some(c) = objects[i]
                 .shape
-                .candidate(&prepared, range.up_to(nearest.limit()))
+                .candidate(prepared, range.up_to(nearest.limit()))
             {
                 nearest.offer(c, i);
             }
         }
-        self.walk(&prepared, range.up_to(nearest.box_limit()), |leaf| {
+        self.walk(prepared, range.up_to(nearest.box_limit()), |leaf| {
             for p in leaf {
-                let shape = &self.shapes[p];
-                if let Some(c) = shape.candidate(&prepared, range.up_to(nearest.limit())) {
+                let limit = range.up_to(nearest.limit());
+                if let Some(c) = self.shapes.candidate(p, prepared, limit) {
                     nearest.offer(c, self.primitives[p]);
                 }
             }
@@ -189,9 +230,7 @@ impl Bvh {
                 t_max: nearest.box_limit(),
             }
         });
-        let (candidate, object) = nearest.best?;
-        let hit = objects[object].shape.record(&prepared, candidate);
-        Some(SceneHit { hit, object })
+        nearest.best
     }
 
     /// True if any of `objects` lies on the ray within `range`; stops at
@@ -207,7 +246,7 @@ impl Bvh {
         let box_t_max = widened(range.max);
         let mut found = false;
         self.walk(&prepared, range.up_to(box_t_max), |leaf| {
-            let hit = |p: usize| self.shapes[p].candidate(&prepared, range).is_some();
+            let hit = |p: usize| self.shapes.candidate(p, &prepared, range).is_some();
             if leaf.into_iter().any(hit) {
                 found = true;
                 Walk::Stop

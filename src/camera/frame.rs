@@ -130,6 +130,7 @@ impl Frame {
     }
 
     /// A camera-space direction in world space: B x.
+    #[inline]
     pub fn vector_to_world(&self, x: Vec3) -> Vec3 {
         self.basis.to_world(x)
     }

@@ -9,12 +9,14 @@ mod film;
 mod frame;
 mod ortho;
 mod pinhole;
+mod row;
 mod thin_lens;
 
 pub use film::{Film, MAX_RESOLUTION};
 pub use frame::{Frame, MIN_UP_SINE, camera_basis, camera_basis_as_on_slide};
 pub use ortho::OrthoCamera;
 pub use pinhole::PinholeCamera;
+pub use row::RowRays;
 pub use thin_lens::ThinLensCamera;
 
 use glam::Vec2;
@@ -51,11 +53,28 @@ impl Camera {
 
     /// The ray through the centre of pixel (`px`, `py`), `py` counted from the top row
     /// (from the lens's centre for a thin lens).
+    #[inline]
     pub fn ray(&self, px: u32, py: u32) -> Ray {
+        self.centre_ray(Film::pixel_centre(px, py))
+    }
+
+    // ANCHOR: row
+    /// The rays through the centres of row `py`'s pixels, one after another from
+    /// the left ([`RowRays::next_ray`]): those of [`Camera::ray`], bit for bit, made
+    /// the renderers' fast way.
+    pub fn row(&self, py: u32) -> RowRays<'_> {
+        RowRays::new(self, py)
+    }
+    // ANCHOR_END: row
+
+    /// The ray through `pixel` from the lens's centre: a pinhole's by its fast path
+    /// ([`PinholeCamera::ray_through_fast`]).
+    #[inline]
+    pub(crate) fn centre_ray(&self, pixel: Vec2) -> Ray {
         match self {
-            Camera::Ortho(c) => c.ray(px, py),
-            Camera::Pinhole(c) => c.ray(px, py),
-            Camera::ThinLens(c) => c.pinhole().ray(px, py),
+            Camera::Ortho(c) => c.ray_through(pixel),
+            Camera::Pinhole(c) => c.ray_through_fast(pixel),
+            Camera::ThinLens(c) => c.pinhole().ray_through_fast(pixel),
         }
     }
 

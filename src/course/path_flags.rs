@@ -56,16 +56,15 @@ pub struct StudyFlags {
 }
 
 impl StudyFlags {
-    /// The study these flags ask for, of the estimator with `settings`, on `threads`
-    /// threads (`None`: every core); an error naming `--spp` if the ladder is empty.
-    pub fn study(&self, settings: Settings, threads: Option<usize>) -> Result<Study> {
+    /// The study these flags ask for, of the estimator with `settings`; an error
+    /// naming `--spp` if the ladder is empty.
+    pub fn study(&self, settings: Settings) -> Result<Study> {
         Ok(Study {
             settings,
             ladder: ladder(self.spp)?,
             passes: Passes {
                 pixels: PixelSampling::jittered(self.jitter),
                 seed: self.seed,
-                threads,
             },
             reference_spp: self.reference_spp,
         })

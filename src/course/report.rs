@@ -179,7 +179,8 @@ impl Quoted {
 /// Where and when the times of a [`BookNumbers`] were measured.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Run {
-    /// `"full"` (`--full`) or `"quick"`.
+    /// `"full"` (`--full`), `"quick"`, or the command that made the run (a bench's,
+    /// in backticks).
     pub quality: &'static str,
     /// The machine, e.g. "2 cores of AMD EPYC, load average 1.5".
     pub machine: String,
@@ -216,16 +217,12 @@ impl Run {
 
     /// The run in a few words, for a sentence: "`--full` run on 2 cores of ..., 2026-11-23".
     pub fn short(&self) -> String {
-        format!(
-            "`{}` run on {}, {}",
-            if self.quality == "full" {
-                "--full"
-            } else {
-                "quick"
-            },
-            self.machine,
-            self.date
-        )
+        let how = match self.quality {
+            "full" => "`--full`",
+            "quick" => "`quick`",
+            command => command,
+        };
+        format!("{how} run on {}, {}", self.machine, self.date)
     }
 
     /// The line under every timed table.
@@ -337,11 +334,24 @@ impl BookNumbers {
     /// value between its anchors, the run's line under the anchor `run` and its few
     /// words ([`Run::short`]) under `machine`.
     pub fn markdown(&self, stem: &str, run: &Run) -> String {
+        let writer = format!(
+            "examples/11_speed_vs_accuracy.rs (quality: {})",
+            run.quality
+        );
+        self.markdown_by(
+            stem,
+            run,
+            &writer,
+            "rerun the lesson (--full --out chapters/figures)",
+        )
+    }
+
+    /// [`BookNumbers::markdown`] for a fragment that `writer` writes (a bench), its
+    /// comment saying how to write it again (`again`).
+    pub fn markdown_by(&self, stem: &str, run: &Run, writer: &str, again: &str) -> String {
         let mut out = format!(
             "<!-- {stem}.md: the numbers of chart {stem} that the book quotes, written by \
-             examples/11_speed_vs_accuracy.rs (quality: {}). Do not edit: rerun the lesson \
-             (--full --out chapters/figures). -->\n\n",
-            run.quality
+             {writer}. Do not edit: {again}. -->\n\n"
         );
         for (anchor, body) in self.blocks(run) {
             out.push_str(&anchored_block(&anchor, &body));

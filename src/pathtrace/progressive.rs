@@ -19,7 +19,6 @@ use crate::pathtrace::estimator::radiance;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
 use crate::ray::Ray;
-use crate::render::in_pool;
 use crate::scene::Intersect;
 
 /// Where in its pixel each sample's camera ray passes.
@@ -83,8 +82,8 @@ impl Accumulator {
     }
 
     // ANCHOR: render_pass
-    /// Adds `spp` samples to every pixel, rows in parallel on `threads` threads
-    /// (`None`: all cores), and returns the mean image so far.
+    /// Adds `spp` samples to every pixel, rows in parallel on the current thread
+    /// pool, and returns the mean image so far.
     pub fn render_pass(
         &mut self,
         scene: &impl Intersect,
@@ -92,7 +91,6 @@ impl Accumulator {
         settings: &Settings,
         pixels: PixelSampling,
         spp: u32,
-        threads: Option<usize>,
     ) -> Result<Framebuffer> {
         check_pass(self, camera, settings, pixels, spp)?;
         let width = self.width as usize;
@@ -114,13 +112,12 @@ impl Accumulator {
             bad
         };
         let (sums, rngs) = (&mut self.sums, &mut self.rngs);
-        let bad: u64 = in_pool(threads, || {
-            sums.par_chunks_mut(width)
-                .zip(rngs.par_chunks_mut(width))
-                .enumerate()
-                .map(row)
-                .sum()
-        })?;
+        let bad: u64 = sums
+            .par_chunks_mut(width)
+            .zip(rngs.par_chunks_mut(width))
+            .enumerate()
+            .map(row)
+            .sum();
         self.non_finite += bad;
         self.samples += spp;
         self.image()
@@ -214,15 +211,14 @@ fn pixel_offset(pixels: PixelSampling, spp: u32, i: u32, rng: &mut Rng) -> Vec2 
 // ANCHOR_END: pixel_offset
 
 /// How the passes of a progressive render are run: where samples fall in their
-/// pixel, the seed of the pixels' streams, and the worker threads (`None`: all cores).
+/// pixel, and the seed of the pixels' streams. They run on the current thread pool;
+/// the images do not depend on its size.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Passes {
     /// Where in its pixel each sample's camera ray passes.
     pub pixels: PixelSampling,
     /// The seed of the per-pixel streams.
     pub seed: u64,
-    /// Worker threads (`None`: every core); the images do not depend on it.
-    pub threads: Option<usize>,
 }
 
 /// One finished pass of [`render_progressive`].
@@ -258,8 +254,7 @@ pub fn render_progressive<E: From<Error>>(
             }
             .into());
         };
-        let (pixels, threads) = (passes.pixels, passes.threads);
-        let image = acc.render_pass(scene, camera, settings, pixels, added, threads)?;
+        let image = acc.render_pass(scene, camera, settings, passes.pixels, added)?;
         let film = camera.film();
         let taken = u64::from(acc.samples()) * u64::from(film.width()) * u64::from(film.height());
         if acc.non_finite() == taken {

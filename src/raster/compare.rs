@@ -10,7 +10,7 @@ use crate::camera::Camera;
 use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 use crate::lighting;
-use crate::render::{in_pool, progress_bar};
+use crate::render::progress_bar;
 use crate::scene::Intersect;
 
 /// Colours more than this apart (linear RGB, in some channel) count as different:
@@ -33,11 +33,7 @@ pub struct Reference {
 /// sees differs from the one seen at one of its 8 neighbours. There the tessellated
 /// outline and the true one may fall on different sides of a pixel centre, so the
 /// comparison leaves these pixels out.
-pub fn reference(
-    scene: &impl Intersect,
-    camera: &Camera,
-    threads: Option<usize>,
-) -> Result<Reference> {
+pub fn reference(scene: &impl Intersect, camera: &Camera) -> Result<Reference> {
     let (w, h) = (camera.film().width(), camera.film().height());
     let background = scene.objects().len();
     // Each pixel's colour and the number of the object it sees (background: one more).
@@ -45,29 +41,23 @@ pub fn reference(
     // Every ray meets every primitive: a big mesh takes minutes, so show the rows.
     let tests = u64::from(w) * u64::from(h) * scene.objects().len() as u64;
     let progress = progress_bar(tests / 64, h);
-    in_pool(threads, || {
-        pixels
-            .par_chunks_mut(w as usize)
-            .enumerate()
-            .for_each(|(y, row)| {
-                for (x, pixel) in row.iter_mut().enumerate() {
-                    let ray = camera.ray(x as u32, y as u32);
-                    *pixel = match scene.closest(&ray, Interval::AHEAD) {
-                        Some(found) => (
-                            lighting::at_hit(
-                                scene.scene(),
-                                &found.hit,
-                                scene.object(&found),
-                                |_| true,
-                            ),
-                            found.object,
-                        ),
-                        None => (scene.background(), background),
-                    };
-                }
-                progress.inc(1);
-            })
-    })?;
+    pixels
+        .par_chunks_mut(w as usize)
+        .enumerate()
+        .for_each(|(y, row)| {
+            let mut rays = camera.row(y as u32);
+            for pixel in row.iter_mut() {
+                let ray = rays.next_ray();
+                *pixel = match scene.closest(&ray, Interval::AHEAD) {
+                    Some(found) => (
+                        lighting::at_hit(scene.scene(), &found.hit, scene.object(&found), |_| true),
+                        found.object,
+                    ),
+                    None => (scene.background(), background),
+                };
+            }
+            progress.inc(1);
+        });
     progress.finish_and_clear();
     let id = |x: u32, y: u32| pixels[(y * w + x) as usize].1;
     let around = |c: u32, n: u32| c.saturating_sub(1)..=(c + 1).min(n - 1);

@@ -22,7 +22,6 @@ use super::{
 use crate::camera::Camera;
 use crate::error::{Result, finite3};
 use crate::framebuffer::Framebuffer;
-use crate::render::in_pool;
 use crate::scene::PointLight;
 use crate::transform::Transform;
 
@@ -56,14 +55,13 @@ impl Lights<'_> {
 
 // ANCHOR: rasterize
 /// The image of `models` seen by `camera` and lit by `light`: Lecture 2's
-/// pipeline, with a shadow map first if `settings` asks for one. `threads` = `None`
-/// uses every core; the image does not depend on it.
+/// pipeline, with a shadow map first if `settings` asks for one. Bands of rows in
+/// parallel on the current thread pool; the image does not depend on its size.
 pub fn rasterize(
     models: &[Model],
     camera: &Camera,
     light: &PointLight,
     settings: &RasterSettings,
-    threads: Option<usize>,
 ) -> Result<Framebuffer> {
     finite3("background", settings.background)?;
     finite3("light position", light.position)?;
@@ -71,29 +69,26 @@ pub fn rasterize(
     let transforms = CameraTransforms::new(camera, settings.depth)?;
     let (width, height) = (camera.film().width(), camera.film().height());
     let mut colours = vec![settings.background; width as usize * height as usize];
-    in_pool(threads, || -> Result<()> {
-        let shadow_map = match &settings.shadows {
-            Some(shadows) => Some(ShadowMap::build(models, light, shadows)?),
-            None => None,
-        };
-        let shadow_map = shadow_map.as_ref();
-        let triangles = setup(models, &transforms, camera, light, settings, shadow_map)?;
-        let lights = Lights {
-            light,
-            viewer: viewer(camera),
-            shadow_map,
-        };
-        in_bands(
-            &triangles,
-            width,
-            height,
-            &mut colours,
-            |mine, rows, pixels| {
-                draw_band(&triangles, mine, rows, width, pixels, &lights, settings);
-            },
-        );
-        Ok(())
-    })??;
+    let shadow_map = match &settings.shadows {
+        Some(shadows) => Some(ShadowMap::build(models, light, shadows)?),
+        None => None,
+    };
+    let shadow_map = shadow_map.as_ref();
+    let triangles = setup(models, &transforms, camera, light, settings, shadow_map)?;
+    let lights = Lights {
+        light,
+        viewer: viewer(camera),
+        shadow_map,
+    };
+    in_bands(
+        &triangles,
+        width,
+        height,
+        &mut colours,
+        |mine, rows, pixels| {
+            draw_band(&triangles, mine, rows, width, pixels, &lights, settings);
+        },
+    );
     Framebuffer::from_pixels(width, height, colours)
 }
 // ANCHOR_END: rasterize

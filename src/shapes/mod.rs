@@ -14,6 +14,7 @@ use crate::float::gamma;
 use crate::ray::{Crossings, Interval, Ray};
 
 pub mod aabb;
+pub mod by_kind;
 pub mod cylinder;
 pub mod instance;
 pub mod plane;
@@ -24,6 +25,7 @@ pub mod sphere;
 pub mod triangle;
 
 pub use aabb::{Aabb, FaceHit};
+pub use by_kind::ShapesByKind;
 pub use cylinder::{Cylinder, CylinderPart, PartHit};
 pub use instance::Instance;
 pub use plane::Plane;
@@ -112,6 +114,15 @@ impl Candidate {
         Candidate {
             t,
             detail: Detail::OnRay,
+        }
+    }
+
+    /// A triangle's candidate, from its watertight crossing.
+    #[inline(always)]
+    pub(crate) fn triangle(crossing: Barycentric) -> Candidate {
+        Candidate {
+            t: crossing.t,
+            detail: Detail::Barycentric(crossing),
         }
     }
 }

@@ -35,25 +35,19 @@ pub fn figures(output: &Output) -> Result<()> {
     let light = point_light(&scene)?;
     let book = floor_settings(&scene);
     let draw = |instances: &[Model], shading, shadows: Option<Shadows>| {
-        rasterize(
-            instances,
-            &camera,
-            &light,
-            &book.with(shading, shadows),
-            None,
-        )
+        rasterize(instances, &camera, &light, &book.with(shading, shadows))
     };
     let mapped = |bias| draw(&instances, PerPixel, Some(shadows.with_bias(bias)));
-    let ray_cast = reference(&scene, &camera, None)?.image;
+    let ray_cast = reference(&scene, &camera)?.image;
     let per_pixel = draw(&instances, PerPixel, None)?;
     let per_vertex = draw(&instances, PerVertex, None)?;
-    let traced = render(&camera, None, |r| lit(&scene, r, Offset::Scaled))?;
+    let traced = render(&camera, |r| lit(&scene, r, Offset::Scaled))?;
     let (shadow_map, acne, peter_pan) = (mapped(1.0)?, mapped(0.0)?, mapped(50.0)?);
-    let mesh_cast = reference(&floor_and_mesh(&scene, &mesh)?, &camera, None)?.image;
+    let mesh_cast = reference(&floor_and_mesh(&scene, &mesh)?, &camera)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
     let teapot = mesh_on_the_floor(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
     let teapot_scene = MeshScene::new(floor_and_mesh(&scene, &teapot)?, 480 * 270);
-    let teapot_cast = reference(&teapot_scene, &camera, None)?.image;
+    let teapot_cast = reference(&teapot_scene, &camera)?.image;
     let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];
     output.diagram("09_side_by_side.png", &captioned(&three, &SIDE_BY_SIDE)?)?;

@@ -179,7 +179,6 @@ impl Step {
         let passes = Passes {
             pixels: PixelSampling::Independent,
             seed: 1,
-            threads: None,
         };
         let mut images = Vec::new();
         for &sampling in self.shown {

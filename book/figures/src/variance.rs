@@ -27,7 +27,7 @@ pub fn figures(out: &Output) -> Result<()> {
             russian_roulette: true,
             ..Settings::default()
         };
-        pixel_variance(&scene, &camera, &settings, SPP, 1, None)?.image()
+        pixel_variance(&scene, &camera, &settings, SPP, 1)?.image()
     };
     let panels = [panel(Sampling::Cosine)?, panel(Sampling::Mis)?];
     out.image(

@@ -83,7 +83,7 @@ fn settings(sampling: Sampling) -> Settings {
 pub fn reference(scene: &Scene, camera: &Camera, spp: u32) -> Result<Framebuffer> {
     let mut acc = Accumulator::new(camera, REFERENCE_SEED);
     let s = settings(Sampling::Mis);
-    acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp, None)
+    acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp)
 }
 
 // ANCHOR: error_curve
@@ -102,7 +102,7 @@ pub fn error_curve(
     let mut curve = Vec::new();
     for &spp in passes {
         let start = Instant::now();
-        let image = acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp, None)?;
+        let image = acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp)?;
         seconds += start.elapsed().as_secs_f64();
         curve.push((seconds, rmse(&image, reference)));
     }

@@ -22,7 +22,6 @@ use crate::framebuffer::Framebuffer;
 use crate::material::Material;
 use crate::pathtrace::progressive::pixel_ray;
 use crate::pathtrace::{At, Path, PixelSampling, Rng, Settings};
-use crate::render::in_pool;
 use crate::scene::Scene;
 
 /// The variance of one sample in every pixel, and the object each pixel's centre
@@ -124,14 +123,13 @@ fn classify(scene: &Scene, first: Option<usize>) -> Seen {
 }
 
 /// sigma^2 in every pixel of `camera`'s image from `spp` samples with `settings`,
-/// each pixel's random stream seeded from (`seed`, x, y), on `threads` threads.
+/// each pixel's random stream seeded from (`seed`, x, y), on the current thread pool.
 pub fn pixel_variance(
     scene: &Scene,
     camera: &Camera,
     settings: &Settings,
     spp: u32,
     seed: u64,
-    threads: Option<usize>,
 ) -> Result<PixelVariance> {
     let (width, height) = (camera.film().width(), camera.film().height());
     let pixel = |i: usize| -> ((f64, f64), Option<usize>) {
@@ -159,8 +157,7 @@ pub fn pixel_variance(
         ((variance(m.x, m.y), variance(m.z, m.w)), first)
     };
     let n = width as usize * height as usize;
-    let (both, first): (Vec<(f64, f64)>, _) =
-        in_pool(threads, || (0..n).into_par_iter().map(pixel).unzip())?;
+    let (both, first): (Vec<(f64, f64)>, _) = (0..n).into_par_iter().map(pixel).unzip();
     let (variance, without_caustics) = both.into_iter().unzip();
     Ok(PixelVariance {
         width,

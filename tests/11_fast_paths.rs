@@ -1,0 +1,194 @@
+//! Lesson 11: every fast path gives what the readable code it stands for gives, bit
+//! for bit (issue 22, "readable first"). The renderers call the fast paths; the book
+//! shows the readable code beside them.
+//!
+//! - `Scene::closest_fast` (the shapes in runs of one kind, `ShapesByKind`) and
+//!   `Scene::closest_object` against `Scene::closest`, the loop the book shows;
+//! - `Scene::occluded` against every shape asked in turn;
+//! - the whole of lesson 08's shadowless image: `render` with `raycast::shadowless`
+//!   against the readable pixel loop (`PinholeCamera::ray`, `Scene::closest`).
+//!
+//! The camera's fast rays (`Camera::row`, `PinholeCamera::ray_through_fast`) are
+//! checked against `PinholeCamera::ray` in `tests/06_pinhole_camera.rs`.
+
+use glam::Vec3;
+use render_lessons::ray::{Interval, Ray};
+use render_lessons::raycast::shadowless;
+use render_lessons::render::render;
+use render_lessons::scene::{Intersect, Object, Scene, SceneHit};
+use render_lessons::scenes::{still_life, still_life_pinhole};
+use render_lessons::shapes::{
+    Aabb, Cylinder, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
+};
+use render_lessons::transform::Transform;
+
+/// A small deterministic generator (xorshift64*), so every run tests the same rays.
+struct Rng(u64);
+
+impl Rng {
+    fn next_f32(&mut self) -> f32 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
+        (x >> 40) as f32 / (1u64 << 24) as f32
+    }
+
+    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.next_f32()
+    }
+
+    fn point(&mut self, half: f32) -> Vec3 {
+        Vec3::new(
+            self.range(-half, half),
+            self.range(-half, half),
+            self.range(-half, half),
+        )
+    }
+}
+
+/// Every bit of a hit, so that -0 and 0 (and NaN payloads) count as different.
+fn bits(hit: &Hit) -> Vec<u32> {
+    let v = |v: Vec3| v.to_array().map(f32::to_bits);
+    let mut out = vec![hit.t.to_bits(), u32::from(hit.front_face)];
+    out.extend(v(hit.point));
+    out.extend(v(hit.normal));
+    out.extend(v(hit.error));
+    out
+}
+
+fn same(a: Option<SceneHit>, b: Option<SceneHit>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(a), Some(b)) => a.object == b.object && bits(&a.hit) == bits(&b.hit),
+        _ => false,
+    }
+}
+
+/// Every kind of shape, in runs of one kind and alone, with exact copies (ties: the
+/// earlier copy must win) and a box lying on a plane (ties along the plane).
+fn mixed_scene(rng: &mut Rng) -> Scene {
+    let mut shapes: Vec<Shape> = vec![Plane::new(Vec3::ZERO, Vec3::Y).unwrap().into()];
+    for k in 0..40 {
+        let c = rng.point(6.0);
+        let shape: Shape = match k % 8 {
+            0 | 1 => Sphere::new(c, rng.range(0.1, 1.5)).unwrap().into(),
+            2 => Aabb::new(c - rng.point(1.0).abs(), c + rng.point(1.0).abs())
+                .unwrap()
+                .into(),
+            3 => Aabb::new(
+                Vec3::new(c.x, 0.0, c.z),
+                Vec3::new(c.x + 1.0, 1.0, c.z + 1.0),
+            )
+            .unwrap()
+            .into(),
+            4 => loop {
+                if let Ok(t) = Triangle::new(c, c + rng.point(1.5), c + rng.point(1.5)) {
+                    break t.into();
+                }
+            },
+            5 => Quad::new(c, Vec3::X, Vec3::new(0.0, 0.5, 1.0))
+                .unwrap()
+                .into(),
+            6 => Cylinder::new(rng.range(0.1, 1.0), -0.5, 0.5)
+                .and_then(|cyl| Instance::new(cyl.into(), Transform::translation(c.x, c.y, c.z)))
+                .unwrap()
+                .into(),
+            _ if k % 16 == 7 => Quadric::cylinder(0.2).unwrap().into(),
+            _ => Quadric::ellipsoid(Vec3::new(0.5, 1.0, 0.7))
+                .and_then(|q| Instance::new(q.into(), Transform::translation(c.x, c.y, c.z)))
+                .unwrap()
+                .into(),
+        };
+        // Every fifth shape twice in a row, a tie for every ray that meets it.
+        if k % 5 == 0 {
+            shapes.push(shape.clone());
+        }
+        shapes.push(shape);
+    }
+    let objects = shapes
+        .into_iter()
+        .enumerate()
+        .map(|(i, s)| Object::diffuse(s, Vec3::splat(i as f32 / 100.0)))
+        .collect();
+    Scene::new(objects, Vec3::ZERO).unwrap()
+}
+
+/// Rays from around the scene towards it, and a few along the axes.
+fn rays(rng: &mut Rng, n: usize) -> Vec<Ray> {
+    let mut rays: Vec<Ray> = (0..n)
+        .filter_map(|_| {
+            let o = rng.point(12.0);
+            Ray::new(o, rng.point(4.0) - o).ok()
+        })
+        .collect();
+    for d in [Vec3::X, Vec3::NEG_Y, Vec3::Z] {
+        rays.push(Ray::new(Vec3::new(-9.0, 0.5, 0.25), d).unwrap());
+        rays.push(Ray::new(Vec3::new(0.3, 0.0, -9.0), d).unwrap());
+    }
+    rays
+}
+
+#[test]
+fn the_fast_closest_hit_loop_finds_the_readable_loops_hit_bit_for_bit() {
+    let mut rng = Rng(0x5eed_cafe);
+    let scenes = [still_life(Vec3::ZERO).unwrap(), mixed_scene(&mut rng)];
+    let mut ties = 0;
+    for scene in &scenes {
+        for ray in rays(&mut rng, 4000) {
+            for range in [
+                Interval::AHEAD,
+                Interval::EVERYWHERE,
+                Interval::new(0.5, 6.0),
+                Interval::new(-3.0, 2.0),
+            ] {
+                let readable = scene.closest(&ray, range);
+                let fast = scene.closest_fast(&ray, range);
+                assert!(
+                    same(readable, fast),
+                    "{ray:?} {range:?}: {readable:?} {fast:?}"
+                );
+                assert_eq!(
+                    scene.closest_object(&ray, range),
+                    readable.map(|f| f.object)
+                );
+                assert_eq!(
+                    Intersect::closest_object(scene, &ray, range),
+                    readable.map(|f| f.object)
+                );
+                let any = scene
+                    .objects()
+                    .iter()
+                    .any(|o| o.shape.hit(&ray, range).is_some());
+                assert_eq!(scene.occluded(&ray, range), any, "{ray:?} {range:?}");
+                if let Some(found) = readable {
+                    let next = &scene.objects()[(found.object + 1).min(scene.objects().len() - 1)];
+                    ties += usize::from(next.shape == scene.objects()[found.object].shape);
+                }
+            }
+        }
+    }
+    assert!(ties > 100, "only {ties} rays met a shape listed twice");
+}
+
+#[test]
+fn the_still_lifes_image_is_the_readable_loops_bit_for_bit() {
+    let scene = still_life(Vec3::ZERO).unwrap();
+    let camera = still_life_pinhole(192, 108).unwrap();
+    let pinhole = camera.pinhole().unwrap();
+    let fast = render(&camera, |r| shadowless(&scene, r)).unwrap();
+    for y in 0..108 {
+        for x in 0..192 {
+            let readable = match scene.closest(&pinhole.ray(x, y), Interval::AHEAD) {
+                Some(found) => scene.object(&found).colour(),
+                None => scene.background(),
+            };
+            let pixel = fast.get(x, y).unwrap();
+            assert_eq!(
+                pixel.to_array().map(f32::to_bits),
+                readable.to_array().map(f32::to_bits),
+                "pixel ({x}, {y})"
+            );
+        }
+    }
+}

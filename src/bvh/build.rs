@@ -118,14 +118,11 @@ impl Bvh {
         };
         if !items.is_empty() {
             builder.nodes.push(LEAF_PLACEHOLDER);
-            builder.subtree(0, &mut items, 0, 0);
+            let boxes = Boxes::of(&items);
+            builder.subtree(0, &mut items, 0, 0, boxes);
         }
         let primitives: Vec<usize> = items.iter().map(|item| item.index as usize).collect();
-        let shapes = primitives
-            .iter()
-            .map(|&i| objects[i].shape.clone())
-            .collect();
-        let shapes = LeafShapes::new(shapes);
+        let shapes = LeafShapes::new(primitives.iter().map(|&i| &objects[i].shape));
         Bvh {
             nodes: builder.nodes,
             primitives,
@@ -173,7 +170,8 @@ impl Builder {
     // ANCHOR: build
     /// Fills node `here` with the subtree over `items`, which are
     /// `primitives[first..first + items.len()]` of the finished tree, at `depth`
-    /// levels below the root.
+    /// levels below the root; `boxes` are the items' box and their centroids' box,
+    /// which the parent's split measured while it divided its items.
     ///
     /// A split reorders `items` in place, left part first, and reserves two
     /// adjacent nodes for the children before filling them; so a leaf's primitives
@@ -181,35 +179,52 @@ impl Builder {
     /// node becomes a leaf when it holds at most [`LEAF_SIZE`] primitives, when the
     /// tree is [`MAX_DEPTH`] deep (so the traversal stack is big enough), or when
     /// [`Builder::split`] finds no split worth making.
-    fn subtree(&mut self, here: usize, items: &mut [Item], first: usize, depth: usize) {
-        let (bounds, centroids) = bounds_of(items);
+    fn subtree(
+        &mut self,
+        here: usize,
+        items: &mut [Item],
+        first: usize,
+        depth: usize,
+        boxes: Boxes,
+    ) {
         let split = if items.len() > LEAF_SIZE && depth + 1 < MAX_DEPTH {
-            self.split(items, &bounds, &centroids)
+            self.split(items, &boxes)
         } else {
             None
         };
-        let Some(mid) = split else {
-            self.nodes[here] = node(&bounds, first, items.len());
+        let Some(Split {
+            mid,
+            left: l_boxes,
+            right: r_boxes,
+        }) = split
+        else {
+            self.nodes[here] = node(&boxes.bounds, first, items.len());
             return;
         };
         let left = self.nodes.len();
         self.nodes.extend([LEAF_PLACEHOLDER; 2]);
-        self.nodes[here] = node(&bounds, left, 0);
+        self.nodes[here] = node(&boxes.bounds, left, 0);
         let (l, r) = items.split_at_mut(mid);
-        self.subtree(left, l, first, depth + 1);
-        self.subtree(left + 1, r, first + mid, depth + 1);
+        self.subtree(left, l, first, depth + 1, l_boxes);
+        self.subtree(left + 1, r, first + mid, depth + 1, r_boxes);
     }
     // ANCHOR_END: build
 
     /// Reorders `items` into a left part `..mid` and a right part `mid..`, both
-    /// non-empty, and returns `mid`; or `None` for a leaf.
-    fn split(&self, items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<usize> {
+    /// non-empty, and returns `mid` with the boxes of both parts; or `None` for a leaf.
+    fn split(&self, items: &mut [Item], boxes: &Boxes) -> Option<Split> {
         // With no area the SAH has nothing to weigh (0 / 0): fall back to the median.
-        if self.strategy == Strategy::Median || bounds.area() <= 0.0 {
-            median_split(items, centroids)
+        let mid = if self.strategy == Strategy::Median || boxes.bounds.area() <= 0.0 {
+            median_split(items, &boxes.centroids)?
         } else {
-            sah_split(items, bounds, centroids)
-        }
+            return sah_split(items, boxes);
+        };
+        let (left, right) = items.split_at(mid);
+        Some(Split {
+            mid,
+            left: Boxes::of(left),
+            right: Boxes::of(right),
+        })
     }
 }
 
@@ -225,14 +240,42 @@ fn node(bounds: &Bounds, first: usize, count: usize) -> Node {
     )
 }
 
-/// The box around the items' boxes and the box around their centroids, in one pass.
-fn bounds_of(items: &[Item]) -> (Bounds, Bounds) {
-    let (mut bounds, mut centroids) = (Bounds::EMPTY, Bounds::EMPTY);
-    for item in items {
-        bounds.grow(&item.bounds);
-        centroids.grow_point(item.centroid);
+/// The box around some items' boxes, and the box around their centroids (the range
+/// the bins divide).
+#[derive(Clone, Copy, Debug)]
+struct Boxes {
+    bounds: Bounds,
+    centroids: Bounds,
+}
+
+impl Boxes {
+    const EMPTY: Boxes = Boxes {
+        bounds: Bounds::EMPTY,
+        centroids: Bounds::EMPTY,
+    };
+
+    /// Both boxes of `items`, in one pass.
+    fn of(items: &[Item]) -> Boxes {
+        let mut boxes = Boxes::EMPTY;
+        for item in items {
+            boxes.grow(item);
+        }
+        boxes
     }
-    (bounds, centroids)
+
+    #[inline(always)]
+    fn grow(&mut self, item: &Item) {
+        self.bounds.grow(&item.bounds);
+        self.centroids.grow_point(item.centroid);
+    }
+}
+
+/// A node's items divided: the left part is `..mid`, the right `mid..`.
+#[derive(Clone, Copy, Debug)]
+struct Split {
+    mid: usize,
+    left: Boxes,
+    right: Boxes,
 }
 
 /// The primitives that fall into one bin: how many, and the box around them.
@@ -259,13 +302,24 @@ struct Binning {
 }
 
 impl Binning {
+    /// Whether centroid `c` falls into bin `k` or one before it on `axis`: the same
+    /// answer as `bins(c)[axis] <= k`, without making the bin an integer. The bin is
+    /// the position (c - lo) scale cut down to an integer and clamped to 0..BINS, so
+    /// for `k` < BINS - 1 it is at most `k` exactly when the position is below
+    /// `k + 1` (or not a number, which the conversion makes bin 0).
+    #[inline(always)]
+    fn at_most(&self, c: Vec3A, axis: usize, k: usize) -> bool {
+        let position = (c[axis] - self.lo[axis]) * self.scale[axis];
+        position < (k + 1) as f32 || position.is_nan()
+    }
+
     #[inline(always)]
     fn bins(&self, c: Vec3A) -> [usize; 3] {
         let f = ((c - self.lo) * self.scale).clamp(Vec3A::ZERO, Vec3A::splat((BINS - 1) as f32));
         [
-            f.x as u32 as usize,
-            f.y as u32 as usize,
-            f.z as u32 as usize,
+            f.x as i32 as usize,
+            f.y as i32 as usize,
+            f.z as i32 as usize,
         ]
     }
 }
@@ -280,10 +334,10 @@ impl Binning {
 /// leaf, costing N(node), is cheaper and the node is small enough
 /// ([`MAX_LEAF_SIZE`]). Axes on which all centroids coincide are skipped; if all
 /// three are, the node is a leaf (every split would put everything on one side).
-fn sah_split(items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<usize> {
-    let extent = centroids.max - centroids.min;
+fn sah_split(items: &mut [Item], boxes: &Boxes) -> Option<Split> {
+    let extent = boxes.centroids.max - boxes.centroids.min;
     let binning = Binning {
-        lo: centroids.min,
+        lo: boxes.centroids.min,
         scale: Vec3A::splat(BINS as f32) / extent,
     };
     let mut bins = [[Bin::EMPTY; BINS]; 3];
@@ -297,7 +351,7 @@ fn sah_split(items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<
     }
     let mut best: Option<(f32, usize, usize)> = None; // (cost, axis, last left bin)
     for axis in (0..3).filter(|&axis| extent[axis] > 0.0) {
-        if let Some((cost, k)) = cheapest_plane(&bins[axis], bounds.area())
+        if let Some((cost, k)) = cheapest_plane(&bins[axis], boxes.bounds.area())
             && best.is_none_or(|(c, ..)| cost < c)
         {
             best = Some((cost, axis, k));
@@ -308,7 +362,7 @@ fn sah_split(items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<
         return None;
     }
     Some(partition(items, |item| {
-        binning.bins(item.centroid)[axis] <= k
+        binning.at_most(item.centroid, axis, k)
     }))
 }
 
@@ -316,21 +370,31 @@ fn sah_split(items: &mut [Item], bounds: &Bounds, centroids: &Bounds) -> Option<
 /// last bin on the left), for a node of surface area `area > 0`.
 fn cheapest_plane(bins: &[Bin; BINS], area: f32) -> Option<(f32, usize)> {
     // right[k]: count and area of bins k + 1.. (the right side of plane k).
+    // An empty bin k + 1 leaves the right side as it was; an empty bin k makes plane
+    // k cost what plane k - 1 did, and the earlier plane wins a tie: neither area is
+    // computed again (in a small node most bins are empty).
     let mut right = [(0u32, 0.0f32); BINS];
     let mut acc = Bin::EMPTY;
+    let mut area_right = 0.0;
     for k in (0..BINS - 1).rev() {
-        acc.count += bins[k + 1].count;
-        acc.bounds.grow(&bins[k + 1].bounds);
-        right[k] = (acc.count, acc.bounds.area());
+        if bins[k + 1].count > 0 {
+            acc.count += bins[k + 1].count;
+            acc.bounds.grow(&bins[k + 1].bounds);
+            area_right = acc.bounds.area();
+        }
+        right[k] = (acc.count, area_right);
     }
     let mut left = Bin::EMPTY;
     let mut best: Option<(f32, usize)> = None;
     for k in 0..BINS - 1 {
+        if bins[k].count == 0 {
+            continue; // the same split as plane k - 1, or none
+        }
         left.count += bins[k].count;
         left.bounds.grow(&bins[k].bounds);
         let (right_count, right_area) = right[k];
-        if left.count == 0 || right_count == 0 {
-            continue; // one side empty: not a split
+        if right_count == 0 {
+            break; // the right side is empty from here on: no more splits
         }
         let cost = split_cost(
             area,
@@ -371,14 +435,17 @@ fn median_split(items: &mut [Item], centroids: &Bounds) -> Option<usize> {
 }
 
 /// Moves the items for which `goes_left` holds to the front, keeping none of the
-/// orders, and returns how many there are.
-fn partition(items: &mut [Item], goes_left: impl Fn(&Item) -> bool) -> usize {
-    let mut mid = 0;
+/// orders, and measures both parts' boxes on the way.
+fn partition(items: &mut [Item], goes_left: impl Fn(&Item) -> bool) -> Split {
+    let (mut mid, mut left, mut right) = (0, Boxes::EMPTY, Boxes::EMPTY);
     for i in 0..items.len() {
         if goes_left(&items[i]) {
+            left.grow(&items[i]);
             items.swap(i, mid);
             mid += 1;
+        } else {
+            right.grow(&items[i]);
         }
     }
-    mid
+    Split { mid, left, right }
 }

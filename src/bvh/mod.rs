@@ -111,15 +111,15 @@ pub(crate) enum LeafShapes {
 }
 
 impl LeafShapes {
-    /// `shapes` as triangles if every one is.
-    pub(crate) fn new(shapes: Vec<Shape>) -> LeafShapes {
+    /// `shapes` as triangles if every one is (copied once, not as shapes first).
+    pub(crate) fn new<'a>(shapes: impl Iterator<Item = &'a Shape> + Clone) -> LeafShapes {
         let triangle = |s: &Shape| match s {
             Shape::Triangle(t) => Some(*t),
             _ => None,
         };
-        match shapes.iter().map(triangle).collect::<Option<Vec<_>>>() {
+        match shapes.clone().map(triangle).collect::<Option<Vec<_>>>() {
             Some(triangles) => LeafShapes::Triangles(triangles),
-            None => LeafShapes::Shapes(shapes),
+            None => LeafShapes::Shapes(shapes.cloned().collect()),
         }
     }
 

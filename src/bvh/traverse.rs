@@ -46,6 +46,9 @@ struct Nearest {
     /// The far end of the search: the range's end, or just past the best hit's `t`
     /// (its next float up) once there is one.
     limit: f32,
+    /// [`Nearest::box_limit`], made when the limit changes rather than at every
+    /// leaf.
+    box_limit: f32,
 }
 
 impl Nearest {
@@ -61,7 +64,16 @@ impl Nearest {
     /// margin the tree would skip that box and could break the tie differently from
     /// the list.
     fn box_limit(&self) -> f32 {
-        widened(self.limit())
+        self.box_limit
+    }
+
+    /// No hit yet: the search runs to `t_max`.
+    fn up_to(t_max: f32) -> Nearest {
+        Nearest {
+            best: None,
+            limit: t_max,
+            box_limit: widened(t_max),
+        }
     }
 
     /// Keeps `candidate` of object `i` if nearer (or as near with a smaller index).
@@ -73,6 +85,7 @@ impl Nearest {
         if better {
             self.best = Some((candidate, i));
             self.limit = candidate.t.next_up();
+            self.box_limit = widened(self.limit);
         }
     }
 
@@ -231,10 +244,7 @@ impl Bvh {
         prepared: &PreparedRay,
         range: Interval,
     ) -> Option<(Candidate, usize)> {
-        let mut nearest = Nearest {
-            best: None,
-            limit: range.max,
-        };
+        let mut nearest = Nearest::up_to(range.max);
         for &i in &self.unbounded {
             if let Some(c) = objects[i]
                 .shape

@@ -23,59 +23,16 @@
 use std::time::Duration;
 
 use criterion::{Criterion, Throughput, criterion_group};
-use glam::{Vec3, Vec3A};
+use glam::Vec3;
 use obvhs::ray::RayHit;
+use render_benches::mesh_view::{
+    FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
+};
 use render_lessons::bvh::{Bvh, BvhScene};
-use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
-use render_lessons::course::measure::scaling;
-use render_lessons::ray::{Interval, Ray};
+use render_lessons::ray::Interval;
 use render_lessons::raycast::shadowless;
-use render_lessons::scene::{Intersect, Scene};
-
-/// A UV sphere of radius 1 at the origin, n x n segments, as a scene of triangles
-/// (the scenes of lesson 11's chart 7).
-fn sphere_scene(n: u32) -> Scene {
-    scaling::sphere_scene(n).expect("scene")
-}
-
-/// A pinhole camera at `distance` from the sphere's centre, looking at it, with a
-/// screen of half height 0.42 at distance 1.
-fn camera(width: u32, height: u32, distance: f32) -> Camera {
-    let eye = distance * Vec3::new(0.0, 0.4, 3.0).normalize();
-    let frame = Frame::look(eye, -eye, Vec3::Y).expect("frame");
-    let film = Film::centred(width, height, 0.42).expect("film");
-    PinholeCamera::new(film, 1.0, frame).expect("camera").into()
-}
-
-/// Every pixel's ray, row by row.
-fn rays(camera: &Camera) -> Vec<Ray> {
-    let (w, h) = (camera.film().width(), camera.film().height());
-    (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| camera.ray(x, y))
-        .collect()
-}
-
-/// The scene's triangles for obvhs.
-fn obvhs_triangles(scene: &Scene) -> Vec<obvhs::triangle::Triangle> {
-    use render_lessons::shapes::Shape;
-    scene
-        .objects()
-        .iter()
-        .filter_map(|o| match &o.shape {
-            Shape::Triangle(t) => {
-                let [v0, v1, v2] = t.vertices().map(Vec3A::from);
-                Some(obvhs::triangle::Triangle { v0, v1, v2 })
-            }
-            _ => None,
-        })
-        .collect()
-}
-
-fn obvhs_ray(r: &Ray) -> obvhs::ray::Ray {
-    obvhs::ray::Ray::new_inf(r.origin().into(), r.direction().into())
-}
+use render_lessons::scene::Intersect;
 
 /// Build time and rays per second on 99 904 triangles (n = 224).
 fn big_mesh(c: &mut Criterion) {
@@ -87,7 +44,7 @@ fn big_mesh(c: &mut Criterion) {
         b.iter(|| Bvh::build(scene.objects()))
     });
     let bvh = BvhScene::new(scene);
-    let rays = rays(&camera(1920, 1080, 3.03));
+    let rays = rays(&camera(1920, 1080, NEAR));
     group.throughput(Throughput::Elements(rays.len() as u64));
     group.bench_function("closest hit, 1920x1080 rays, 1 thread", |b| {
         b.iter(|| rays.iter().map(|r| shadowless(&bvh, r)).sum::<Vec3>())
@@ -99,7 +56,7 @@ fn big_mesh(c: &mut Criterion) {
 /// 5184 rays of a 96 x 54 image. A full HD frame through the 10k-triangle list
 /// would take about a minute per sample.
 fn crossover(c: &mut Criterion) {
-    let rays = rays(&camera(96, 54, 3.03));
+    let rays = rays(&camera(96, 54, NEAR));
     let mut group = c.benchmark_group("list vs bvh, 96x54 rays");
     group.sample_size(10);
     group.warm_up_time(Duration::from_secs(1));
@@ -165,7 +122,7 @@ fn one_run() {
         return;
     };
     let ours = BvhScene::new(scene);
-    for (label, distance) in [("near camera", 3.03), ("far camera", 6.5)] {
+    for (label, distance) in [("near camera", NEAR), ("far camera", FAR)] {
         let rays = rays(&camera(1920, 1080, distance));
         let (mut h0, mut h1, mut h2) = (0, 0, 0);
         let times = interleaved_min(

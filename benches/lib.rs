@@ -1,6 +1,7 @@
 //! What the benches share (`cargo bench -p render-benches`, BENCHMARKS.md): the plain
 //! C anchor of the ray-casting bench, and the frame loop that times a caster without
-//! the set-up a renderer does once.
+//! the set-up a renderer does once, and the BVH bench's view of a big mesh.
 
 pub mod anchor;
 pub mod frame;
+pub mod mesh_view;

@@ -1,0 +1,96 @@
+//! One or more frames of the BVH bench's near view (480 x 270 unless told) on one
+//! thread, through this crate's tree or obvhs's `Bvh2`, each tree built before the
+//! frames: what `valgrind --tool=callgrind` counts in
+//! `scripts/instructions-per-ray --bvh`, which runs it for 1 and 2 frames and divides
+//! the difference by the number of rays.
+//!
+//!     cargo build --release -p render-benches --bin bvh-frame
+//!     target/release/bvh-frame TREE [WIDTH HEIGHT [FRAMES]]
+//!
+//! TREE is `ours` (`BvhScene::closest_object`) or `obvhs` (`Bvh2::ray_traverse` with
+//! its Moller-Trumbore test), the same question as in `benches/bvh.rs`.
+
+use std::process::ExitCode;
+
+use obvhs::ray::RayHit;
+use render_benches::mesh_view::{NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene};
+use render_lessons::bvh::BvhScene;
+use render_lessons::ray::Interval;
+use render_lessons::scene::Intersect;
+
+/// The most rays a frame may have: 4096 x 4096, about half a gigabyte of rays.
+const MAX_RAYS: u64 = 4096 * 4096;
+
+fn main() -> ExitCode {
+    match run(std::env::args().skip(1).collect()) {
+        Ok(line) => {
+            println!("{line}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("bvh-frame: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn number(args: &[String], i: usize, name: &str, default: u32) -> Result<u32, String> {
+    match args.get(i) {
+        None => Ok(default),
+        Some(s) => s
+            .parse()
+            .ok()
+            .filter(|&n| (1..=100_000).contains(&n))
+            .ok_or(format!(
+                "{name} must be a whole number from 1 to 100000, not '{s}'"
+            )),
+    }
+}
+
+fn run(args: Vec<String>) -> Result<String, String> {
+    let tree = args.first().map(String::as_str).unwrap_or_default();
+    if !["ours", "obvhs"].contains(&tree) || args.len() > 4 {
+        return Err(format!(
+            "usage: bvh-frame ours|obvhs [WIDTH HEIGHT [FRAMES]] (TREE was '{tree}')"
+        ));
+    }
+    let width = number(&args, 1, "WIDTH", 480)?;
+    let height = number(&args, 2, "HEIGHT", 270)?;
+    let frames = number(&args, 3, "FRAMES", 1)?;
+    if u64::from(width) * u64::from(height) > MAX_RAYS {
+        return Err(format!(
+            "WIDTH x HEIGHT must be at most {MAX_RAYS} rays (they are kept in memory), not {width} x {height}"
+        ));
+    }
+    let scene = sphere_scene(224);
+    let rays = rays(&camera(width, height, NEAR));
+    let mut hits = 0;
+    if tree == "ours" {
+        let ours = BvhScene::new(scene);
+        for _ in 0..frames {
+            hits += rays
+                .iter()
+                .filter(|r| ours.closest_object(r, Interval::AHEAD).is_some())
+                .count();
+        }
+    } else {
+        let triangles = obvhs_triangles(&scene);
+        let params = obvhs::BvhBuildParams::medium_build();
+        let mut build_time = std::time::Duration::ZERO;
+        let bvh2 = obvhs::bvh2::builder::build_bvh2_from_tris(&triangles, params, &mut build_time);
+        for _ in 0..frames {
+            hits += rays
+                .iter()
+                .filter(|r| {
+                    let mut hit = RayHit::none();
+                    bvh2.ray_traverse(obvhs_ray(r), &mut hit, |ray, id| {
+                        triangles[bvh2.primitive_indices[id] as usize].intersect(ray)
+                    })
+                })
+                .count();
+        }
+    }
+    Ok(format!(
+        "{tree}: {frames} frame(s) of {width}x{height}, {hits} rays hit"
+    ))
+}

@@ -26,6 +26,12 @@ pub const T_CLOSEST: Exercise = Exercise {
 
 /// Checks `point_at(o, d, t)`: the point r(t) = o + t d/|d|, `t` a distance.
 pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static) -> Outcome {
+    point_at_checked(Box::new(f))
+}
+
+/// [`check_point_at`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn point_at_checked(f: Box<dyn Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Outcome {
     let cases: Vec<Case<(Vec3, Vec3, f32)>> = [
         (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 0.0),
         (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 5.0),
@@ -70,6 +76,12 @@ type ClosestArgs = (Ray, Vec3);
 /// Checks `t_closest(ray, p)`: the `t` of the point of the ray's line closest to `p`,
 /// (p - o) . d for the unit direction d.
 pub fn check_t_closest(f: impl Fn(&Ray, Vec3) -> f32 + Send + Sync + 'static) -> Outcome {
+    t_closest_checked(Box::new(f))
+}
+
+/// [`check_t_closest`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn t_closest_checked(f: Box<dyn Fn(&Ray, Vec3) -> f32 + Send + Sync>) -> Outcome {
     let ray = |o, d| Ray::new(o, d).expect("valid ray");
     let lesson = ray(v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0));
     let cases: Vec<Case<ClosestArgs>> = [

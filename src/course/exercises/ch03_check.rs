@@ -85,6 +85,12 @@ fn describe(film: &Film) -> String {
 pub fn check_pixel_to_plane(
     f: impl Fn(&Film, u32, u32) -> Vec2 + Send + Sync + 'static,
 ) -> Outcome {
+    pixel_to_plane_checked(Box::new(f))
+}
+
+/// [`check_pixel_to_plane`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn pixel_to_plane_checked(f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>) -> Outcome {
     let cases: Vec<Case<PixelArgs>> = films()
         .into_iter()
         .flat_map(|(film, pixels)| {
@@ -139,6 +145,12 @@ fn from_bottom_left(&(film, p): &PlaneArgs) -> Vec2 {
 /// Checks `plane_to_pixel(film, p)`: continuous pixel coordinates of the plane point
 /// `p`, rows counted from the top, a pixel centre at (px + 0.5, py + 0.5).
 pub fn check_plane_to_pixel(f: impl Fn(&Film, Vec2) -> Vec2 + Send + Sync + 'static) -> Outcome {
+    plane_to_pixel_checked(Box::new(f))
+}
+
+/// [`check_plane_to_pixel`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn plane_to_pixel_checked(f: Box<dyn Fn(&Film, Vec2) -> Vec2 + Send + Sync>) -> Outcome {
     let mut cases: Vec<Case<PlaneArgs>> = Vec::new();
     for (film, pixels) in films() {
         let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());

@@ -84,6 +84,12 @@ fn basis(&(u, v, w, _): &BasisArgs) -> Basis {
 pub fn check_to_world(
     f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync + 'static,
 ) -> Outcome {
+    to_world_checked(Box::new(f))
+}
+
+/// [`check_to_world`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn to_world_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync>) -> Outcome {
     run(
         &basis_cases("b"),
         |a| basis(a).to_world(a.3),
@@ -102,6 +108,12 @@ pub fn check_to_world(
 pub fn check_to_local(
     f: impl Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync + 'static,
 ) -> Outcome {
+    to_local_checked(Box::new(f))
+}
+
+/// [`check_to_local`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn to_local_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync>) -> Outcome {
     run(
         &basis_cases("a"),
         |a| basis(a).to_local(a.3),

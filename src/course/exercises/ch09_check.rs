@@ -103,6 +103,12 @@ fn covers_wrongly(rule: Inside, (a, b, c, p): CoversArgs) -> bool {
 pub fn check_covers(
     f: impl Fn(Fixed, Fixed, Fixed, Fixed) -> bool + Send + Sync + 'static,
 ) -> Outcome {
+    covers_checked(Box::new(f))
+}
+
+/// [`check_covers`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn covers_checked(f: Box<dyn Fn(Fixed, Fixed, Fixed, Fixed) -> bool + Send + Sync>) -> Outcome {
     // Two triangles sharing the diagonal from (0, 0) to (8, 8), both counter-clockwise
     // on the image (positive area): `lower` has a left and a bottom edge, `upper` a
     // top and a right edge; the diagonal is lower's right edge and upper's left edge.
@@ -301,6 +307,14 @@ fn ratio(b: [f32; 3], x: [f32; 3], y: [f32; 3]) -> [f32; 3] {
 /// Checks `perspective_weights(b, vertices)`: b_k (1/w_k) / sum_j b_j (1/w_j).
 pub fn check_perspective_weights(
     f: impl Fn([f32; 3], &[ScreenVertex; 3]) -> [f32; 3] + Send + Sync + 'static,
+) -> Outcome {
+    perspective_weights_checked(Box::new(f))
+}
+
+/// [`check_perspective_weights`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn perspective_weights_checked(
+    f: Box<dyn Fn([f32; 3], &[ScreenVertex; 3]) -> [f32; 3] + Send + Sync>,
 ) -> Outcome {
     let vertex = |w: f32| ScreenVertex {
         pixel: Vec2::ZERO,

@@ -89,6 +89,12 @@ fn statistic(f: &dyn Fn(Vec2) -> (Vec3, f32), measure: Measure) -> Statistic {
 
 /// Checks `cosine_sample(u)`: a cosine-weighted direction around +Z and its pdf.
 pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32) + Send + Sync + 'static) -> Outcome {
+    cosine_sample_checked(Box::new(f))
+}
+
+/// [`check_cosine_sample`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn cosine_sample_checked(f: Box<dyn Fn(Vec2) -> (Vec3, f32) + Send + Sync>) -> Outcome {
     let stats: Vec<Case<Measure>> = vec![
         (
             format!(
@@ -211,6 +217,12 @@ type BounceArgs = (Vec3, Vec3, Vec3, f32);
 pub fn check_bounce_weight(
     f: impl Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static,
 ) -> Outcome {
+    bounce_weight_checked(Box::new(f))
+}
+
+/// [`check_bounce_weight`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn bounce_weight_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Outcome {
     let grey = Vec3::splat(0.5);
     let red = v(0.75, 0.25, 0.25);
     let up = Vec3::Z;

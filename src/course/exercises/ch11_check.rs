@@ -156,6 +156,14 @@ fn same(a: &SlabAnswer, b: &SlabAnswer) -> bool {
 pub fn check_slab(
     f: impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer + Send + Sync + 'static,
 ) -> Outcome {
+    slab_checked(Box::new(f))
+}
+
+/// [`check_slab`] for the answer as a trait object: compiled once, here, not again
+/// for every closure a test passes (see [`super::harness`]).
+fn slab_checked(
+    f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer + Send + Sync>,
+) -> Outcome {
     let cube = (v(-1.0, -1.0, -1.0), v(1.0, 1.0, 1.0));
     let flat = (v(-1.0, 0.0, -1.0), v(1.0, 0.0, 1.0));
     let inf = f32::INFINITY;

@@ -14,15 +14,24 @@
 //! Each chapter's check sits next to the student's file it checks, in
 //! `chNN_check.rs` beside `chNN.rs`; `check.rs` lists them all.
 //!
+//! A `check_*` function takes the answer as `impl Fn`, so that a function or a
+//! closure both do, and hands it on boxed, as a trait object, to a private
+//! `*_checked` function that holds the cases. A generic function is compiled again
+//! for every closure passed to it, and the course's own tests pass over two hundred
+//! (the mistakes each check must catch); boxed, the cases and the harness are
+//! compiled once, in the library.
+//!
 //! This module is compiled without the `exercises` feature too: the default test
 //! suite runs every check against the reference implementation (it must pass) and
 //! against a deliberately wrong one (it must fail with a hint), so a wrong check
 //! fails CI.
 
+use std::any::Any;
 use std::cell::Cell;
 use std::fmt;
 use std::panic::{self, AssertUnwindSafe};
-use std::sync::{Once, mpsc};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Once, mpsc};
 use std::time::Duration;
 
 use glam::Vec3;
@@ -130,6 +139,24 @@ pub use super::answer::{Answer, TOLERANCE};
 /// check takes well under a second with a right answer, even in a debug build.
 pub const CASE_TIME_LIMIT: Duration = Duration::from_secs(5);
 
+/// The time limit in whole seconds, [`CASE_TIME_LIMIT`] until
+/// [`set_case_time_limit`] changes it.
+static CASE_LIMIT_SECONDS: AtomicU64 = AtomicU64::new(CASE_TIME_LIMIT.as_secs());
+
+/// How long one case may run now: [`CASE_TIME_LIMIT`], or what
+/// [`set_case_time_limit`] set.
+pub fn case_time_limit() -> Duration {
+    Duration::from_secs(CASE_LIMIT_SECONDS.load(Ordering::Relaxed))
+}
+
+/// Changes how long each case of every check in this program may run, in whole
+/// seconds from 1 (a shorter `limit` gives 1 s): more for a machine much slower than
+/// usual, or while stepping through an answer in a debugger; less to see a stuck
+/// loop reported sooner (the course's own test of that message uses 1 s).
+pub fn set_case_time_limit(limit: Duration) {
+    CASE_LIMIT_SECONDS.store(limit.as_secs().max(1), Ordering::Relaxed);
+}
+
 thread_local! {
     /// True on a thread that runs a student's function: its panics are reported in
     /// the outcome, not printed.
@@ -145,7 +172,7 @@ static INSTALL_HOOK: Once = Once::new();
 /// and out around every call would race between tests running in parallel.) A
 /// panic on another thread the function started (a rayon closure, say) still
 /// reaches the function, and so the outcome, but its message is printed there too.
-fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+fn quietly(f: Job) -> Result<Box<dyn Any + Send>, String> {
     INSTALL_HOOK.call_once(|| {
         let previous = panic::take_hook();
         panic::set_hook(Box::new(move |info| {
@@ -175,19 +202,26 @@ fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
 /// is left behind, still running, and ends with the test program. (Endless
 /// recursion is another matter: it overflows the stack, which aborts the whole
 /// program; no thread can catch that.)
-struct Worker<A, R> {
-    cases: mpsc::Sender<A>,
-    answers: mpsc::Receiver<Result<R, String>>,
+///
+/// The thread runs jobs, each one case already bound to its arguments, and sends
+/// back what it made as `Box<dyn Any>`: so the worker is one piece of code for every
+/// check, whatever its argument and answer types.
+struct Worker {
+    jobs: mpsc::Sender<Job>,
+    answers: mpsc::Receiver<Result<Box<dyn Any + Send>, String>>,
 }
 
-impl<A: Send + 'static, R: Send + 'static> Worker<A, R> {
-    fn start(student: impl Fn(A) -> R + Send + 'static) -> Worker<A, R> {
-        let (cases, inbox) = mpsc::channel::<A>();
+/// One case of a student's function, ready to run.
+type Job = Box<dyn FnOnce() -> Box<dyn Any + Send> + Send>;
+
+impl Worker {
+    fn start() -> Worker {
+        let (jobs, inbox) = mpsc::channel::<Job>();
         let (outbox, answers) = mpsc::channel();
         let worker = move || {
             // Ends when the check drops its sender, or stops listening.
-            for args in inbox {
-                if outbox.send(quietly(|| student(args))).is_err() {
+            for job in inbox {
+                if outbox.send(quietly(job)).is_err() {
                     break;
                 }
             }
@@ -196,16 +230,16 @@ impl<A: Send + 'static, R: Send + 'static> Worker<A, R> {
         let _ = std::thread::Builder::new()
             .name("exercise".into())
             .spawn(worker);
-        Worker { cases, answers }
+        Worker { jobs, answers }
     }
 
-    /// The answer to `args`: `Ok` with the function's answer or `Err` with its panic
-    /// message; `None` if none came within [`CASE_TIME_LIMIT`].
-    fn answer(&self, args: A) -> Option<Result<R, String>> {
-        if self.cases.send(args).is_err() {
+    /// The answer of `job`: `Ok` with what it returned or `Err` with its panic
+    /// message; `None` if none came within [`case_time_limit`].
+    fn answer(&self, job: Job) -> Option<Result<Box<dyn Any + Send>, String>> {
+        if self.jobs.send(job).is_err() {
             return Some(Err("the check could not start a thread to run it".into()));
         }
-        match self.answers.recv_timeout(CASE_TIME_LIMIT) {
+        match self.answers.recv_timeout(case_time_limit()) {
             Ok(answer) => Some(answer),
             Err(mpsc::RecvTimeoutError::Timeout) => None,
             Err(mpsc::RecvTimeoutError::Disconnected) => {
@@ -231,13 +265,13 @@ pub(crate) fn gives<'a, A, R: Answer>(
 /// One case: its description and its arguments.
 pub(crate) type Case<A> = (String, A);
 
-/// Runs `student` on every case, each within [`CASE_TIME_LIMIT`], and compares with
+/// Runs `student` on every case, each within [`case_time_limit`], and compares with
 /// `reference`. A panic, or a case that does not finish in time, fails the check and
 /// names the case; a `todo!()` means the exercise is not started.
 pub(crate) fn run<A, R>(
     cases: &[Case<A>],
     reference: impl Fn(&A) -> R,
-    student: impl Fn(A) -> R + Send + 'static,
+    student: impl Fn(A) -> R + Send + Sync + 'static,
     mistakes: &[Mistake<'_, A, R>],
     hint: &str,
 ) -> Outcome
@@ -245,11 +279,16 @@ where
     A: Clone + Send + 'static,
     R: Answer + Send + 'static,
 {
-    let worker = Worker::start(student);
+    let worker = Worker::start();
+    let student = Arc::new(student);
     for (n, (case, args)) in cases.iter().enumerate() {
         let expected = reference(args);
-        let got = match worker.answer(args.clone()) {
-            Some(Ok(got)) => got,
+        let (student, args_moved) = (Arc::clone(&student), args.clone());
+        let job: Job = Box::new(move || Box::new(student(args_moved)));
+        let answer = worker.answer(job).map(|a| a.map(|got| got.downcast::<R>()));
+        let got = match answer {
+            Some(Ok(Ok(got))) => *got,
+            Some(Ok(Err(_))) => unreachable!("a job answers with its function's type"),
             Some(Err(message)) if message.contains("not yet implemented") => {
                 return Outcome::NotStarted;
             }
@@ -262,7 +301,7 @@ where
                 };
             }
             None => {
-                let limit = CASE_TIME_LIMIT.as_secs();
+                let limit = case_time_limit().as_secs();
                 return Outcome::Fail {
                     case: case.clone(),
                     expected: expected.show(),

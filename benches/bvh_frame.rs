@@ -13,6 +13,7 @@
 use std::process::ExitCode;
 
 use obvhs::ray::RayHit;
+use render_benches::args::{self, number};
 use render_benches::mesh_view::{NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene};
 use render_lessons::bvh::BvhScene;
 use render_lessons::ray::Interval;
@@ -22,29 +23,7 @@ use render_lessons::scene::Intersect;
 const MAX_RAYS: u64 = 4096 * 4096;
 
 fn main() -> ExitCode {
-    match run(std::env::args().skip(1).collect()) {
-        Ok(line) => {
-            println!("{line}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("bvh-frame: {e}");
-            ExitCode::from(2)
-        }
-    }
-}
-
-fn number(args: &[String], i: usize, name: &str, default: u32) -> Result<u32, String> {
-    match args.get(i) {
-        None => Ok(default),
-        Some(s) => s
-            .parse()
-            .ok()
-            .filter(|&n| (1..=100_000).contains(&n))
-            .ok_or(format!(
-                "{name} must be a whole number from 1 to 100000, not '{s}'"
-            )),
-    }
+    args::main("bvh-frame", run)
 }
 
 fn run(args: Vec<String>) -> Result<String, String> {

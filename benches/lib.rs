@@ -3,5 +3,6 @@
 //! the set-up a renderer does once, and the BVH bench's view of a big mesh.
 
 pub mod anchor;
+pub mod args;
 pub mod frame;
 pub mod mesh_view;

@@ -16,6 +16,7 @@ use std::process::ExitCode;
 
 use glam::Vec3;
 use render_benches::anchor;
+use render_benches::args::{self, number};
 use render_benches::frame::FrameLoop;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::plain::PlainScene;
@@ -25,27 +26,7 @@ use render_lessons::scenes::{still_life, still_life_pinhole};
 const CASTERS: [&str; 6] = ["c", "plain", "robust", "c-camera", "camera", "check"];
 
 fn main() -> ExitCode {
-    match run(std::env::args().skip(1).collect()) {
-        Ok(line) => {
-            println!("{line}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("one-frame: {e}");
-            ExitCode::from(2)
-        }
-    }
-}
-
-fn number(args: &[String], i: usize, name: &str, default: u32) -> Result<u32, String> {
-    match args.get(i) {
-        None => Ok(default),
-        Some(s) => s
-            .parse()
-            .ok()
-            .filter(|&n| n >= 1)
-            .ok_or(format!("{name} must be a whole number >= 1, not '{s}'")),
-    }
+    args::main("one-frame", run)
 }
 
 fn run(args: Vec<String>) -> Result<String, String> {

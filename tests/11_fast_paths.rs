@@ -11,6 +11,8 @@
 //! The camera's fast rays (`Camera::row`, `PinholeCamera::ray_through_fast`) are
 //! checked against `PinholeCamera::ray` in `tests/06_pinhole_camera.rs`.
 
+mod common;
+use common::Rng;
 use glam::Vec3;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
@@ -21,31 +23,6 @@ use render_lessons::shapes::{
     Aabb, Cylinder, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
 };
 use render_lessons::transform::Transform;
-
-/// A small deterministic generator (xorshift64*), so every run tests the same rays.
-struct Rng(u64);
-
-impl Rng {
-    fn next_f32(&mut self) -> f32 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
-        (x >> 40) as f32 / (1u64 << 24) as f32
-    }
-
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * self.next_f32()
-    }
-
-    fn point(&mut self, half: f32) -> Vec3 {
-        Vec3::new(
-            self.range(-half, half),
-            self.range(-half, half),
-            self.range(-half, half),
-        )
-    }
-}
 
 /// Every bit of a hit, so that -0 and 0 (and NaN payloads) count as different.
 fn bits(hit: &Hit) -> Vec<u32> {

@@ -5,6 +5,8 @@
 //! object, ties included) and the same `occluded`. No timing here: speed is
 //! measured by `cargo bench -p render-benches --bench bvh`.
 
+mod common;
+use common::Rng;
 use std::collections::BTreeSet;
 
 use glam::{Mat4, Vec3};
@@ -15,31 +17,6 @@ use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
 use render_lessons::shapes::{Aabb, Cylinder, Instance, Plane, Quadric, Shape, Sphere, Triangle};
 use render_lessons::transform::Transform;
-
-/// A small deterministic generator (xorshift64*), so every run tests the same rays.
-struct Rng(u64);
-
-impl Rng {
-    fn next_f32(&mut self) -> f32 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
-        (x >> 40) as f32 / (1u64 << 24) as f32
-    }
-
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * self.next_f32()
-    }
-
-    fn point(&mut self, half: f32) -> Vec3 {
-        Vec3::new(
-            self.range(-half, half),
-            self.range(-half, half),
-            self.range(-half, half),
-        )
-    }
-}
 
 fn object(shape: Shape) -> Object {
     Object::diffuse(shape, Vec3::splat(0.5))

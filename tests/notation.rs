@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use glam::{Vec3, Vec4};
 use render_lessons::raster::tessellate::{FLOOR_SIZE, tessellate};
-use render_lessons::scenes::still_life;
+use render_lessons::scenes::{STILL_LIFE_OBJECTS, still_life};
 
 // ---- reading the book ----------------------------------------------------------
 
@@ -583,18 +583,8 @@ fn chapter_08_quotes_its_coverage_table() {
     assert!(table.starts_with("Shadowless ray casting, 480 x 270 pixels"));
     let count = |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
     for column in [1, 2] {
-        let total: u32 = [
-            "floor",
-            "red sphere",
-            "blue sphere",
-            "green sphere",
-            "box",
-            "triangle",
-            "background",
-        ]
-        .iter()
-        .map(|n| count(n, column))
-        .sum();
+        let rows = STILL_LIFE_OBJECTS.iter().chain(&["background"]);
+        let total: u32 = rows.map(|n| count(n, column)).sum();
         assert_eq!(total, 480 * 270, "each column adds up to the image");
     }
     assert_says("08_ray_casting.md", "$480\\times 270 = 129\\,600$ pixels");

@@ -24,3 +24,28 @@ pub fn red_pixels(rgba: &[u8]) -> usize {
         .filter(|p| p[0] as i32 > p[2] as i32 + 60)
         .count()
 }
+
+/// A small deterministic generator (xorshift64*), so every run tests the same rays.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_f32(&mut self) -> f32 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
+        (x >> 40) as f32 / (1u64 << 24) as f32
+    }
+
+    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.next_f32()
+    }
+
+    pub fn point(&mut self, half: f32) -> Vec3 {
+        Vec3::new(
+            self.range(-half, half),
+            self.range(-half, half),
+            self.range(-half, half),
+        )
+    }
+}

@@ -25,6 +25,7 @@ use render_lessons::course::measure::lessons::{Sweep, best_ms, lessons_measured}
 use render_lessons::course::measure::runner::run_charts;
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::course::report::{Table, Timings, num};
+use render_lessons::error::Error;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::progress;
 use render_lessons::raster::{Shading, agreement, floor_settings, rasterize, reference};
@@ -44,6 +45,11 @@ fn main() -> ExitCode {
             args.output.image("11_mesh.png", &image)?;
             Ok(())
         }
+        None if args.subdivide.is_some() => Err(Error::Invalid {
+            param: "subdivide",
+            reason: "needs --mesh: it splits that mesh's triangles",
+        }
+        .into()),
         None => {
             let quality = Quality::full_if(args.full);
             let charts = [ALL, &[("11_8_lessons", lessons as Measure)]].concat();
@@ -148,7 +154,7 @@ pub struct Args {
     pub mesh: Option<PathBuf>,
     /// With --mesh: split every triangle in four, this many times (the teapot: 4
     /// makes a million triangles).
-    #[arg(long, requires = "mesh")]
+    #[arg(long)]
     pub subdivide: Option<u32>,
     #[command(flatten)]
     pub output: Output,

@@ -21,6 +21,7 @@ use crate::scene::{Intersect, Scene, SceneHit};
 use crate::shapes::{Aabb, Candidate, PreparedRay, Shape, Triangle};
 
 pub mod build;
+mod sah;
 pub mod traverse;
 
 /// The most levels a tree may have, root included; also the size of the traversal

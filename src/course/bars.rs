@@ -7,9 +7,8 @@ use std::path::{Path, PathBuf};
 
 use plotters::prelude::*;
 
-use crate::course::chart::{HEIGHT, LABEL_SIZE, TITLE_SIZE, WIDTH};
+use crate::course::chart::{HEIGHT, LABEL_SIZE, WIDTH, save_svg_and_csv, titled};
 use crate::error::{Error, Result};
-use crate::files::write_atomically;
 
 /// Horizontal bars, one per name, the first at the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -87,11 +86,7 @@ impl Bars {
         };
         let root = SVGBackend::with_string(svg, (WIDTH, HEIGHT)).into_drawing_area();
         root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(&self.title, ("sans-serif", TITLE_SIZE))
-            .margin(15)
-            .x_label_area_size(50)
-            .y_label_area_size(230)
+        let mut chart = titled(&root, &self.title, 230)
             .build_cartesian_2d(0.0..longest * 1.2, -0.5..n as f64 - 0.5)?;
         chart
             .configure_mesh()
@@ -121,11 +116,7 @@ impl Bars {
 
     /// Writes `stem.svg` and `stem.csv` into `dir`, each atomically.
     pub fn save(&self, dir: &Path, stem: &str) -> Result<[PathBuf; 2]> {
-        let svg = dir.join(format!("{stem}.svg"));
-        let csv = dir.join(format!("{stem}.csv"));
-        write_atomically(&svg, self.svg()?.as_bytes())?;
-        write_atomically(&csv, self.csv().as_bytes())?;
-        Ok([svg, csv])
+        save_svg_and_csv(dir, stem, &self.svg()?, &self.csv())
     }
 }
 

@@ -201,12 +201,7 @@ impl Chart {
     {
         let root = SVGBackend::with_string(svg, (WIDTH, HEIGHT)).into_drawing_area();
         root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(&self.title, ("sans-serif", TITLE_SIZE))
-            .margin(15)
-            .x_label_area_size(50)
-            .y_label_area_size(85)
-            .build_cartesian_2d(x, y)?;
+        let mut chart = titled(&root, &self.title, 85).build_cartesian_2d(x, y)?;
         chart
             .configure_mesh()
             .x_desc(self.x.label.as_str())
@@ -280,12 +275,42 @@ impl Chart {
 
     /// Writes `stem.svg` and `stem.csv` into `dir`, each atomically.
     pub fn save(&self, dir: &Path, stem: &str) -> Result<[PathBuf; 2]> {
-        let svg = dir.join(format!("{stem}.svg"));
-        let csv = dir.join(format!("{stem}.csv"));
-        write_atomically(&svg, self.svg()?.as_bytes())?;
-        write_atomically(&csv, self.csv().as_bytes())?;
-        Ok([svg, csv])
+        save_svg_and_csv(dir, stem, &self.svg()?, &self.csv())
     }
+}
+
+/// Writes `svg` to `stem.svg` and `csv` to `stem.csv` in `dir`, each atomically,
+/// and returns their paths.
+pub(crate) fn save_svg_and_csv(
+    dir: &Path,
+    stem: &str,
+    svg: &str,
+    csv: &str,
+) -> Result<[PathBuf; 2]> {
+    let paths = [
+        dir.join(format!("{stem}.svg")),
+        dir.join(format!("{stem}.csv")),
+    ];
+    write_atomically(&paths[0], svg.as_bytes())?;
+    write_atomically(&paths[1], csv.as_bytes())?;
+    Ok(paths)
+}
+
+/// Every course chart's frame on `root`: its title on top, 15 pixels of margin,
+/// room for the x axis's ticks and label below and `y_labels` pixels for the y
+/// axis's on the left.
+pub(crate) fn titled<'a, 'b>(
+    root: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
+    title: &str,
+    y_labels: u32,
+) -> ChartBuilder<'a, 'b, SVGBackend<'b>> {
+    let mut builder = ChartBuilder::on(root);
+    builder
+        .caption(title, ("sans-serif", TITLE_SIZE))
+        .margin(15)
+        .x_label_area_size(50)
+        .y_label_area_size(y_labels);
+    builder
 }
 
 /// A tick label: plain decimals from 0.001 to 99 999, powers of ten written as

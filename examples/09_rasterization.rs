@@ -188,12 +188,10 @@ struct Args {
     /// The shadow map's bias, in texel footprints (0 or more).
     #[arg(long, default_value = "1", value_parser = parsers::non_negative)]
     bias: f32,
-    /// The mesh drawn by both renderers (a Wavefront OBJ file; quads and larger
-    /// faces are split into triangles).
+    /// The mesh both renderers draw (a Wavefront OBJ file; larger faces become triangles).
     #[arg(long, default_value = TORUS_OBJ)]
     mesh: PathBuf,
-    /// Split every triangle of the mesh in four, this many times (the teapot: 4
-    /// makes a million triangles).
+    /// Split each triangle in four, this many times (4 makes the teapot a million triangles).
     #[arg(long, default_value_t = 0)]
     subdivide: u32,
     #[command(flatten)]

@@ -18,7 +18,7 @@
 
 use glam::Vec3;
 
-pub use super::sah::{BINS, MAX_LEAF_SIZE, TRAVERSAL_COST, split_cost};
+pub use super::sah::{ALL_AXES_ABOVE, BINS, MAX_LEAF_SIZE, TRAVERSAL_COST, split_cost};
 use super::sah::{Bounds, Boxes, Item, Split, sah_split};
 use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH, Node, NodeKind};
 use crate::scene::Object;

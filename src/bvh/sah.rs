@@ -13,6 +13,13 @@ pub const TRAVERSAL_COST: f32 = 0.5;
 /// The number of bins per axis (Wald 2007 uses 8 to 32; 12 is pbrt-v4's count).
 pub const BINS: usize = 12;
 
+/// A node of more primitives than this is binned on all three axes; a smaller one
+/// only along the longest axis of its centroids' box, as Wald (2007) and pbrt-v4 bin
+/// every node. Three axes find a cheaper split now and then; on one axis the binning
+/// pass does a third of the work. The threshold is measured, not derived: the
+/// trade of build time against trace time is in BENCHMARKS.md.
+pub const ALL_AXES_ABOVE: usize = 128;
+
 /// A node with more primitives than this is split even when the SAH says a leaf
 /// would be cheaper (pbrt-v4's rule), so one bad box cannot make a huge leaf.
 pub const MAX_LEAF_SIZE: usize = 8;
@@ -124,15 +131,18 @@ struct Binning {
 }
 
 impl Binning {
-    /// Whether centroid `c` falls into bin `k` or one before it on `axis`: the same
+    /// Whether a centroid falls into bin `k` or one before it on `axis`: the same
     /// answer as `bins(c)[axis] <= k`, without making the bin an integer. The bin is
     /// the position (c - lo) scale cut down to an integer and clamped to 0..BINS, so
     /// for `k` < BINS - 1 it is at most `k` exactly when the position is below
     /// `k + 1` (or not a number, which the conversion makes bin 0).
     #[inline(always)]
-    fn at_most(&self, c: Vec3A, axis: usize, k: usize) -> bool {
-        let position = (c[axis] - self.lo[axis]) * self.scale[axis];
-        position < (k + 1) as f32 || position.is_nan()
+    fn at_most(&self, axis: usize, k: usize) -> impl Fn(&Item) -> bool {
+        let (lo, scale, end) = (self.lo[axis], self.scale[axis], (k + 1) as f32);
+        move |item| {
+            let position = (item.centroid[axis] - lo) * scale;
+            position < end || position.is_nan()
+        }
     }
 
     #[inline(always)]
@@ -147,7 +157,8 @@ impl Binning {
 }
 
 // ANCHOR: sah_split
-/// The binned SAH split (Wald 2007), on all three axes at once.
+/// The binned SAH split (Wald 2007), on all three axes at once in a node of more
+/// than [`ALL_AXES_ABOVE`] primitives, else on the longest.
 ///
 /// One pass drops every item into the bin of its centroid on each axis; then, per
 /// axis, one sweep from the right and one from the left give, for each of the
@@ -162,17 +173,23 @@ pub(super) fn sah_split(items: &mut [Item], boxes: &Boxes) -> Option<Split> {
         lo: boxes.centroids.min,
         scale: Vec3A::splat(BINS as f32) / extent,
     };
+    let axes = if items.len() > ALL_AXES_ABOVE {
+        0..3
+    } else {
+        let longest = extent.max_position();
+        longest..longest + 1
+    };
     let mut bins = [[Bin::EMPTY; BINS]; 3];
     for item in items.iter() {
         let b = binning.bins(item.centroid);
-        for axis in 0..3 {
+        for axis in axes.clone() {
             let bin = &mut bins[axis][b[axis]];
             bin.count += 1;
             bin.bounds.grow(&item.bounds);
         }
     }
     let mut best: Option<(f32, usize, usize)> = None; // (cost, axis, last left bin)
-    for axis in (0..3).filter(|&axis| extent[axis] > 0.0) {
+    for axis in axes.filter(|&axis| extent[axis] > 0.0) {
         if let Some((cost, k)) = cheapest_plane(&bins[axis], boxes.bounds.area())
             && best.is_none_or(|(c, ..)| cost < c)
         {
@@ -183,9 +200,7 @@ pub(super) fn sah_split(items: &mut [Item], boxes: &Boxes) -> Option<Split> {
     if cost >= items.len() as f32 && items.len() <= MAX_LEAF_SIZE {
         return None;
     }
-    Some(partition(items, |item| {
-        binning.at_most(item.centroid, axis, k)
-    }))
+    Some(partition(items, binning.at_most(axis, k)))
 }
 
 /// The cheapest plane between bins whose two sides are both non-empty, as (cost,

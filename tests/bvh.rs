@@ -11,7 +11,7 @@ use std::collections::BTreeSet;
 
 use glam::{Mat4, Vec3};
 use render_lessons::bvh::build::Strategy;
-use render_lessons::bvh::{Bvh, BvhScene, MAX_DEPTH, Node, NodeKind};
+use render_lessons::bvh::{Bvh, BvhScene, Child, MAX_DEPTH, Node};
 use render_lessons::raster::mesh::Mesh;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
@@ -284,7 +284,7 @@ fn degenerate_builds() {
     // No objects: no nodes, nothing hit.
     let empty = scene(Vec::new());
     let bvh = Bvh::build(empty.objects());
-    assert!(bvh.nodes().is_empty() && bvh.unbounded().is_empty());
+    assert!(bvh.root().is_none() && bvh.nodes().is_empty() && bvh.unbounded().is_empty());
     assert_eq!(bvh.sah_cost(), None);
     assert_same_answers(&empty, &rays);
 
@@ -293,7 +293,9 @@ fn degenerate_builds() {
         Sphere::new(Vec3::ZERO, 0.5).unwrap(),
     ))]);
     let bvh = Bvh::build(one.objects());
-    assert_eq!(bvh.nodes().len(), 1);
+    let leaf = Child::Leaf { first: 0, count: 1 };
+    assert!(matches!(bvh.root(), Some((_, child)) if child == leaf));
+    assert_eq!((bvh.nodes().len(), bvh.node_count()), (0, 1));
     assert_eq!(bvh.primitives(), &[0]);
     assert_same_answers(&one, &rays);
 
@@ -307,7 +309,11 @@ fn degenerate_builds() {
     .unwrap();
     let same = scene(vec![object(Shape::Triangle(tri)); 1000]);
     let bvh = BvhScene::new(same.clone());
-    assert_eq!(bvh.bvh().nodes().len(), 1);
+    let leaf = Child::Leaf {
+        first: 0,
+        count: 1000,
+    };
+    assert!(matches!(bvh.bvh().root(), Some((_, child)) if child == leaf));
     let r = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z).unwrap();
     assert_eq!(bvh.closest(&r, Interval::AHEAD).unwrap().object, 0);
     assert_same_answers(&same, &rays);
@@ -322,7 +328,7 @@ fn degenerate_builds() {
             .collect(),
     );
     let bvh = Bvh::build(planes.objects());
-    assert!(bvh.nodes().is_empty());
+    assert!(bvh.root().is_none() && bvh.nodes().is_empty());
     assert_eq!(bvh.unbounded(), &[0, 1, 2, 3, 4]);
     assert_same_answers(&planes, &rays);
 
@@ -385,52 +391,47 @@ fn a_pathological_distribution_stays_within_the_stack() {
     assert_same_answers(&scene, &rays);
 }
 
-/// Every primitive in exactly one leaf, each child's box inside its parent's, the two
-/// children side by side, each primitive's box inside its leaf's, no deeper than
-/// [`MAX_DEPTH`], 32 bytes a node; returns the depth.
+/// Every primitive in exactly one leaf, each child's box inside its parent's, every
+/// node after its parent and reachable once, each primitive's box inside its leaf's,
+/// no deeper than [`MAX_DEPTH`], 64 bytes (one cache line) a node; returns the depth.
 fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
     let nodes = bvh.nodes();
-    assert_eq!(std::mem::size_of::<Node>(), 32);
+    assert_eq!(std::mem::size_of::<Node>(), 64);
+    assert_eq!(std::mem::align_of::<Node>(), 64);
     let bounded: Vec<usize> = (0..scene.objects().len())
         .filter(|&i| scene.objects()[i].shape.bounds().is_some())
         .collect();
     let mut seen = vec![0usize; scene.objects().len()];
     let mut max_depth = 0;
-    let mut stack = if nodes.is_empty() {
-        vec![]
-    } else {
-        vec![(0, 1)]
-    };
+    // (the child's box, the child, its parent node, its depth)
+    let mut stack: Vec<_> = bvh
+        .root()
+        .map(|(b, c)| (b, c, None, 1))
+        .into_iter()
+        .collect();
     let mut visited = 0;
-    while let Some((i, depth)) = stack.pop() {
+    while let Some((bounds, child, parent, depth)) = stack.pop() {
         visited += 1;
         max_depth = max_depth.max(depth);
-        let node = nodes[i];
-        match node.kind() {
-            NodeKind::Leaf { first, count } => {
+        match child {
+            Child::Leaf { first, count } => {
                 assert!(count > 0);
                 for &p in &bvh.primitives()[first..first + count] {
                     seen[p] += 1;
                     let b = scene.objects()[p].shape.bounds().unwrap();
-                    assert!(node.bounds().contains(&b), "primitive {p} outside leaf {i}");
+                    assert!(bounds.contains(&b), "primitive {p} outside its leaf");
                 }
             }
-            NodeKind::Interior { left } => {
-                assert!(
-                    left > i && left + 1 < nodes.len(),
-                    "children after their parent"
-                );
-                for child in [left, left + 1] {
-                    assert!(
-                        node.bounds().contains(&nodes[child].bounds()),
-                        "child {child} outside {i}"
-                    );
-                    stack.push((child, depth + 1));
+            Child::Node(i) => {
+                assert!(parent.is_none_or(|p| i > p), "node {i} after its parent");
+                for (b, c) in [0, 1].map(|k| nodes[i].child(k)) {
+                    assert!(bounds.contains(&b), "a child of node {i} outside it");
+                    stack.push((b, c, Some(i), depth + 1));
                 }
             }
         }
     }
-    assert_eq!(visited, nodes.len(), "every node reachable once");
+    assert_eq!(visited, bvh.node_count(), "every node reachable once");
     for (i, &count) in seen.iter().enumerate() {
         let expected = usize::from(bounded.contains(&i));
         assert_eq!(count, expected, "object {i} in {count} leaves");
@@ -458,8 +459,8 @@ fn structural_invariants_and_sah_beats_the_median_on_100k_triangles() {
     eprintln!(
         "{} triangles: SAH tree {} nodes, depth {depth}, cost {c_sah:.2}; median tree {} nodes, cost {c_median:.2}",
         scene.objects().len(),
-        sah.nodes().len(),
-        median.nodes().len()
+        sah.node_count(),
+        median.node_count()
     );
     assert!(c_sah < c_median, "SAH {c_sah} vs median {c_median}");
 }
@@ -506,7 +507,7 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     let list = Scene::new(objects, Vec3::splat(0.1)).unwrap();
     let tree = BvhScene::new(list.clone());
     assert_eq!(torus_triangles, 1024);
-    assert!(tree.bvh().nodes().len() > 100, "a real tree over the mesh");
+    assert!(tree.bvh().node_count() > 100, "a real tree over the mesh");
 
     let camera = look_camera(
         32,
@@ -537,7 +538,7 @@ fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
     assert_eq!(list.objects().len(), 8 - 1 + 4032);
     let tree = BvhScene::new(list.clone());
     assert!(
-        tree.bvh().nodes().len() > 1000,
+        tree.bvh().node_count() > 1000,
         "a real tree over the teapot"
     );
     assert_eq!(path_traced(&tree, &camera), path_traced(&list, &camera));

@@ -20,8 +20,9 @@ use glam::Vec3;
 
 pub use super::sah::{ALL_AXES_ABOVE, BINS, MAX_LEAF_SIZE, TRAVERSAL_COST, split_cost};
 use super::sah::{Bounds, Boxes, Item, Split, sah_split};
-use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH, Node, NodeKind};
+use crate::bvh::{Bvh, Child, LeafShapes, MAX_DEPTH, Node, Root, first_count};
 use crate::scene::Object;
+use crate::shapes::Aabb;
 
 /// A node with at most this many primitives is always a leaf.
 pub const LEAF_SIZE: usize = 2;
@@ -61,17 +62,23 @@ impl Bvh {
             }
         }
         let mut builder = Builder {
-            nodes: Vec::with_capacity(2 * items.len()),
+            nodes: Vec::with_capacity(items.len()),
             strategy,
         };
-        if !items.is_empty() {
-            builder.nodes.push(LEAF_PLACEHOLDER);
+        let root = (!items.is_empty()).then(|| {
             let boxes = Boxes::of(&items);
-            builder.subtree(0, &mut items, 0, 0, boxes);
-        }
+            let (first, count) = first_count(builder.subtree(&mut items, 0, 0, boxes));
+            Root {
+                min: boxes.bounds.min,
+                max: boxes.bounds.max,
+                first,
+                count,
+            }
+        });
         let primitives: Vec<usize> = items.iter().map(|item| item.index as usize).collect();
         let shapes = LeafShapes::new(primitives.iter().map(|&i| &objects[i].shape));
         Bvh {
+            root,
             nodes: builder.nodes,
             primitives,
             shapes,
@@ -83,30 +90,29 @@ impl Bvh {
     /// primitive tests. Each interior node adds C_trav A(node) / A(root), each leaf
     /// N(leaf) A(leaf) / A(root). `None` for an empty tree or a root box of no area.
     pub fn sah_cost(&self) -> Option<f32> {
-        let root_area = f64::from(self.nodes.first()?.bounds().surface_area());
+        let (root_box, root) = self.root()?;
+        let root_area = f64::from(root_box.surface_area());
         if root_area <= 0.0 {
             return None;
         }
-        let total: f64 = self
+        let weighted = |(bounds, child): (Aabb, Child)| {
+            let weight = match child {
+                Child::Leaf { count, .. } => count as f64,
+                Child::Node(_) => f64::from(TRAVERSAL_COST),
+            };
+            weight * f64::from(bounds.surface_area())
+        };
+        let children = self
             .nodes
             .iter()
-            .map(|node| {
-                let weight = match node.kind() {
-                    NodeKind::Leaf { count, .. } => count as f64,
-                    NodeKind::Interior { .. } => f64::from(TRAVERSAL_COST),
-                };
-                weight * f64::from(node.bounds().surface_area())
-            })
+            .flat_map(|node| [0, 1].map(|i| node.child(i)));
+        let total: f64 = std::iter::once((root_box, root))
+            .chain(children)
+            .map(weighted)
             .sum();
         Some((total / root_area) as f32)
     }
 }
-
-/// A node slot reserved before its contents are known.
-const LEAF_PLACEHOLDER: Node = Node {
-    min_first: glam::Vec4::ZERO,
-    max_count: glam::Vec4::ZERO,
-};
 
 /// The tree as it grows.
 struct Builder {
@@ -116,45 +122,44 @@ struct Builder {
 
 impl Builder {
     // ANCHOR: build
-    /// Fills node `here` with the subtree over `items`, which are
-    /// `primitives[first..first + items.len()]` of the finished tree, at `depth`
-    /// levels below the root; `boxes` are the items' box and their centroids' box,
-    /// which the parent's split measured while it divided its items.
+    /// The subtree over `items`, which are `primitives[first..first + items.len()]`
+    /// of the finished tree, at `depth` levels below the root: a leaf, or a new
+    /// interior node; `boxes` are the items' box and their centroids' box, which the
+    /// parent's split measured while it divided its items.
     ///
-    /// A split reorders `items` in place, left part first, and reserves two
-    /// adjacent nodes for the children before filling them; so a leaf's primitives
-    /// are a contiguous run of the final order and nothing is allocated per node. A
-    /// node becomes a leaf when it holds at most [`LEAF_SIZE`] primitives, when the
-    /// tree is [`MAX_DEPTH`] deep (so the traversal stack is big enough), or when
-    /// [`Builder::split`] finds no split worth making.
-    fn subtree(
-        &mut self,
-        here: usize,
-        items: &mut [Item],
-        first: usize,
-        depth: usize,
-        boxes: Boxes,
-    ) {
+    /// A split reorders `items` in place, left part first, so a leaf's primitives
+    /// are a contiguous run of the final order and nothing is allocated per node.
+    /// The node's slot is reserved before its children are built, so that a parent
+    /// comes before its children and the left subtree follows its parent; the slot
+    /// is filled once both children are known. A subtree is a leaf when it holds at
+    /// most [`LEAF_SIZE`] primitives, when the tree is [`MAX_DEPTH`] deep (so the
+    /// traversal stack is big enough), or when [`Builder::split`] finds no split
+    /// worth making.
+    fn subtree(&mut self, items: &mut [Item], first: usize, depth: usize, boxes: Boxes) -> Child {
         let split = if items.len() > LEAF_SIZE && depth + 1 < MAX_DEPTH {
             self.split(items, &boxes)
         } else {
             None
         };
-        let Some(Split {
-            mid,
-            left: l_boxes,
-            right: r_boxes,
-        }) = split
-        else {
-            self.nodes[here] = node(&boxes.bounds, first, items.len());
-            return;
+        let Some(Split { mid, left, right }) = split else {
+            return Child::Leaf {
+                first,
+                count: items.len(),
+            };
         };
-        let left = self.nodes.len();
-        self.nodes.extend([LEAF_PLACEHOLDER; 2]);
-        self.nodes[here] = node(&boxes.bounds, left, 0);
+        let here = self.nodes.len();
+        self.nodes.push(Node::new(
+            [(Vec3::ZERO, Vec3::ZERO); 2],
+            [Child::Node(0); 2],
+        ));
         let (l, r) = items.split_at_mut(mid);
-        self.subtree(left, l, first, depth + 1, l_boxes);
-        self.subtree(left + 1, r, first + mid, depth + 1, r_boxes);
+        let children = [
+            self.subtree(l, first, depth + 1, left),
+            self.subtree(r, first + mid, depth + 1, right),
+        ];
+        let corners = |b: &Boxes| (Vec3::from(b.bounds.min), Vec3::from(b.bounds.max));
+        self.nodes[here] = Node::new([corners(&left), corners(&right)], children);
+        Child::Node(here)
     }
     // ANCHOR_END: build
 
@@ -174,18 +179,6 @@ impl Builder {
             right: Boxes::of(right),
         })
     }
-}
-
-/// A node with `bounds`; `count` primitives from `first` (a leaf), or children at
-/// `first` and `first + 1` when `count` is 0. The counts fit in u32: the build takes
-/// at most u32::MAX objects into the tree.
-fn node(bounds: &Bounds, first: usize, count: usize) -> Node {
-    Node::new(
-        Vec3::from(bounds.min),
-        Vec3::from(bounds.max),
-        first as u32,
-        count as u32,
-    )
 }
 
 /// The object median: the items sorted by centroid along the centroids' longest axis

@@ -3,8 +3,8 @@
 //! instead of every one (lesson 11, where a measured chart shows when it pays).
 //!
 //! - [`build`]: binned surface area heuristic (MacDonald and Booth 1990; binning after
-//!   Wald 2007), into a flat array of 32-byte nodes whose two children sit side by
-//!   side.
+//!   Wald 2007), into a flat array of 64-byte interior nodes, each holding its two
+//!   children's boxes.
 //! - [`traverse`]: an iterative walk with a small fixed stack; at each interior node
 //!   both children's boxes are tested and the nearer one visited first, with the
 //!   conservative slab test of Ize 2013 on the node boxes (STABILITY S6) and the
@@ -22,83 +22,126 @@ use crate::shapes::{Aabb, Candidate, PreparedRay, Shape, Triangle};
 
 pub mod build;
 mod sah;
+mod slab;
 pub mod traverse;
 
 /// The most levels a tree may have, root included; also the size of the traversal
 /// stack, which never holds more entries than the tree is deep.
 pub const MAX_DEPTH: usize = 64;
 
-/// What a node holds besides its box.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum NodeKind {
-    /// Primitives `primitives[first..first + count]` of the [`Bvh`].
+/// What a child of a node is (or the root): a leaf of `count` primitives,
+/// `primitives[first..first + count]` of the [`Bvh`], or the interior node
+/// `nodes()[index]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Child {
+    /// Primitives `primitives[first..first + count]`, `count > 0`.
     Leaf { first: usize, count: usize },
-    /// Two children, side by side: nodes `left` and `left + 1`.
-    Interior { left: usize },
+    /// The interior node `nodes()[index]`.
+    Node(usize),
 }
 
 // ANCHOR: node
-/// One node of the flattened tree, 32 bytes: a box and two counts. A leaf has
-/// `count > 0` primitives from `first` on; an interior node has `count == 0` and its
-/// children at `first` and `first + 1`, so one cache line holds both their boxes.
+/// An interior node of the flattened tree, 64 bytes (one cache line): its two
+/// children's boxes and what each child is. A node keeps its children's boxes, not
+/// its own (the layout of Aila and Laine 2009, "Understanding the Efficiency of Ray
+/// Traversal on GPUs"): the walk tests both boxes from the one node it has loaded,
+/// and knows whether a child it enters is a leaf without loading anything else.
 ///
-/// Stored as two 4-wide vectors, (min, first) and (max, count), the counts' bits in
-/// the fourth lanes: the traversal loads each corner with one aligned SIMD load
-/// (Embree and tinybvh pack their nodes the same way).
+/// The boxes are stored axis by axis, each axis a 4-wide vector of four plane
+/// positions: (min of child 0, min of child 1, max of child 0, max of child 1). The
+/// slab test of both children is then a few SIMD operations per axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
 pub struct Node {
-    min_first: Vec4,
-    max_count: Vec4,
+    x: Vec4,
+    y: Vec4,
+    z: Vec4,
+    /// Per child: its first primitive (a leaf) or its node's index (interior).
+    first: [u32; 2],
+    /// Per child: its number of primitives; 0 for an interior node.
+    count: [u32; 2],
 }
 // ANCHOR_END: node
 
 impl Node {
-    /// A node with box `min..max`: a leaf of `count > 0` primitives from `first`, or
-    /// an interior node (`count == 0`) with children `first` and `first + 1`.
-    pub(crate) fn new(min: Vec3, max: Vec3, first: u32, count: u32) -> Node {
+    /// A node whose children have boxes `bounds[i]` (min, max) and are
+    /// `children[i]`. Counts and indices fit in u32: the build takes at most
+    /// u32::MAX objects into the tree.
+    pub(crate) fn new(bounds: [(Vec3, Vec3); 2], children: [Child; 2]) -> Node {
+        let [(min0, max0), (min1, max1)] = bounds;
+        let planes = |a: usize| Vec4::new(min0[a], min1[a], max0[a], max1[a]);
+        let [(f0, c0), (f1, c1)] = children.map(first_count);
         Node {
-            min_first: min.extend(f32::from_bits(first)),
-            max_count: max.extend(f32::from_bits(count)),
+            x: planes(0),
+            y: planes(1),
+            z: planes(2),
+            first: [f0, f1],
+            count: [c0, c1],
         }
     }
 
-    /// The box's corners as 4-wide vectors (the fourth lane unused).
+    /// The planes of both children's boxes along x, y and z, each as (min of child
+    /// 0, min of child 1, max of child 0, max of child 1).
     #[inline(always)]
-    pub(crate) fn corners(&self) -> (Vec3A, Vec3A) {
+    pub(crate) fn planes(&self) -> [Vec4; 3] {
+        [self.x, self.y, self.z]
+    }
+
+    /// Child `i`'s (0 or 1) box corners as 4-wide vectors (the fourth lane 0).
+    pub(crate) fn corners(&self, i: usize) -> (Vec3A, Vec3A) {
+        let [x, y, z] = self.planes();
         (
-            Vec3A::from_vec4(self.min_first),
-            Vec3A::from_vec4(self.max_count),
+            Vec3A::new(x[i], y[i], z[i]),
+            Vec3A::new(x[2 + i], y[2 + i], z[2 + i]),
         )
     }
 
-    /// The first primitive (a leaf) or the left child (an interior node).
+    /// Child `i`'s first primitive or node, and its count (0 for a node), as the
+    /// walk carries them.
     #[inline(always)]
-    pub(crate) fn first(&self) -> u32 {
-        self.min_first.w.to_bits()
+    pub(crate) fn first_count(&self, i: usize) -> (u32, u32) {
+        (self.first[i], self.count[i])
     }
 
-    /// The number of primitives; 0 for an interior node.
-    #[inline(always)]
-    pub(crate) fn count(&self) -> u32 {
-        self.max_count.w.to_bits()
+    /// Child `i` (0 or 1): its box, and whether it is a leaf or a node.
+    pub fn child(&self, i: usize) -> (Aabb, Child) {
+        let (min, max) = self.corners(i);
+        let (first, count) = self.first_count(i);
+        (
+            Aabb::from_checked(min.into(), max.into()),
+            child(first, count),
+        )
     }
+}
 
-    /// The box around every primitive below this node.
-    pub fn bounds(&self) -> Aabb {
-        Aabb::from_checked(self.min_first.truncate(), self.max_count.truncate())
+/// A child as a [`Node`] stores it: (first primitive, count) for a leaf, (node
+/// index, 0) for an interior node.
+pub(crate) fn first_count(child: Child) -> (u32, u32) {
+    match child {
+        Child::Leaf { first, count } => (first as u32, count as u32),
+        Child::Node(index) => (index as u32, 0),
     }
+}
 
-    /// Leaf or interior.
-    pub fn kind(&self) -> NodeKind {
-        let first = self.first() as usize;
-        match self.count() {
-            0 => NodeKind::Interior { left: first },
-            count => NodeKind::Leaf {
-                first,
-                count: count as usize,
-            },
-        }
+/// The child of `first` and `count`, as [`Node`] stores it.
+fn child(first: u32, count: u32) -> Child {
+    match count {
+        0 => Child::Node(first as usize),
+        count => Child::Leaf {
+            first: first as usize,
+            count: count as usize,
+        },
     }
+}
+
+/// The root of a tree: the box around every bounded object, and what the root is
+/// (as a [`Node`] stores a child).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Root {
+    pub(crate) min: Vec3A,
+    pub(crate) max: Vec3A,
+    pub(crate) first: u32,
+    pub(crate) count: u32,
 }
 
 /// The tree's own copy of the bounded shapes, in leaf order: triangles alone when
@@ -112,16 +155,17 @@ pub(crate) enum LeafShapes {
 }
 
 impl LeafShapes {
-    /// `shapes` as triangles if every one is (copied once, not as shapes first).
-    pub(crate) fn new<'a>(shapes: impl Iterator<Item = &'a Shape> + Clone) -> LeafShapes {
-        let triangle = |s: &Shape| match s {
-            Shape::Triangle(t) => Some(*t),
-            _ => None,
-        };
-        match shapes.clone().map(triangle).collect::<Option<Vec<_>>>() {
-            Some(triangles) => LeafShapes::Triangles(triangles),
-            None => LeafShapes::Shapes(shapes.cloned().collect()),
+    /// `shapes` as triangles if every one is (copied once, not as shapes first, into
+    /// a vector made at its full size).
+    pub(crate) fn new<'a>(shapes: impl ExactSizeIterator<Item = &'a Shape> + Clone) -> LeafShapes {
+        let mut triangles = Vec::with_capacity(shapes.len());
+        for shape in shapes.clone() {
+            match shape {
+                Shape::Triangle(t) => triangles.push(*t),
+                _ => return LeafShapes::Shapes(shapes.cloned().collect()),
+            }
         }
+        LeafShapes::Triangles(triangles)
     }
 
     /// Primitive `p`'s candidate within `range` ([`Shape::candidate`]).
@@ -145,7 +189,9 @@ impl LeafShapes {
 /// must be used with the slice it was built from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bvh {
-    /// The tree, root first. Empty if no object has a box.
+    /// The root's box and what it is; `None` if no object has a box.
+    root: Option<Root>,
+    /// The interior nodes, the root first if it is one. Empty if the root is a leaf.
     nodes: Vec<Node>,
     /// Object indices, each leaf's contiguous.
     primitives: Vec<usize>,
@@ -156,9 +202,27 @@ pub struct Bvh {
 }
 
 impl Bvh {
-    /// The nodes, root first (empty if no object has a box).
+    /// The root's box and what it is (a leaf, or node 0); `None` if no object has a
+    /// box.
+    pub fn root(&self) -> Option<(Aabb, Child)> {
+        let r = self.root?;
+        let bounds = Aabb::from_checked(r.min.into(), r.max.into());
+        Some((bounds, child(r.first, r.count)))
+    }
+
+    /// The interior nodes, the root first if it is one (empty if the root is a leaf
+    /// or there is no tree).
     pub fn nodes(&self) -> &[Node] {
         &self.nodes
+    }
+
+    /// How many nodes the tree has, leaves included: each interior node has two
+    /// children, so one more leaf than interior nodes.
+    pub fn node_count(&self) -> usize {
+        match self.root {
+            None => 0,
+            Some(_) => 2 * self.nodes.len() + 1,
+        }
     }
 
     /// The object indices the leaves refer to.

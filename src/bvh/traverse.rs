@@ -8,15 +8,14 @@
 //! again (the ordered traversal of Wald et al., "Interactive Rendering with Coherent
 //! Ray Tracing", 2001, as pbrt-v4 and Embree do it).
 //!
-//! The node boxes are tested with the conservative slab test, whose exits are
-//! widened by 1 + 2 gamma(3) (Ize 2013, "Robust BVH Ray Traversal", as in pbrt-v4):
-//! rounding cannot make a box miss a point of a primitive inside it, so the tree
-//! never loses a hit the plain list would find (STABILITY S6). The ray's 1/d and
-//! which of each box's two corners it meets first are worked out once per ray.
+//! The node boxes are tested by the conservative slab test of `src/bvh/slab.rs`
+//! (STABILITY S6), both children of a node at once, with the ray's 1/d worked out
+//! once per ray.
 
 use glam::Vec3A;
 
-use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH, Node};
+use crate::bvh::slab::{BoxRay, both_entries, box_entry, moved_out};
+use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH};
 use crate::float::gamma;
 use crate::ray::{Interval, Ray};
 use crate::scene::{Object, SceneHit};
@@ -112,91 +111,6 @@ fn widened(t: f32) -> f32 {
     moved_out(t, TIE_MARGIN)
 }
 
-/// `t` moved up by `margin` of its size: t (1 + margin) if t > 0, t (1 - margin),
-/// towards 0, if t < 0. One sum and no branch, where a product would need the sign
-/// to choose its factor.
-#[inline(always)]
-fn moved_out(t: f32, margin: f32) -> f32 {
-    t + t.abs() * margin
-}
-
-/// How far a slab's far end is moved out, relative to itself: pbrt-v4's factor
-/// 1 + 2 gamma(3), written as [`moved_out`] so that a negative end moves towards 0.
-/// Rounded, the sum is never below the product it stands for, t (1 + 2 gamma(3))
-/// or t (1 - 2 gamma(3)) rounded (the test `far_end_moves_at_least_as_far_as_the_product`).
-const FAR_MARGIN: f32 = 2.0 * gamma(3);
-
-// ANCHOR: box_entry
-/// The ray as the node boxes see it: the origin and 1/d as 4-wide vectors (one
-/// lane unused), computed once per ray, and whether 1/d is finite on every axis.
-struct BoxRay {
-    origin: Vec3A,
-    inv_d: Vec3A,
-    finite: bool,
-}
-
-impl BoxRay {
-    fn new(ray: &PreparedRay) -> BoxRay {
-        let inv_d = Vec3A::from(ray.inv_d);
-        BoxRay {
-            origin: Vec3A::from(ray.ray().origin()),
-            inv_d,
-            finite: inv_d.is_finite(),
-        }
-    }
-}
-
-/// The conservative slab test of a node's box, as the walk needs it: the entry
-/// distance if the ray passes through the box within `t_min..t_max`.
-///
-/// All three axes at once: t = (plane - o) * (1/d) for both planes of each axis,
-/// the nearer of the two per axis is where the ray enters that slab, the farther
-/// where it leaves; the box is entered at the last entry and left at the first
-/// exit. That exit is moved out by 1 + 2 gamma(3) (a negative one towards 0 by as
-/// much) so that rounding cannot lose a hit.
-///
-/// With 1/d finite nothing here can be NaN. A ray parallel to an axis (1/d
-/// infinite) that lies exactly in a face plane gives 0 * inf = NaN on that axis;
-/// [`box_entry_careful`] replaces it so that the axis constrains nothing, as in
-/// [`Aabb::slab`](crate::shapes::Aabb::slab), on every CPU.
-#[inline(always)]
-fn box_entry(node: &Node, ray: &BoxRay, range: Interval) -> Option<f32> {
-    if !ray.finite {
-        return box_entry_careful(node, ray, range);
-    }
-    let (min, max) = node.corners();
-    let lo = (min - ray.origin) * ray.inv_d;
-    let hi = (max - ray.origin) * ray.inv_d;
-    let (near, far) = (lo.min(hi), lo.max(hi));
-    enter(near.max_element(), far.min_element(), range)
-}
-
-/// [`box_entry`] for a ray with an infinite 1/d: each NaN becomes -inf (an entry)
-/// or +inf (an exit).
-#[inline(never)]
-fn box_entry_careful(node: &Node, ray: &BoxRay, range: Interval) -> Option<f32> {
-    let (min, max) = node.corners();
-    let lo = (min - ray.origin) * ray.inv_d;
-    let hi = (max - ray.origin) * ray.inv_d;
-    let negative = ray.inv_d.cmplt(Vec3A::ZERO);
-    let near = Vec3A::select(negative, hi, lo);
-    let far = Vec3A::select(negative, lo, hi);
-    let near = Vec3A::select(near.is_nan_mask(), Vec3A::NEG_INFINITY, near);
-    let far = Vec3A::select(far.is_nan_mask(), Vec3A::INFINITY, far);
-    enter(near.max_element(), far.min_element(), range)
-}
-
-/// The entry into the box whose slabs are entered by `near` and left by `far`
-/// (neither NaN), within `t_min..t_max`, with the exit widened.
-#[inline(always)]
-fn enter(near: f32, far: f32, range: Interval) -> Option<f32> {
-    let far = moved_out(far, FAR_MARGIN);
-    let t0 = if near > range.min { near } else { range.min };
-    let t1 = if far < range.max { far } else { range.max };
-    (t0 <= t1).then_some(t0)
-}
-// ANCHOR_END: box_entry
-
 impl Bvh {
     /// The nearest hit within `range` among `objects` (the slice the tree was built
     /// over) and its index: the unbounded objects first, then the tree,
@@ -224,17 +138,17 @@ impl Bvh {
     /// root's box. Tested with 1/d alone, before the rest of the ray's set-up (the
     /// watertight test's shear costs two more divisions) is made for nothing.
     fn misses_everything(&self, ray: &Ray, range: Interval) -> bool {
-        let Some(root) = self.nodes.first() else {
+        let Some(root) = &self.root else {
             return self.unbounded.is_empty();
         };
-        let inv_d = Vec3A::from(ray.direction().recip());
-        let box_ray = BoxRay {
-            origin: Vec3A::from(ray.origin()),
-            inv_d,
-            finite: inv_d.is_finite(),
-        };
+        let box_ray = BoxRay::from(ray.origin().into(), Vec3A::from(ray.direction()).recip());
         self.unbounded.is_empty()
-            && box_entry(root, &box_ray, range.up_to(widened(range.max))).is_none()
+            && box_entry(
+                (root.min, root.max),
+                &box_ray,
+                range.up_to(widened(range.max)),
+            )
+            .is_none()
     }
 
     /// The closest candidate and its object, as [`Bvh::closest`] finds them.
@@ -309,91 +223,54 @@ impl Bvh {
         range: Interval,
         mut leaf: impl FnMut(std::ops::Range<usize>) -> Walk,
     ) {
-        let Some(root) = self.nodes.first() else {
+        let Some(root) = &self.root else {
             return;
         };
         let box_ray = BoxRay::new(ray);
         let mut range = range;
-        if box_entry(root, &box_ray, range).is_none() {
+        if box_entry((root.min, root.max), &box_ray, range).is_none() {
             return;
         }
-        let mut stack = [(0u32, 0.0f32); MAX_DEPTH];
+        let mut stack = [(0u32, 0u32, 0.0f32); MAX_DEPTH];
         let mut pending = 0;
-        let mut node = 0;
+        let (mut first, mut count) = (root.first, root.count);
         loop {
-            let here = &self.nodes[node];
-            let mut next = None;
-            if here.count() > 0 {
-                let first = here.first() as usize;
-                match leaf(first..first + here.count() as usize) {
+            if count > 0 {
+                let first = first as usize;
+                match leaf(first..first + count as usize) {
                     Walk::Continue { t_max: t } => range.max = t,
                     Walk::Stop => return,
                 }
             } else {
-                let left = here.first() as usize;
-                let children = &self.nodes[left..left + 2];
-                let hit = |i: usize| box_entry(&children[i], &box_ray, range);
-                next = match (hit(0), hit(1)) {
-                    (Some(a), Some(b)) => {
-                        let (near, far, t_far) = if a <= b {
-                            (left, left + 1, b)
-                        } else {
-                            (left + 1, left, a)
-                        };
-                        stack[pending] = (far as u32, t_far);
+                let node = &self.nodes[first as usize];
+                let next = match both_entries(node, &box_ray, range) {
+                    [Some(a), Some(b)] => {
+                        let (near, far, t_far) = if a <= b { (0, 1, b) } else { (1, 0, a) };
+                        let (f, c) = node.first_count(far);
+                        stack[pending] = (f, c, t_far);
                         pending += 1;
                         Some(near)
                     }
-                    (Some(_), None) => Some(left),
-                    (None, Some(_)) => Some(left + 1),
-                    (None, None) => None,
+                    [Some(_), None] => Some(0),
+                    [None, Some(_)] => Some(1),
+                    [None, None] => None,
                 };
+                if let Some(i) = next {
+                    (first, count) = node.first_count(i);
+                    continue;
+                }
             }
-            node = match next {
-                Some(n) => n,
-                None => loop {
-                    if pending == 0 {
-                        return;
-                    }
-                    pending -= 1;
-                    let (n, t_entry) = stack[pending];
-                    if t_entry <= range.max {
-                        break n as usize;
-                    }
-                },
+            (first, count) = loop {
+                if pending == 0 {
+                    return;
+                }
+                pending -= 1;
+                let (f, c, t_entry) = stack[pending];
+                if t_entry <= range.max {
+                    break (f, c);
+                }
             };
         }
     }
     // ANCHOR_END: traverse
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The sum `moved_out(t, FAR_MARGIN)` against the products it replaced, over
-    /// floats of every exponent from 1e-30 to 1e30, both signs, and their
-    /// neighbours: never lower, so the box test loses no hit it used to find.
-    #[test]
-    fn far_end_moves_at_least_as_far_as_the_product() {
-        let (up, down) = (1.0 + 2.0 * gamma(3), 1.0 - 2.0 * gamma(3));
-        let mut t = 1e-30f32;
-        let mut checked = 0;
-        while t < 1e30 {
-            for x in [
-                t,
-                -t,
-                t.next_up(),
-                -t.next_up(),
-                t.next_down(),
-                -t.next_down(),
-            ] {
-                let product = if x > 0.0 { x * up } else { x * down };
-                assert!(moved_out(x, FAR_MARGIN) >= product, "{x:e}");
-                checked += 1;
-            }
-            t *= 1.000_013;
-        }
-        assert!(checked > 1_000_000, "{checked}");
-    }
 }

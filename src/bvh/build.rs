@@ -20,7 +20,7 @@ use glam::Vec3;
 
 pub use super::sah::{ALL_AXES_ABOVE, BINS, MAX_LEAF_SIZE, TRAVERSAL_COST, split_cost};
 use super::sah::{Bounds, Boxes, Item, Split, sah_split};
-use crate::bvh::{Bvh, Child, LeafShapes, MAX_DEPTH, Node, Root, first_count};
+use crate::bvh::{Bvh, Child, LeafShapes, MAX_DEPTH, Node, Root};
 use crate::scene::Object;
 use crate::shapes::Aabb;
 
@@ -67,7 +67,7 @@ impl Bvh {
         };
         let root = (!items.is_empty()).then(|| {
             let boxes = Boxes::of(&items);
-            let (first, count) = first_count(builder.subtree(&mut items, 0, 0, boxes));
+            let (first, count) = builder.subtree(&mut items, 0, 0, boxes).packed();
             Root {
                 min: boxes.bounds.min,
                 max: boxes.bounds.max,

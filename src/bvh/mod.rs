@@ -70,7 +70,7 @@ impl Node {
     pub(crate) fn new(bounds: [(Vec3, Vec3); 2], children: [Child; 2]) -> Node {
         let [(min0, max0), (min1, max1)] = bounds;
         let planes = |a: usize| Vec4::new(min0[a], min1[a], max0[a], max1[a]);
-        let [(f0, c0), (f1, c1)] = children.map(first_count);
+        let [(f0, c0), (f1, c1)] = children.map(Child::packed);
         Node {
             x: planes(0),
             y: planes(1),
@@ -96,41 +96,43 @@ impl Node {
         )
     }
 
-    /// Child `i`'s first primitive or node, and its count (0 for a node), as the
-    /// walk carries them.
+    /// Child `i` packed as (first, count) ([`Child::packed`]), as the walk carries
+    /// it.
     #[inline(always)]
-    pub(crate) fn first_count(&self, i: usize) -> (u32, u32) {
+    pub(crate) fn packed(&self, i: usize) -> (u32, u32) {
         (self.first[i], self.count[i])
     }
 
     /// Child `i` (0 or 1): its box, and whether it is a leaf or a node.
     pub fn child(&self, i: usize) -> (Aabb, Child) {
         let (min, max) = self.corners(i);
-        let (first, count) = self.first_count(i);
+        let (first, count) = self.packed(i);
         (
             Aabb::from_checked(min.into(), max.into()),
-            child(first, count),
+            Child::unpacked(first, count),
         )
     }
 }
 
-/// A child as a [`Node`] stores it: (first primitive, count) for a leaf, (node
-/// index, 0) for an interior node.
-pub(crate) fn first_count(child: Child) -> (u32, u32) {
-    match child {
-        Child::Leaf { first, count } => (first as u32, count as u32),
-        Child::Node(index) => (index as u32, 0),
+impl Child {
+    /// The child as a [`Node`] stores it, (first, count): (first primitive, count)
+    /// for a leaf, (node index, 0) for an interior node.
+    pub(crate) fn packed(self) -> (u32, u32) {
+        match self {
+            Child::Leaf { first, count } => (first as u32, count as u32),
+            Child::Node(index) => (index as u32, 0),
+        }
     }
-}
 
-/// The child of `first` and `count`, as [`Node`] stores it.
-fn child(first: u32, count: u32) -> Child {
-    match count {
-        0 => Child::Node(first as usize),
-        count => Child::Leaf {
-            first: first as usize,
-            count: count as usize,
-        },
+    /// The child that [`Child::packed`] gave as (first, count).
+    fn unpacked(first: u32, count: u32) -> Child {
+        match count {
+            0 => Child::Node(first as usize),
+            count => Child::Leaf {
+                first: first as usize,
+                count: count as usize,
+            },
+        }
     }
 }
 
@@ -207,7 +209,7 @@ impl Bvh {
     pub fn root(&self) -> Option<(Aabb, Child)> {
         let r = self.root?;
         let bounds = Aabb::from_checked(r.min.into(), r.max.into());
-        Some((bounds, child(r.first, r.count)))
+        Some((bounds, Child::unpacked(r.first, r.count)))
     }
 
     /// The interior nodes, the root first if it is one (empty if the root is a leaf

@@ -214,9 +214,11 @@ impl Bvh {
     /// [`Bvh::primitives`]) to `leaf`, which answers with the far end to use from
     /// then on, or [`Walk::Stop`].
     ///
-    /// `node` is the node being visited, its box already known to be hit; `stack`
-    /// holds the farther children still to visit, each with its entry distance. A
-    /// pushed child whose entry now lies beyond `t_max` is dropped when popped.
+    /// `(first, count)` is the child being visited, packed as a node stores it (a
+    /// leaf if `count > 0`, else node `first`), its box already known to be hit;
+    /// `stack` holds the farther children still to visit, packed the same way, each
+    /// with its entry distance. A pushed child whose entry now lies beyond `t_max` is
+    /// dropped when popped.
     fn walk(
         &self,
         ray: &PreparedRay,
@@ -246,7 +248,7 @@ impl Bvh {
                 let next = match both_entries(node, &box_ray, range) {
                     [Some(a), Some(b)] => {
                         let (near, far, t_far) = if a <= b { (0, 1, b) } else { (1, 0, a) };
-                        let (f, c) = node.first_count(far);
+                        let (f, c) = node.packed(far);
                         stack[pending] = (f, c, t_far);
                         pending += 1;
                         Some(near)
@@ -256,7 +258,7 @@ impl Bvh {
                     [None, None] => None,
                 };
                 if let Some(i) = next {
-                    (first, count) = node.first_count(i);
+                    (first, count) = node.packed(i);
                     continue;
                 }
             }

@@ -42,10 +42,12 @@ pub(super) struct BoxRay {
 
 impl BoxRay {
     pub(super) fn new(ray: &PreparedRay) -> BoxRay {
-        BoxRay::from(ray.ray().origin().into(), ray.inv_d.into())
+        BoxRay::with_inv_d(ray.ray().origin().into(), ray.inv_d.into())
     }
 
-    pub(super) fn from(origin: Vec3A, inv_d: Vec3A) -> BoxRay {
+    /// The ray from `origin` whose direction has the reciprocal `inv_d` (for a test
+    /// that has 1/d before it has the rest of a [`PreparedRay`]).
+    pub(super) fn with_inv_d(origin: Vec3A, inv_d: Vec3A) -> BoxRay {
         let axis = |a: usize| (Vec4::splat(origin[a]), Vec4::splat(inv_d[a]));
         BoxRay {
             origin,

@@ -141,7 +141,7 @@ impl Bvh {
         let Some(root) = &self.root else {
             return self.unbounded.is_empty();
         };
-        let box_ray = BoxRay::from(ray.origin().into(), Vec3A::from(ray.direction()).recip());
+        let box_ray = BoxRay::with_inv_d(ray.origin().into(), Vec3A::from(ray.direction()).recip());
         self.unbounded.is_empty()
             && box_entry(
                 (root.min, root.max),

@@ -13,11 +13,11 @@
 //!
 //! 1. `error`, `float`: the one typed error, naming the parameter at fault, and the
 //!    floating-point tools (rounding-error bounds);
-//! 2. `limits`, `transform`, `ray`, `basis`, `sampling`, `spawn`, `material`, `files`,
-//!    `progress`: what the machine can give, the maths of Lectures 3 and 4 (and where
-//!    a spawned ray starts), writing files whole, progress bars;
-//! 3. `quadratic`: the roots of a t^2 + b t + c = 0, shared by the sphere and the
-//!    quadrics;
+//! 2. `limits`, `transform`, `ray`, `basis`, `sampling`, `material`, `files`,
+//!    `progress`: what the machine can give, the maths of Lectures 3 and 4, writing
+//!    files whole, progress bars;
+//! 3. `quadratic`, `spawn`: the roots of a t^2 + b t + c = 0, shared by the sphere
+//!    and the quadrics; where a spawned ray starts, and where a shadow ray ends;
 //! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
 //! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
 //!    image in memory;

@@ -5,7 +5,7 @@ use glam::Vec3;
 use crate::lighting;
 use crate::ray::{Interval, Ray};
 use crate::scene::Intersect;
-use crate::spawn::Offset;
+use crate::spawn::{Offset, Start};
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive
@@ -28,10 +28,9 @@ pub fn lit(scene: &impl Intersect, ray: &Ray, offset: Offset) -> Vec3 {
     };
     let hit = found.hit;
     lighting::at_hit(scene.scene(), &hit, scene.object(&found), |light| {
-        let (origin, t_min) = offset.start(hit.point, hit.error, hit.facing());
-        let distance = (light.position - hit.point).length();
-        Ray::new(origin, light.position - origin)
-            .is_ok_and(|r| !scene.occluded(&r, Interval::new(t_min, distance)))
+        let from = offset.start(hit.point, hit.error, hit.facing());
+        from.ray_to(Start::at(light.position))
+            .is_some_and(|shadow| !scene.occluded(&shadow.ray, shadow.range))
     })
 }
 // ANCHOR_END: lambert

@@ -16,7 +16,7 @@ use render_lessons::sampling::{cosine_hemisphere, grid};
 use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
 use render_lessons::scenes::{still_life, still_life_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
-use render_lessons::spawn::{Offset, offset_ray_origin};
+use render_lessons::spawn::{Offset, Start, offset_ray_origin};
 
 /// The lesson's defaults: the book's size, the fixed epsilon and the far shift.
 const BOOK: (u32, u32) = (480, 270);
@@ -167,7 +167,10 @@ fn self_hits(x: f32, offset: Offset) -> (u32, u32) {
         };
         let frame = Basis::around(hit.normal);
         for u in grid(16) {
-            let (start, t_min) = offset.start(hit.point, hit.error, hit.normal);
+            let Start {
+                point: start,
+                t_min,
+            } = offset.start(hit.point, hit.error, hit.normal);
             let bounce = Ray::new(start, frame.to_world(cosine_hemisphere(u))).unwrap();
             total += 1;
             if sphere
@@ -214,7 +217,10 @@ fn s14_a_thin_gap_still_casts_a_shadow() {
         )
         .unwrap();
     let blocked = |offset: Offset| {
-        let (start, t_min) = offset.start(hit.point, hit.error, Vec3::Y);
+        let Start {
+            point: start,
+            t_min,
+        } = offset.start(hit.point, hit.error, Vec3::Y);
         let shadow_ray = Ray::new(start, Vec3::Y).unwrap();
         occluder
             .hit(&shadow_ray, Interval::new(t_min, 10.0))

@@ -18,7 +18,7 @@ use render_lessons::scenes::path_tracing::look_camera;
 use render_lessons::shapes::{
     Aabb, Cylinder, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
 };
-use render_lessons::spawn::Offset;
+use render_lessons::spawn::{Offset, Start};
 use render_lessons::transform::Transform;
 
 /// The camera distances of the issue: 10, 300, 1e4 and 1e6 radii.
@@ -98,7 +98,10 @@ fn spawn(shape: &Shape, ray: &Ray, hit: &Hit, how: How, spawned: u32, rng: &mut 
         } else {
             -hit.normal
         };
-        let (start, t_min) = how.offset.start(point, hit.error, side);
+        let Start {
+            point: start,
+            t_min,
+        } = how.offset.start(point, hit.error, side);
         let Ok(out) = Ray::new(start, w) else {
             continue;
         };
@@ -162,7 +165,10 @@ fn far_sphere_is_never_re_hit_from_near_or_far() {
             let origin = camera(d) + Vec3::splat(i as f32 * 1e-3);
             let ray = Ray::new(origin, target - origin).unwrap();
             let hit = sphere.hit(&ray, Interval::AHEAD).unwrap();
-            let (start, t_min) = Offset::ErrorBound.start(hit.point, hit.error, hit.normal);
+            let Start {
+                point: start,
+                t_min,
+            } = Offset::ErrorBound.start(hit.point, hit.error, hit.normal);
             for k in 0..16 {
                 let w = uniform_sphere(Vec2::new((k as f32 + 0.5) / 16.0, 0.37));
                 let w = if w.dot(hit.normal) < 0.0 { -w } else { w };

@@ -18,7 +18,7 @@ use crate::lighting::AMBIENT;
 use crate::ray::{Interval, Ray};
 use crate::scene::{PointLight, Scene, SceneHit};
 use crate::shapes::Shape;
-use crate::spawn::Offset;
+use crate::spawn::{Offset, Start};
 use crate::transform::Transform;
 
 /// The signature of coding exercise 1.2, `compose(first, second)`.
@@ -147,10 +147,10 @@ pub fn lit_with(scene: &Scene, ray: &Ray, lambert: Lambert) -> Vec3 {
     let Some(light) = scene.point_light() else {
         return colour * AMBIENT;
     };
-    let (origin, t_min) = Offset::Scaled.start(hit.point, hit.error, hit.facing());
-    let distance = (light.position - hit.point).length();
-    let visible = Ray::new(origin, light.position - origin)
-        .is_ok_and(|r| !scene.occluded(&r, Interval::new(t_min, distance)));
+    let from = Offset::Scaled.start(hit.point, hit.error, hit.facing());
+    let visible = from
+        .ray_to(Start::at(light.position))
+        .is_some_and(|shadow| !scene.occluded(&shadow.ray, shadow.range));
     lambert(hit.point, hit.facing(), colour, &light, visible)
 }
 

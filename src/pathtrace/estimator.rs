@@ -26,7 +26,7 @@ use crate::basis::Basis;
 use crate::material::Material;
 use crate::pathtrace::light::LightShape;
 use crate::pathtrace::mis::power_heuristic;
-use crate::pathtrace::next_event::{Start, direct_light};
+use crate::pathtrace::next_event::direct_light;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
@@ -36,6 +36,7 @@ use crate::sampling::{
 };
 use crate::scene::Intersect;
 use crate::shapes::Hit;
+use crate::spawn::Start;
 
 /// How the emission found at the next vertex is weighted, decided by the bounce
 /// that leads there.
@@ -232,7 +233,11 @@ fn scatter(
     let facing = hit.facing();
     match material {
         Material::Diffuse { albedo } => {
-            let start = Start::new(hit.point, hit.error, facing, s.offset);
+            // The light sample and the bounce leave from the same moved point, so that
+            // both find a light point with the same density, as the MIS weights need
+            // (from the hit point itself, grazing rays inside a sphere disagree enough
+            // to bias the interior furnace).
+            let start = s.offset.start(hit.point, hit.error, facing);
             let sample = direct_light(scene, start, facing, albedo, rng, s);
             let (direction, weight, pdf) = diffuse_bounce(facing, albedo, rng, s);
             Some(Bounce {
@@ -251,7 +256,7 @@ fn scatter(
             Some(Bounce {
                 direct: Vec3::ZERO,
                 light_sample: None,
-                start: Start::new(hit.point, hit.error, side, s.offset),
+                start: s.offset.start(hit.point, hit.error, side),
                 direction: next.direction,
                 weight: next.weight,
                 previous: Previous::Full,

@@ -9,31 +9,9 @@ use crate::pathtrace::light::{LightPoint, LightShape};
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::{Sampling, Settings};
-use crate::ray::{Interval, Ray};
 use crate::sampling::cosine_hemisphere_pdf;
 use crate::scene::Intersect;
-use crate::spawn::Offset;
-
-/// Where the rays leaving a diffuse vertex start (the hit point moved off the
-/// surface by the offset) and the t they must exceed. Light samples are drawn from
-/// this point too, so that a light sample and a BRDF sample that find the same point
-/// of a light agree on its density, which the MIS weights need: measured from the hit
-/// point itself, grazing rays inside a sphere disagree enough to bias the interior
-/// furnace by 2e-5.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Start {
-    pub(super) point: Vec3,
-    pub(super) t_min: f32,
-}
-
-impl Start {
-    /// Rays leaving the hit point `p` (with its error bound `error`) on the side of
-    /// the unit normal `n`.
-    pub(super) fn new(p: Vec3, error: Vec3, n: Vec3, offset: Offset) -> Start {
-        let (point, t_min) = offset.start(p, error, n);
-        Start { point, t_min }
-    }
-}
+use crate::spawn::{Offset, Start};
 
 // ANCHOR: direct_light
 /// One light sample of next event estimation: the point aimed at on a light,
@@ -113,9 +91,6 @@ fn unoccluded(
     } else {
         -n_l
     };
-    let (to, t_end) = offset.start(y, light.error, n_l);
-    let gap = to - from.point;
-    let ray = Ray::new(from.point, gap).ok()?;
-    let t_max = gap.length() - t_end;
-    (!scene.occluded(&ray, Interval::new(from.t_min, t_max))).then_some(cos)
+    let shadow = from.ray_to(offset.start(y, light.error, n_l))?;
+    (!scene.occluded(&shadow.ray, shadow.range)).then_some(cos)
 }

@@ -22,7 +22,7 @@ use crate::error::Result;
 use crate::ray::{Interval, Ray};
 use crate::sampling::{cosine_hemisphere, grid};
 use crate::shapes::{Hit, Plane, Sphere};
-use crate::spawn::{Offset, offset_ray_origin};
+use crate::spawn::{Offset, Start, offset_ray_origin};
 
 /// The distances on the chart.
 pub const DISTANCES: [f32; 13] = [
@@ -96,7 +96,10 @@ pub fn self_hit_rate(
             continue;
         };
         let frame = Basis::around(hit.normal);
-        let (start, t_min) = offset.start(start_point(&ray, &hit, offset), hit.error, hit.normal);
+        let Start {
+            point: start,
+            t_min,
+        } = offset.start(start_point(&ray, &hit, offset), hit.error, hit.normal);
         for u in grid(bounces) {
             let bounce = Ray::new(start, frame.to_world(cosine_hemisphere(u)))?;
             total += 1;
@@ -192,7 +195,10 @@ pub fn contact_shadow_blocked(offset: Offset) -> Result<bool> {
     ) else {
         return Ok(false);
     };
-    let (start, t_min) = offset.start(hit.point, hit.error, Vec3::Y);
+    let Start {
+        point: start,
+        t_min,
+    } = offset.start(hit.point, hit.error, Vec3::Y);
     Ok(occluder
         .hit(&Ray::new(start, Vec3::Y)?, Interval::new(t_min, 10.0))
         .is_some())

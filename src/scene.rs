@@ -13,7 +13,7 @@ use glam::Vec3;
 use crate::error::{Error, Result, finite3};
 use crate::material::Material;
 use crate::ray::{Interval, Ray};
-use crate::shapes::{Candidate, Hit, PreparedRay, Shape, ShapesByKind};
+use crate::shapes::{Hit, PreparedRay, Shape, ShapesByKind};
 
 /// One primitive with its material and the radiance L_e it emits.
 ///
@@ -131,8 +131,8 @@ pub struct PointLight {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     objects: Vec<Object>,
-    /// The objects' shapes again, in runs of one kind: the closest-hit loop's fast
-    /// path ([`Scene::closest_fast`]).
+    /// The objects' shapes again, in runs of one kind: what the closest-hit loop
+    /// walks ([`Scene::closest`]).
     by_kind: ShapesByKind,
     emitters: Vec<usize>,
     background: Vec3,
@@ -223,45 +223,27 @@ impl Scene {
     // ANCHOR: closest_hit
     /// The closest crossing in `range` over every primitive, and the object it
     /// belongs to: the inner loop of the lecture's ray casting algorithm, shared by
-    /// every renderer. Each hit found shrinks `range.max`, so later primitives only
-    /// count if nearer; on a tie the first object wins.
+    /// every renderer. Every object is asked in the list's order, and each hit found
+    /// shrinks `range.max`, so later ones only count if nearer; on a tie the first
+    /// object wins.
     ///
-    /// The loop asks each primitive only for its [`Candidate`] (`t` and a few
-    /// numbers); the point and normal are computed once, for the winner.
+    /// The loop runs over the shapes as [`ShapesByKind`] stores them, in runs of one
+    /// kind, so that one test serves a whole run; it asks each primitive only for its
+    /// [`crate::shapes::Candidate`] (`t` and a few numbers), and the point and normal are computed
+    /// once, for the winner.
     pub fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        let prepared = PreparedRay::new(ray);
-        let mut closest: Option<(Candidate, usize)> = None;
-        let mut range = range;
-        for (i, object) in self.objects.iter().enumerate() {
-            if let Some(candidate) = object.shape.candidate(&prepared, range) {
-                range.max = candidate.t;
-                closest = Some((candidate, i));
-            }
-        }
-        let (candidate, object) = closest?;
-        let hit = self.objects[object].shape.record(&prepared, candidate);
-        Some(SceneHit { hit, object })
-    }
-    // ANCHOR_END: closest_hit
-
-    // ANCHOR: closest_fast
-    /// The fast path of [`Scene::closest`], the same hit bit for bit: the same tests
-    /// in the same order, but over the shapes grouped in runs of one kind
-    /// ([`ShapesByKind`]), so that no `match` picks the test for every object. What
-    /// the renderers call, through [`Intersect`].
-    pub fn closest_fast(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
         let prepared = PreparedRay::new(ray);
         let (candidate, object) = self.by_kind.closest(&prepared, range)?;
         let hit = self.objects[object].shape.record(&prepared, candidate);
         Some(SceneHit { hit, object })
     }
 
-    /// The object [`Scene::closest_fast`] finds, without building its hit record:
-    /// all that shadowless ray casting needs.
+    /// The object [`Scene::closest`] finds, without building its hit record: all
+    /// that shadowless ray casting needs.
     pub fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
         self.by_kind.closest_index(&PreparedRay::new(ray), range)
     }
-    // ANCHOR_END: closest_fast
+    // ANCHOR_END: closest_hit
 
     /// True if anything lies on the ray within `range` (a shadow ray's question).
     pub fn occluded(&self, ray: &Ray, range: Interval) -> bool {
@@ -320,15 +302,14 @@ pub trait Intersect: Sync {
 }
 // ANCHOR_END: intersect
 
-/// The plain list: every object tested for every ray, through the fast path
-/// ([`Scene::closest_fast`]).
+/// The plain list: every object tested for every ray ([`Scene::closest`]).
 impl Intersect for Scene {
     fn scene(&self) -> &Scene {
         self
     }
 
     fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        Scene::closest_fast(self, ray, range)
+        Scene::closest(self, ray, range)
     }
 
     fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {

@@ -1,15 +1,12 @@
-//! Lesson 11: every fast path gives what the readable code it stands for gives, bit
-//! for bit (issue 22, "readable first"). The renderers call the fast paths; the book
-//! shows the readable code beside them.
+//! Lesson 11: the closest-hit loop over the shapes stored in runs of one kind
+//! (`Scene::closest`, `ShapesByKind`) finds what asking every shape for `Shape::hit`
+//! in turn finds, bit for bit; `Scene::closest_object` and `Scene::occluded` agree
+//! with it; and lesson 08's shadowless image, made row by row (`render`,
+//! `Camera::row`), is the pixel loop of the lecture (`PinholeCamera::ray`, then the
+//! closest hit) bit for bit.
 //!
-//! - `Scene::closest_fast` (the shapes in runs of one kind, `ShapesByKind`) and
-//!   `Scene::closest_object` against `Scene::closest`, the loop the book shows;
-//! - `Scene::occluded` against every shape asked in turn;
-//! - the whole of lesson 08's shadowless image: `render` with `raycast::shadowless`
-//!   against the readable pixel loop (`PinholeCamera::ray`, `Scene::closest`).
-//!
-//! The camera's fast rays (`Camera::row`, `PinholeCamera::ray_through_fast`) are
-//! checked against `PinholeCamera::ray` in `tests/06_pinhole_camera.rs`.
+//! The camera's row of rays (`Camera::row`) is checked against `PinholeCamera::ray`
+//! in `tests/06_pinhole_camera.rs`.
 
 mod common;
 use common::Rng;
@@ -32,6 +29,20 @@ fn bits(hit: &Hit) -> Vec<u32> {
     out.extend(v(hit.normal));
     out.extend(v(hit.error));
     out
+}
+
+/// The lecture's loop, written out: every shape asked for its hit in the list's
+/// order, each hit shrinking the range, so the first of equal hits wins.
+fn each_in_turn(scene: &Scene, ray: &Ray, range: Interval) -> Option<SceneHit> {
+    let mut range = range;
+    let mut closest = None;
+    for (object, o) in scene.objects().iter().enumerate() {
+        if let Some(hit) = o.shape.hit(ray, range) {
+            range.max = hit.t;
+            closest = Some(SceneHit { hit, object });
+        }
+    }
+    closest
 }
 
 fn same(a: Option<SceneHit>, b: Option<SceneHit>) -> bool {
@@ -107,7 +118,7 @@ fn rays(rng: &mut Rng, n: usize) -> Vec<Ray> {
 }
 
 #[test]
-fn the_fast_closest_hit_loop_finds_the_readable_loops_hit_bit_for_bit() {
+fn the_closest_hit_over_runs_of_one_kind_is_every_shape_asked_in_turn_bit_for_bit() {
     let mut rng = Rng(0x5eed_cafe);
     let scenes = [still_life(Vec3::ZERO).unwrap(), mixed_scene(&mut rng)];
     let mut ties = 0;
@@ -119,8 +130,8 @@ fn the_fast_closest_hit_loop_finds_the_readable_loops_hit_bit_for_bit() {
                 Interval::new(0.5, 6.0),
                 Interval::new(-3.0, 2.0),
             ] {
-                let readable = scene.closest(&ray, range);
-                let fast = scene.closest_fast(&ray, range);
+                let readable = each_in_turn(scene, &ray, range);
+                let fast = scene.closest(&ray, range);
                 assert!(
                     same(readable, fast),
                     "{ray:?} {range:?}: {readable:?} {fast:?}"
@@ -149,14 +160,14 @@ fn the_fast_closest_hit_loop_finds_the_readable_loops_hit_bit_for_bit() {
 }
 
 #[test]
-fn the_still_lifes_image_is_the_readable_loops_bit_for_bit() {
+fn the_still_lifes_image_made_row_by_row_is_the_lectures_pixel_loop_bit_for_bit() {
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(192, 108).unwrap();
     let pinhole = camera.pinhole().unwrap();
     let fast = render(&camera, |r| shadowless(&scene, r)).unwrap();
     for y in 0..108 {
         for x in 0..192 {
-            let readable = match scene.closest(&pinhole.ray(x, y), Interval::AHEAD) {
+            let readable = match each_in_turn(&scene, &pinhole.ray(x, y), Interval::AHEAD) {
                 Some(found) => scene.object(&found).colour(),
                 None => scene.background(),
             };

@@ -170,7 +170,7 @@ impl LeafShapes {
         LeafShapes::Triangles(triangles)
     }
 
-    /// Primitive `p`'s candidate within `range` ([`Shape::candidate`]).
+    /// Primitive `p`'s candidate within `range` (its kind's `candidate`).
     #[inline(always)]
     pub(crate) fn candidate(
         &self,
@@ -179,9 +179,7 @@ impl LeafShapes {
         range: Interval,
     ) -> Option<Candidate> {
         match self {
-            LeafShapes::Triangles(t) => t[p]
-                .watertight_prepared(ray, range)
-                .map(Candidate::triangle),
+            LeafShapes::Triangles(t) => t[p].candidate(ray, range),
             LeafShapes::Shapes(s) => s[p].candidate(ray, range),
         }
     }

@@ -170,9 +170,9 @@ impl Bvh {
         self.walk(prepared, range.up_to(nearest.box_limit()), |leaf| {
             let objects = &self.primitives[leaf.clone()];
             match &self.shapes {
-                LeafShapes::Triangles(t) => nearest.offer_leaf(&t[leaf], objects, range, |t, r| {
-                    t.watertight_prepared(prepared, r).map(Candidate::triangle)
-                }),
+                LeafShapes::Triangles(t) => {
+                    nearest.offer_leaf(&t[leaf], objects, range, |t, r| t.candidate(prepared, r))
+                }
                 LeafShapes::Shapes(s) => {
                     nearest.offer_leaf(&s[leaf], objects, range, |s, r| s.candidate(prepared, r))
                 }

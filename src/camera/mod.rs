@@ -67,14 +67,13 @@ impl Camera {
     }
     // ANCHOR_END: row
 
-    /// The ray through `pixel` from the lens's centre: a pinhole's by its fast path
-    /// ([`PinholeCamera::ray_through_fast`]).
+    /// The ray through `pixel` from the lens's centre: a thin lens's pinhole ray.
     #[inline]
     pub(crate) fn centre_ray(&self, pixel: Vec2) -> Ray {
         match self {
             Camera::Ortho(c) => c.ray_through(pixel),
-            Camera::Pinhole(c) => c.ray_through_fast(pixel),
-            Camera::ThinLens(c) => c.pinhole().ray_through_fast(pixel),
+            Camera::Pinhole(c) => c.ray_through(pixel),
+            Camera::ThinLens(c) => c.pinhole().ray_through(pixel),
         }
     }
 

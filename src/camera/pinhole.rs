@@ -14,8 +14,8 @@ pub struct PinholeCamera {
     film: Film,
     screen_distance: f32,
     frame: Frame,
-    /// The eye in the world, p + B 0: the same for every ray, so computed once
-    /// (for [`PinholeCamera::ray_through_fast`]).
+    /// The eye in the world, B 0 + p: the same for every ray, so computed once
+    /// (see [`PinholeCamera::ray_towards`]).
     eye: Vec3,
 }
 
@@ -126,12 +126,21 @@ impl PinholeCamera {
 
     // ANCHOR: ray
     /// The ray through the continuous pixel position `pixel` in world space: it starts
-    /// at the eye e and goes through the screen point s, direction (s - e)/|s - e|;
-    /// then B and p carry both to the world, as for the orthographic camera.
+    /// at the eye e and goes through the screen point s.
     pub fn ray_through(&self, pixel: Vec2) -> Ray {
-        let eye = Vec3::ZERO;
-        let direction = (self.screen_point(pixel) - eye).normalize();
-        self.frame.ray_to_world(&Ray::from_checked(eye, direction))
+        self.ray_towards(self.screen_point(pixel))
+    }
+
+    /// The ray from the eye through the screen point `screen` (camera space, where
+    /// the eye e is the origin): direction (s - e)/|s - e| = s/|s|, which B turns to
+    /// the world, as for the orthographic camera. Its origin, the eye in the world,
+    /// B e + p = p, is the same for every ray, so the camera computes it once, when it
+    /// is made: written per ray, the products B 0 would stay in the loop (the compiler
+    /// may not drop them, since 0 times infinity is NaN).
+    #[inline]
+    pub fn ray_towards(&self, screen: Vec3) -> Ray {
+        let direction = screen.normalize();
+        Ray::from_checked(self.eye, self.frame.vector_to_world(direction))
     }
 
     /// The ray through the centre of pixel (`px`, `py`), `py` counted from the top row.
@@ -139,29 +148,6 @@ impl PinholeCamera {
         self.ray_through(Film::pixel_centre(px, py))
     }
     // ANCHOR_END: ray
-
-    // ANCHOR: ray_fast
-    /// The renderers' fast path of [`PinholeCamera::ray_through`]: the same ray bit
-    /// for bit, but the eye's world position p + B 0 is computed once, when the
-    /// camera is made, instead of for every ray (the compiler cannot leave out the
-    /// products with 0 by itself: 0 times infinity would be NaN).
-    #[inline]
-    pub fn ray_through_fast(&self, pixel: Vec2) -> Ray {
-        let direction = self.screen_point(pixel).normalize();
-        Ray::from_checked(self.eye, self.frame.vector_to_world(direction))
-    }
-    // ANCHOR_END: ray_fast
-
-    /// [`PinholeCamera::ray_through_fast`] of the pixel position (`pixel_x`, y) for
-    /// the y whose screen point has height `screen_y` ([`crate::camera::Camera::row`]
-    /// computes it once per row): the same ray, bit for bit, since the screen
-    /// point's x and y are computed apart.
-    #[inline]
-    pub(crate) fn ray_in_row(&self, pixel_x: f32, screen_y: f32) -> Ray {
-        let x = self.screen_point(Vec2::new(pixel_x, 0.5)).x;
-        let direction = Vec3::new(x, screen_y, -self.screen_distance).normalize();
-        Ray::from_checked(self.eye, self.frame.vector_to_world(direction))
-    }
 
     // ANCHOR: project
     /// Where the world point `x` lands in the image, in continuous pixel coordinates,

@@ -1,7 +1,7 @@
 //! The rays of one row of pixels, the renderers' fast way (lesson 11): the same
 //! rays as [`Camera::ray`], bit for bit, with what a row shares computed once.
 
-use glam::Vec2;
+use glam::{Vec2, Vec3};
 
 use super::{Camera, PinholeCamera};
 use crate::ray::Ray;
@@ -12,7 +12,7 @@ use crate::ray::Ray;
 ///
 /// What the row shares is computed once: for a perspective camera, the row's
 /// height on the screen (and, once per camera, the eye in the world: see
-/// [`PinholeCamera::ray_through_fast`]). The column counts up in f32, exactly
+/// [`PinholeCamera::ray_towards`]). The column counts up in f32, exactly
 /// (every whole number below 2^24 is), so no pixel converts an integer to a float.
 /// A ray comes out as a plain value, not an `Option` as an iterator's would: moving
 /// an `Option<Ray>` through memory cost more than making the ray.
@@ -48,7 +48,12 @@ impl<'a> RowRays<'a> {
         let pixel = Vec2::new(self.x + 0.5, self.y);
         self.x += 1.0;
         match (self.pinhole, self.camera) {
-            (Some((c, screen_y)), _) => c.ray_in_row(pixel.x, screen_y),
+            (Some((c, screen_y)), _) => {
+                // The screen point's x and y are computed apart: its x here, its
+                // y once for the row.
+                let x = c.screen_point(Vec2::new(pixel.x, 0.5)).x;
+                c.ray_towards(Vec3::new(x, screen_y, -c.screen_distance()))
+            }
             (None, Camera::Ortho(c)) => c.ray_through(pixel),
             (None, camera) => camera.centre_ray(pixel),
         }

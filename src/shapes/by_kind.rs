@@ -2,14 +2,16 @@
 //! of one kind each, in the list's order, so that the loop over a run calls one test
 //! with no `match` on every object.
 //!
-//! It finds what the plain loop over the list finds ([`crate::scene::Scene::closest`]),
-//! bit for bit: the same tests on the same shapes in the same order, each hit
+//! It finds what asking every shape of the list for [`Shape::candidate`] in turn
+//! finds, bit for bit: the same tests on the same shapes in the same order, each hit
 //! shrinking the range for the next (so on a tie the earlier shape still wins).
 //! Lesson 08's scene, a floor, three spheres, a box and a triangle, is four runs.
-//! Shapes without a fast test of their own (quads, quadrics, cylinders, instances)
-//! make runs that ask [`Shape::candidate`], `match` and all.
+//! Each kind's test is its own `candidate` ([`Sphere::candidate`] and the rest), the
+//! one the other loops call too. Shapes without a run of their own (quads,
+//! quadrics, cylinders, instances) make runs that ask [`Shape::candidate`], `match`
+//! and all.
 
-use super::{Aabb, Candidate, Detail, Plane, PreparedRay, Shape, Sphere, Triangle};
+use super::{Aabb, Candidate, Plane, PreparedRay, Shape, Sphere, Triangle};
 use crate::ray::Interval;
 
 /// The shapes of a list in runs of one kind, each run knowing the list index of its
@@ -105,6 +107,7 @@ impl ShapesByKind {
         best
     }
 
+    // ANCHOR: search
     /// Every shape tested in the list's order, each hit shrinking the range: `found`
     /// sees each candidate closer than all before it, with its list index; the last
     /// one is the closest.
@@ -114,21 +117,18 @@ impl ShapesByKind {
         for run in &self.runs {
             let (first, found) = (run.first, &mut found);
             match &run.shapes {
-                Shapes::Spheres(v) => closest_in(v, first, &mut range, found, |s, r| {
-                    s.nearest(ray.ray(), r).map(Candidate::on_ray)
-                }),
-                Shapes::Planes(v) => closest_in(v, first, &mut range, found, |p, r| {
-                    p.nearest(ray.ray(), r).map(Candidate::on_ray)
-                }),
-                Shapes::Boxes(v) => closest_in(v, first, &mut range, found, |b, r| {
-                    b.nearest_face(ray, r).map(|face| Candidate {
-                        t: face.t,
-                        detail: Detail::Face(face),
-                    })
-                }),
-                Shapes::Triangles(v) => closest_in(v, first, &mut range, found, |tri, r| {
-                    tri.watertight_prepared(ray, r).map(Candidate::triangle)
-                }),
+                Shapes::Spheres(v) => {
+                    closest_in(v, first, &mut range, found, |s, r| s.candidate(ray, r))
+                }
+                Shapes::Planes(v) => {
+                    closest_in(v, first, &mut range, found, |p, r| p.candidate(ray, r))
+                }
+                Shapes::Boxes(v) => {
+                    closest_in(v, first, &mut range, found, |b, r| b.candidate(ray, r))
+                }
+                Shapes::Triangles(v) => {
+                    closest_in(v, first, &mut range, found, |t, r| t.candidate(ray, r))
+                }
                 Shapes::Others(v) => {
                     closest_in(v, first, &mut range, found, |s, r| s.candidate(ray, r))
                 }
@@ -136,20 +136,21 @@ impl ShapesByKind {
         }
     }
 
+    // ANCHOR_END: search
+
     /// True if any shape has a crossing within `range` (a shadow ray's question).
     pub fn any(&self, ray: &PreparedRay, range: Interval) -> bool {
         self.runs.iter().any(|run| match &run.shapes {
-            Shapes::Spheres(v) => v.iter().any(|s| s.nearest(ray.ray(), range).is_some()),
-            Shapes::Planes(v) => v.iter().any(|p| p.nearest(ray.ray(), range).is_some()),
-            Shapes::Boxes(v) => v.iter().any(|b| b.nearest_face(ray, range).is_some()),
-            Shapes::Triangles(v) => v
-                .iter()
-                .any(|t| t.watertight_prepared(ray, range).is_some()),
+            Shapes::Spheres(v) => v.iter().any(|s| s.candidate(ray, range).is_some()),
+            Shapes::Planes(v) => v.iter().any(|p| p.candidate(ray, range).is_some()),
+            Shapes::Boxes(v) => v.iter().any(|b| b.candidate(ray, range).is_some()),
+            Shapes::Triangles(v) => v.iter().any(|t| t.candidate(ray, range).is_some()),
             Shapes::Others(v) => v.iter().any(|s| s.candidate(ray, range).is_some()),
         })
     }
 }
 
+// ANCHOR: closest_in
 /// Each of `shapes` asked by `test` in turn: a candidate shrinks `range` and goes to
 /// `found` with its list index (`first` + its index in `shapes`).
 #[inline(always)]
@@ -167,3 +168,4 @@ fn closest_in<T>(
         }
     }
 }
+// ANCHOR_END: closest_in

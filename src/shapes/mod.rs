@@ -116,16 +116,100 @@ impl Candidate {
             detail: Detail::OnRay,
         }
     }
+}
 
-    /// A triangle's candidate, from its watertight crossing.
+// ANCHOR: kind_candidates
+// Which test makes which candidate, once for each kind of shape: the one place the
+// closest-hit loops ([`Shape::candidate`], the runs of [`ShapesByKind`], the BVH's
+// leaves) learn how a kind is tested.
+
+impl Sphere {
+    /// The nearer crossing within `range` as a [`Candidate`]: its `t` alone, the point
+    /// being o + t d.
     #[inline(always)]
-    pub(crate) fn triangle(crossing: Barycentric) -> Candidate {
-        Candidate {
-            t: crossing.t,
-            detail: Detail::Barycentric(crossing),
-        }
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        self.nearest(ray.ray(), range).map(Candidate::on_ray)
     }
 }
+
+impl Plane {
+    /// The crossing within `range` as a [`Candidate`]: its `t` alone, the point
+    /// being o + t d.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        self.nearest(ray.ray(), range).map(Candidate::on_ray)
+    }
+}
+
+impl Quad {
+    /// The crossing within `range` as a [`Candidate`]: its `t` alone, the point
+    /// being o + t d.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        self.nearest(ray.ray(), range).map(Candidate::on_ray)
+    }
+}
+
+impl Quadric {
+    /// The nearest crossing within `range` as a [`Candidate`]: its `t` alone, the point
+    /// being o + t d.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        self.nearest(ray.ray(), range).map(Candidate::on_ray)
+    }
+}
+
+impl Triangle {
+    /// The watertight crossing within `range` as a [`Candidate`], with its
+    /// barycentric coordinates.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        let crossing = self.watertight_prepared(ray, range)?;
+        let detail = Detail::Barycentric(crossing);
+        Some(Candidate {
+            t: crossing.t,
+            detail,
+        })
+    }
+}
+
+impl Aabb {
+    /// The face the ray enters (or leaves) within `range` as a [`Candidate`].
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        let face = self.nearest_face(ray, range)?;
+        Some(Candidate {
+            t: face.t,
+            detail: Detail::Face(face),
+        })
+    }
+}
+
+impl Cylinder {
+    /// The nearest crossing of the side or a cap within `range` as a [`Candidate`].
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        let part = self.nearest(ray.ray(), range)?;
+        Some(Candidate {
+            t: part.t,
+            detail: Detail::Part(part),
+        })
+    }
+}
+
+impl Instance {
+    /// The nearest hit within `range` as a [`Candidate`]: its `t`, and the range to
+    /// run the test again in for the winner's record.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        let hit = self.hit(ray.ray(), range)?;
+        Some(Candidate {
+            t: hit.t,
+            detail: Detail::Instance { range },
+        })
+    }
+}
+// ANCHOR_END: kind_candidates
 
 /// A hit record at `t` from the point on the ray and the shape's `normal_at`: what
 /// [`Shape::record`] answers for a candidate it cannot have made, to stay total. The
@@ -229,31 +313,20 @@ impl Shape {
 
     // ANCHOR: shape_candidate
     /// The nearest crossing with `t_min < t < t_max` as a [`Candidate`]: `t` and
-    /// what the hit record needs, nothing more. The closest-hit loop calls this for
-    /// every primitive, and [`Shape::record`] once, for the winner.
+    /// what the hit record needs, nothing more, from the test of the shape's kind
+    /// ([`Sphere::candidate`] and each other kind's). The closest-hit loop
+    /// asks every primitive for this, and [`Shape::record`] once, for the winner.
     #[inline(always)]
     pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
         match self {
-            Shape::Sphere(s) => s.nearest(ray.ray(), range).map(Candidate::on_ray),
-            Shape::Plane(p) => p.nearest(ray.ray(), range).map(Candidate::on_ray),
-            Shape::Quad(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
-            Shape::Quadric(q) => q.nearest(ray.ray(), range).map(Candidate::on_ray),
-            Shape::Triangle(tri) => tri.watertight_prepared(ray, range).map(|c| Candidate {
-                t: c.t,
-                detail: Detail::Barycentric(c),
-            }),
-            Shape::Aabb(b) => b.nearest_face(ray, range).map(|face| Candidate {
-                t: face.t,
-                detail: Detail::Face(face),
-            }),
-            Shape::Cylinder(c) => c.nearest(ray.ray(), range).map(|crossing| Candidate {
-                t: crossing.t,
-                detail: Detail::Part(crossing),
-            }),
-            Shape::Instance(i) => i.hit(ray.ray(), range).map(|hit| Candidate {
-                t: hit.t,
-                detail: Detail::Instance { range },
-            }),
+            Shape::Sphere(s) => s.candidate(ray, range),
+            Shape::Plane(p) => p.candidate(ray, range),
+            Shape::Quad(q) => q.candidate(ray, range),
+            Shape::Quadric(q) => q.candidate(ray, range),
+            Shape::Triangle(tri) => tri.candidate(ray, range),
+            Shape::Aabb(b) => b.candidate(ray, range),
+            Shape::Cylinder(c) => c.candidate(ray, range),
+            Shape::Instance(i) => i.candidate(ray, range),
         }
     }
     // ANCHOR_END: shape_candidate

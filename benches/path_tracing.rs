@@ -108,7 +108,7 @@ fn source_hash() -> u64 {
         include_str!("../src/pathtrace/mis.rs"),
         include_str!("../src/pathtrace/next_event.rs"),
         include_str!("../src/pathtrace/progressive.rs"),
-        include_str!("../src/pathtrace/rng.rs"),
+        include_str!("../src/rng.rs"),
         include_str!("../src/pathtrace/roulette.rs"),
         include_str!("../src/scene.rs"),
         include_str!("../src/scenes/path_tracing.rs"),

@@ -15,7 +15,7 @@ use clap::Parser;
 use render_lessons::course::chart::{Chart, Scale, log_log_slope};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::report::{Table, num};
-use render_lessons::pathtrace::Rng;
+use render_lessons::rng::Rng;
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();

@@ -13,8 +13,9 @@
 //!
 //! 1. `error`, `float`: the one typed error, naming the parameter at fault, and the
 //!    floating-point tools (rounding-error bounds);
-//! 2. `limits`, `transform`, `ray`, `basis`, `sampling`, `material`, `files`,
-//!    `progress`: what the machine can give, the maths of Lectures 3 and 4, writing
+//! 2. `limits`, `transform`, `ray`, `basis`, `rng`, `sampling`, `material`, `files`,
+//!    `progress`: what the machine can give, the maths of Lectures 3 and 4, one
+//!    deterministic random stream per pixel and the samplers that use it, writing
 //!    files whole, progress bars;
 //! 3. `quadratic`, `spawn`: the roots of a t^2 + b t + c = 0, shared by the sphere
 //!    and the quadrics; where a spawned ray starts, and where a shadow ray ends;
@@ -49,6 +50,7 @@ pub mod raster;
 pub mod ray;
 pub mod raycast;
 pub mod render;
+pub mod rng;
 pub mod sampling;
 pub mod scene;
 pub mod scenes;

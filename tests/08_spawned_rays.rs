@@ -10,8 +10,9 @@
 
 use glam::{Vec2, Vec3};
 use render_lessons::material::Material;
-use render_lessons::pathtrace::{Rng, Settings, radiance};
+use render_lessons::pathtrace::{Settings, radiance};
 use render_lessons::ray::{Interval, Ray};
+use render_lessons::rng::Rng;
 use render_lessons::sampling::uniform_sphere;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::scenes::path_tracing::look_camera;

@@ -10,10 +10,10 @@
 //! densities are per unit solid angle at the shading point.
 
 use glam::{DVec3, Vec2, Vec3};
-use render_lessons::pathtrace::Rng;
 use render_lessons::pathtrace::light::{
     LightPoint, LightShape, SphereSampling, quad_area_pdf, sphere_area_pdf, sphere_cone_pdf,
 };
+use render_lessons::rng::Rng;
 use render_lessons::sampling::{
     cosine_hemisphere, cosine_hemisphere_pdf, uniform_disc, uniform_disc_pdf, uniform_hemisphere,
     uniform_hemisphere_pdf, uniform_sphere, uniform_sphere_pdf,

@@ -23,11 +23,11 @@ use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
 use render_lessons::pathtrace::light::LightShape;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::{
-    Accumulator, At, Path, PixelSampling, Rng, Sampling, Settings, SphereSampling, radiance,
-    record_path,
+    Accumulator, At, Path, PixelSampling, Sampling, Settings, SphereSampling, radiance, record_path,
 };
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::render::{thread_pool, with_threads};
+use render_lessons::rng::Rng;
 use render_lessons::sampling::grid;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::scenes::path_tracing::{

@@ -16,6 +16,7 @@ const LAYERS: &[&[&str]] = &[
         "transform",
         "ray",
         "basis",
+        "rng",
         "sampling",
         "material",
         "files",

@@ -2,31 +2,19 @@
 //! ([`box_entry`], the root) and for both children of a node at once
 //! ([`both_entries`]), with the ray's 1/d worked out once per ray ([`BoxRay`]).
 //!
-//! The test is conservative: the exits are widened by 1 + 2 gamma(3) (Ize 2013,
-//! "Robust BVH Ray Traversal", as in pbrt-v4), so rounding cannot make a box miss a
-//! point of a primitive inside it and the tree never loses a hit the plain list
-//! would find (STABILITY S6).
+//! The test is conservative: the exits are moved out by the rule of
+//! [`Aabb::slab_conservative`](crate::shapes::Aabb::slab_conservative), `moved_out`
+//! (Ize 2013, "Robust BVH Ray Traversal", as in pbrt-v4), so rounding cannot make a
+//! box miss a point of a primitive inside it and the tree never loses a hit the
+//! plain list would find (STABILITY S6). It gives the entries that test gives, bit
+//! for bit (the test `box_entry_is_the_aabbs_conservative_slab_entry`).
 
 use glam::{Vec3A, Vec4, Vec4Swizzles};
 
 use crate::bvh::Node;
-use crate::float::gamma;
 use crate::ray::Interval;
 use crate::shapes::PreparedRay;
-
-/// `t` moved up by `margin` of its size: t (1 + margin) if t > 0, t (1 - margin),
-/// towards 0, if t < 0. One sum and no branch, where a product would need the sign
-/// to choose its factor.
-#[inline(always)]
-pub(super) fn moved_out(t: f32, margin: f32) -> f32 {
-    t + t.abs() * margin
-}
-
-/// How far a slab's far end is moved out, relative to itself: pbrt-v4's factor
-/// 1 + 2 gamma(3), written as [`moved_out`] so that a negative end moves towards 0.
-/// Rounded, the sum is never below the product it stands for, t (1 + 2 gamma(3))
-/// or t (1 - 2 gamma(3)) rounded (the test `far_end_moves_at_least_as_far_as_the_product`).
-const FAR_MARGIN: f32 = 2.0 * gamma(3);
+use crate::shapes::aabb::{FAR_MARGIN, moved_out};
 
 // ANCHOR: box_entry
 /// The ray as the node boxes see it, computed once per ray: the origin and 1/d as
@@ -100,7 +88,7 @@ fn box_entry_careful((min, max): (Vec3A, Vec3A), ray: &BoxRay, range: Interval) 
 /// (neither NaN), within `t_min..t_max`, with the exit widened.
 #[inline(always)]
 fn enter(near: f32, far: f32, range: Interval) -> Option<f32> {
-    let far = moved_out(far, FAR_MARGIN);
+    let far = moved_out(far);
     let t0 = if near > range.min { near } else { range.min };
     let t1 = if far < range.max { far } else { range.max };
     (t0 <= t1).then_some(t0)
@@ -130,7 +118,7 @@ pub(super) fn both_entries(node: &Node, ray: &BoxRay, range: Interval) -> [Optio
     let (near_z, far_z) = ends(z, ray.axes[2]);
     let near = near_x.max(near_y).max(near_z);
     let far = far_x.min(far_y).min(far_z);
-    let far = far + far.abs() * FAR_MARGIN; // moved_out, lane by lane
+    let far = far + (far.abs() * FAR_MARGIN).min(Vec4::splat(f32::MAX)); // moved_out, lane by lane
     let t0 = near.max(Vec4::splat(range.min));
     let t1 = far.min(Vec4::splat(range.max));
     let hit = t0.cmple(t1).bitmask();
@@ -148,58 +136,71 @@ mod tests {
     use super::*;
     use crate::bvh::Child;
     use crate::ray::Ray;
+    use crate::rng::Rng;
+    use crate::shapes::Aabb;
+
+    /// One case of the tests below: two child boxes (some flat, some with the ray's
+    /// origin in a face plane), a ray (some aimed at a corner, where the widening
+    /// decides; some parallel to an axis, where 1/d is infinite) and a range (some
+    /// narrow, some behind the origin).
+    struct Case {
+        boxes: [(Vec3, Vec3); 2],
+        ray: Ray,
+        range: Interval,
+    }
+
+    fn case(rng: &mut Rng, case: usize) -> Option<Case> {
+        let mut next = || rng.next_f32() * 4.0 - 2.0;
+        let mut point = || Vec3::new(next(), next(), next());
+        let origin = point();
+        let mut corners = |flat: bool| {
+            let (a, b) = (point(), point());
+            let (min, mut max) = (a.min(b), a.max(b));
+            if flat {
+                max.y = min.y;
+            }
+            (min, max)
+        };
+        let mut boxes = [
+            corners(case.is_multiple_of(7)),
+            corners(case.is_multiple_of(11)),
+        ];
+        if case.is_multiple_of(13) {
+            boxes[1].0.x = origin.x; // the origin in a face plane
+        }
+        let (min, max) = boxes[case % 2];
+        let inside = min + (max - min) * point().abs() / 2.0;
+        let mut d = match case % 4 {
+            0 | 1 => inside - origin,
+            2 => max - origin, // at a corner, where rounding decides
+            _ => point(),
+        };
+        if case.is_multiple_of(5) {
+            d[case % 3] = 0.0; // parallel to a face: 1/d infinite
+        }
+        let ray = Ray::new(origin, d).ok()?;
+        let (a, b) = (next(), next());
+        let range = match case % 3 {
+            0 => Interval::new(a.min(b), a.max(b)),
+            _ => Interval::new(a.min(b) - 2.0, 16.0),
+        };
+        Some(Case { boxes, ray, range })
+    }
 
     /// [`both_entries`] gives, for each child, exactly what [`box_entry`] gives for
-    /// that child's box alone: over random boxes (some flat, some sharing a face with
-    /// the ray's origin), random rays (some aimed at a corner, where the widening
-    /// decides; some parallel to an axis, where 1/d is infinite) and random ranges.
+    /// that child's box alone.
     #[test]
     fn both_entries_are_the_entries_of_each_box() {
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 40) as f32 / (1u64 << 24) as f32 * 4.0 - 2.0
-        };
+        let mut rng = Rng::new(0x9e37_79b9_7f4a_7c15, 1);
         let (mut compared, mut entered) = (0, 0);
-        for case in 0..200_000 {
-            let mut point = || Vec3::new(next(), next(), next());
-            let origin = point();
-            let mut corners = |flat: bool| {
-                let (a, b) = (point(), point());
-                let (min, mut max) = (a.min(b), a.max(b));
-                if flat {
-                    max.y = min.y;
-                }
-                (min, max)
-            };
-            let mut boxes = [corners(case % 7 == 0), corners(case % 11 == 0)];
-            if case % 13 == 0 {
-                boxes[1].0.x = origin.x; // the origin in a face plane
-            }
-            let (min, max) = boxes[case % 2];
-            let inside = min + (max - min) * point().abs() / 2.0;
-            let mut d = match case % 4 {
-                0 | 1 => inside - origin,
-                2 => max - origin, // at a corner, where rounding decides
-                _ => point(),
-            };
-            if case % 5 == 0 {
-                d[case % 3] = 0.0; // parallel to a face: 1/d infinite
-            }
-            let Ok(ray) = Ray::new(origin, d) else {
+        for n in 0..200_000 {
+            let Some(Case { boxes, ray, range }) = case(&mut rng, n) else {
                 continue;
-            };
-            let (a, b) = (next(), next());
-            let range = match case % 3 {
-                0 => Interval::new(a.min(b), a.max(b)), // narrow, sometimes behind
-                _ => Interval::new(a.min(b) - 2.0, 16.0),
             };
             let node = Node::new(boxes, [Child::Node(0); 2]);
             let box_ray = BoxRay::new(&PreparedRay::new(&ray));
             let each = [0, 1].map(|i| box_entry(node.corners(i), &box_ray, range));
-            assert_eq!(both_entries(&node, &box_ray, range), each, "case {case}");
+            assert_eq!(both_entries(&node, &box_ray, range), each, "case {n}");
             compared += 1;
             entered += each.iter().flatten().count();
         }
@@ -211,29 +212,35 @@ mod tests {
         );
     }
 
-    /// The sum `moved_out(t, FAR_MARGIN)` against the products it replaced, over
-    /// floats of every exponent from 1e-30 to 1e30, both signs, and their
-    /// neighbours: never lower, so the box test loses no hit it used to find.
+    /// One slab rule: the BVH's node test enters a box exactly where
+    /// [`Aabb::slab_conservative`] says the ray enters it, bit for bit, over the same
+    /// cases (corners, axis-parallel rays, flat boxes, origins in a face plane).
     #[test]
-    fn far_end_moves_at_least_as_far_as_the_product() {
-        let (up, down) = (1.0 + 2.0 * gamma(3), 1.0 - 2.0 * gamma(3));
-        let mut t = 1e-30f32;
-        let mut checked = 0;
-        while t < 1e30 {
-            for x in [
-                t,
-                -t,
-                t.next_up(),
-                -t.next_up(),
-                t.next_down(),
-                -t.next_down(),
-            ] {
-                let product = if x > 0.0 { x * up } else { x * down };
-                assert!(moved_out(x, FAR_MARGIN) >= product, "{x:e}");
-                checked += 1;
-            }
-            t *= 1.000_013;
+    fn box_entry_is_the_aabbs_conservative_slab_entry() {
+        let mut rng = Rng::new(0x5eed_51ab, 2);
+        let (mut compared, mut entered) = (0, 0);
+        for n in 0..200_000 {
+            let Some(Case { boxes, ray, range }) = case(&mut rng, n) else {
+                continue;
+            };
+            let (min, max) = boxes[n % 2];
+            // (Setting a face to the origin's x can turn a box inside out.)
+            let Ok(aabb) = Aabb::new(min, max) else {
+                continue;
+            };
+            let expected = aabb
+                .slab_conservative(&ray, range)
+                .map(|(t0, _)| t0.to_bits());
+            let box_ray = BoxRay::new(&PreparedRay::new(&ray));
+            let entry = box_entry((min.into(), max.into()), &box_ray, range).map(f32::to_bits);
+            assert_eq!(entry, expected, "case {n}: {aabb:?} {ray:?} {range:?}");
+            compared += 1;
+            entered += usize::from(entry.is_some());
         }
-        assert!(checked > 1_000_000, "{checked}");
+        assert!(compared > 190_000, "{compared}");
+        assert!(
+            (compared / 5..compared * 4 / 5).contains(&entered),
+            "{entered}"
+        );
     }
 }

@@ -14,7 +14,7 @@
 
 use glam::Vec3A;
 
-use crate::bvh::slab::{BoxRay, both_entries, box_entry, moved_out};
+use crate::bvh::slab::{BoxRay, both_entries, box_entry};
 use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH};
 use crate::float::gamma;
 use crate::ray::{Interval, Ray};
@@ -106,9 +106,10 @@ impl Nearest {
     }
 }
 
-/// `t` moved out by [`TIE_MARGIN`] of itself (infinity stays infinity).
+/// `t` moved out by [`TIE_MARGIN`] of itself (infinity stays infinity), as a slab
+/// exit is moved out ([`crate::shapes::aabb::moved_out`]) by its own margin.
 fn widened(t: f32) -> f32 {
-    moved_out(t, TIE_MARGIN)
+    t + t.abs() * TIE_MARGIN
 }
 
 impl Bvh {

@@ -27,10 +27,10 @@ use crate::material::Material;
 use crate::pathtrace::light::LightShape;
 use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::next_event::direct_light;
-use crate::pathtrace::rng::Rng;
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
+use crate::rng::Rng;
 use crate::sampling::{
     cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
 };

@@ -2,7 +2,6 @@
 //! (Lecture 2), one idea per file, on the shared
 //! [`crate::scene::Scene`] (objects with a [`crate::material::Material`] and emission):
 //!
-//! - [`rng`]: one deterministic random stream per pixel;
 //! - [`light`]: choosing points on lights (area, cone), each strategy beside its
 //!   density, and the strategies each light's shape allows;
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
@@ -24,7 +23,6 @@ pub mod next_event;
 pub mod pfm;
 pub mod progressive;
 pub mod record;
-pub mod rng;
 pub mod roulette;
 pub mod settings;
 
@@ -32,5 +30,4 @@ pub use estimator::{At, Path, Vertex, radiance};
 pub use light::{LightShape, SphereSampling};
 pub use progressive::{Accumulator, Passes, PixelSampling};
 pub use record::{PathVertex, RecordedPath, record_path};
-pub use rng::Rng;
 pub use settings::{Sampling, Settings};

@@ -16,9 +16,9 @@ use crate::camera::Camera;
 use crate::error::{Error, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::estimator::radiance;
-use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::Intersect;
 
 /// Where in its pixel each sample's camera ray passes.

@@ -5,8 +5,8 @@ use glam::{Vec2, Vec3};
 use crate::camera::Camera;
 use crate::pathtrace::estimator::{At, Path};
 use crate::pathtrace::progressive::{PixelSampling, pixel_ray};
-use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
+use crate::rng::Rng;
 use crate::scene::Intersect;
 
 /// One vertex of a recorded path: where it is, which object it is on, and, at a

@@ -3,8 +3,8 @@
 
 use glam::Vec3;
 
-use crate::pathtrace::rng::Rng;
 use crate::pathtrace::settings::Settings;
+use crate::rng::Rng;
 
 /// Russian roulette starts after this many bounces.
 pub const RR_START: u32 = 3;

@@ -135,17 +135,17 @@ impl Aabb {
     /// +inf (an exit), so the axis on whose boundary the ray runs constrains nothing,
     /// for either sign, as the closed box requires.
     pub fn slab(&self, ray: &Ray, range: Interval) -> Option<(f32, f32)> {
-        let s = self.span(ray.origin(), ray.direction().recip(), range, 1.0)?;
+        let s = self.span(ray.origin(), ray.direction().recip(), range, Exits::Exact)?;
         Some((s.t0, s.t1))
     }
     // ANCHOR_END: slab
 
     // ANCHOR: slab_conservative
-    /// [`Aabb::slab`] with each axis' t_far widened by 1 + 2 gamma(3) (pbrt-v4,
-    /// `Bounds3::IntersectP`: t_far *= 1 + 2 gamma(3); here a negative t_far is divided
-    /// instead, so that it too moves outwards), so that rounding in the three operations behind it
-    /// cannot make the box miss a point that lies on it, such as a vertex of a
-    /// triangle it bounds (STABILITY S6).
+    /// [`Aabb::slab`] with each axis' t_far moved out by [`moved_out`] (pbrt-v4,
+    /// `Bounds3::IntersectP`: t_far *= 1 + 2 gamma(3)), so that rounding in the three
+    /// operations behind it cannot make the box miss a point that lies on it, such as
+    /// a vertex of a triangle it bounds (STABILITY S6). The BVH's node test applies
+    /// the same rule to its boxes, and gives the same entries (a test ties the two).
     pub fn slab_conservative(&self, ray: &Ray, range: Interval) -> Option<(f32, f32)> {
         self.slab_conservative_prepared(&PreparedRay::new(ray), range)
     }
@@ -160,17 +160,17 @@ impl Aabb {
         range: Interval,
     ) -> Option<(f32, f32)> {
         let o = ray.ray().origin();
-        let s = self.span(o, ray.inv_d, range, 1.0 + 2.0 * gamma(3))?;
+        let s = self.span(o, ray.inv_d, range, Exits::MovedOut)?;
         Some((s.t0, s.t1))
     }
 
     // ANCHOR: span
     /// The slab loop shared by both tests, for a ray from `o` with 1/d = `inv_d`;
-    /// `widen` scales each axis' t_far. `t0` only grows and `t1` only shrinks, so
+    /// `exits` says whether each axis' t_far is moved out. `t0` only grows and `t1` only shrinks, so
     /// one check after the three axes rejects what a check after each would: the
     /// loop runs without a branch that the CPU could mispredict.
     #[inline]
-    fn span(&self, o: Vec3, inv_d: Vec3, range: Interval, widen: f32) -> Option<Span> {
+    fn span(&self, o: Vec3, inv_d: Vec3, range: Interval, exits: Exits) -> Option<Span> {
         let mut s = Span {
             t0: range.min,
             axis0: 0,
@@ -179,7 +179,10 @@ impl Aabb {
         };
         for i in 0..3 {
             let (t_near, t_far) = slab_ends(self.min[i] - o[i], self.max[i] - o[i], inv_d[i]);
-            let t_far = widen_up(t_far, widen);
+            let t_far = match exits {
+                Exits::Exact => t_far,
+                Exits::MovedOut => moved_out(t_far),
+            };
             if t_near > s.t0 {
                 (s.t0, s.axis0) = (t_near, i);
             }
@@ -198,7 +201,7 @@ impl Aabb {
     #[inline]
     pub fn nearest_face(&self, ray: &PreparedRay, range: Interval) -> Option<FaceHit> {
         let (o, d) = (ray.ray().origin(), ray.ray().direction());
-        let s = self.span(o, ray.inv_d, Interval::EVERYWHERE, 1.0)?;
+        let s = self.span(o, ray.inv_d, Interval::EVERYWHERE, Exits::Exact)?;
         let face = |t, axis: usize, outward| FaceHit { t, axis, outward };
         if range.contains(s.t0) {
             Some(face(s.t0, s.axis0, -d[s.axis0].signum()))
@@ -240,7 +243,7 @@ impl Aabb {
     /// or a corner).
     pub fn crossings(&self, ray: &Ray) -> Crossings {
         let (o, inv_d) = (ray.origin(), ray.direction().recip());
-        self.span(o, inv_d, Interval::EVERYWHERE, 1.0)
+        self.span(o, inv_d, Interval::EVERYWHERE, Exits::Exact)
             .map_or(Crossings::NONE, |s| Crossings::two(s.t0, s.t1))
     }
 
@@ -290,8 +293,59 @@ fn slab_ends(to_min: f32, to_max: f32, inv_d: f32) -> (f32, f32) {
 }
 // ANCHOR_END: slab_ends
 
-/// `t` moved away from the box by the factor `widen >= 1`: multiplied if positive,
-/// divided if negative; 0, infinities and NaN stay as they are.
-fn widen_up(t: f32, widen: f32) -> f32 {
-    if t > 0.0 { t * widen } else { t / widen }
+/// Whether a slab test moves each exit out ([`moved_out`]) or takes it as computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Exits {
+    Exact,
+    MovedOut,
+}
+
+// ANCHOR: moved_out
+/// How far a conservative slab test moves a slab's exit out, relative to itself:
+/// pbrt-v4's 2 gamma(3), the most the three rounded operations behind t_far can
+/// have moved it in (Ize 2013, "Robust BVH Ray Traversal").
+pub(crate) const FAR_MARGIN: f32 = 2.0 * gamma(3);
+
+/// The exit `t` moved out by [`FAR_MARGIN`] of its size: t (1 + margin) if t > 0,
+/// t (1 - margin), towards 0, if t < 0; 0 and infinities stay as they are. A sum and
+/// a minimum, no branch, where a product would need the sign to choose its factor.
+/// The minimum keeps an exit of -infinity (a ray parallel to a slab, outside it) at
+/// -infinity: -inf + inf would be NaN, and a NaN exit constrains nothing. The one
+/// rule of both conservative slab tests, [`Aabb::slab_conservative`] and the BVH's.
+#[inline(always)]
+pub(crate) fn moved_out(t: f32) -> f32 {
+    t + (t.abs() * FAR_MARGIN).min(f32::MAX)
+}
+// ANCHOR_END: moved_out
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The sum [`moved_out`] against the products pbrt-v4 writes (t (1 + 2 gamma(3))
+    /// for t > 0, t (1 - 2 gamma(3)) for t < 0), over floats of every exponent from
+    /// 1e-30 to 1e30, both signs, and their neighbours: never lower, so the box test
+    /// loses no hit the product would find.
+    #[test]
+    fn far_end_moves_at_least_as_far_as_the_product() {
+        let (up, down) = (1.0 + 2.0 * gamma(3), 1.0 - 2.0 * gamma(3));
+        let mut t = 1e-30f32;
+        let mut checked = 0;
+        while t < 1e30 {
+            for x in [
+                t,
+                -t,
+                t.next_up(),
+                -t.next_up(),
+                t.next_down(),
+                -t.next_down(),
+            ] {
+                let product = if x > 0.0 { x * up } else { x * down };
+                assert!(moved_out(x) >= product, "{x:e}");
+                checked += 1;
+            }
+            t *= 1.000_013;
+        }
+        assert!(checked > 1_000_000, "{checked}");
+    }
 }

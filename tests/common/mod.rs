@@ -25,16 +25,18 @@ pub fn red_pixels(rgba: &[u8]) -> usize {
         .count()
 }
 
-/// A small deterministic generator (xorshift64*), so every run tests the same rays.
-pub struct Rng(pub u64);
+/// The crate's random stream (PCG32, `render_lessons::rng::Rng`) with the helpers
+/// the tests use, seeded so that every run tests the same cases.
+pub struct Rng(render_lessons::rng::Rng);
 
 impl Rng {
+    /// The stream for `seed`.
+    pub fn seeded(seed: u64) -> Rng {
+        Rng(render_lessons::rng::Rng::new(seed, 0x7e57))
+    }
+
     pub fn next_f32(&mut self) -> f32 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
-        (x >> 40) as f32 / (1u64 << 24) as f32
+        self.0.next_f32()
     }
 
     pub fn range(&mut self, lo: f32, hi: f32) -> f32 {

@@ -12,7 +12,8 @@ use render_lessons::framebuffer::Framebuffer;
 use render_lessons::material::Material;
 use render_lessons::pathtrace::progressive::render_progressive;
 use render_lessons::pathtrace::record::{PathVertex, RecordedPath, record_path};
-use render_lessons::pathtrace::{Passes, PixelSampling, Rng, Sampling, Settings};
+use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
+use render_lessons::rng::Rng;
 use render_lessons::sampling::{
     cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
 };

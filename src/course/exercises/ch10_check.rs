@@ -15,7 +15,7 @@ use glam::{Vec2, Vec3};
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::material::diffuse_brdf;
-use crate::pathtrace::Rng;
+use crate::rng::Rng;
 use crate::sampling::cosine_hemisphere;
 
 /// Coding exercise 10.1.

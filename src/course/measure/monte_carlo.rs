@@ -24,9 +24,10 @@ use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::material::Material;
 use crate::pathtrace::light::{LightShape, SphereSampling};
+use crate::pathtrace::radiance;
 use crate::pathtrace::settings::{Sampling, Settings};
-use crate::pathtrace::{Rng, radiance};
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Shape, Sphere};
 

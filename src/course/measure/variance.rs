@@ -21,7 +21,8 @@ use crate::error::Result;
 use crate::framebuffer::Framebuffer;
 use crate::material::Material;
 use crate::pathtrace::progressive::pixel_ray;
-use crate::pathtrace::{At, Path, PixelSampling, Rng, Settings};
+use crate::pathtrace::{At, Path, PixelSampling, Settings};
+use crate::rng::Rng;
 use crate::scene::Scene;
 
 /// The variance of one sample in every pixel, and the object each pixel's centre

@@ -9,13 +9,13 @@ use glam::Vec3;
 use crate::course::measure::sphere::fastest;
 use crate::course::measure::{Quality, ns_per_call};
 use crate::error::Result;
-use crate::pathtrace::Rng;
 use crate::ray::{Interval, Ray};
+use crate::rng::Rng;
 use crate::shapes::{Aabb, Triangle};
 
 /// STABILITY S6: rays aimed exactly at a vertex of random triangles, kept when the
 /// watertight test hits, each with the triangle's f32 bounding box.
-pub(super) fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
+pub fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
     let mut rng = Rng::new(12345, 6);
     let mut p =
         || 10.0 * Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - Vec3::splat(5.0);
@@ -37,7 +37,7 @@ pub(super) fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
 
 /// How often the plain and the conservative slab test reject the boxes of `cases`:
 /// (rays, plain rejects, conservative rejects).
-pub(super) fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
+pub fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
     let plain = cases
         .iter()
         .filter(|(b, r)| b.slab(r, Interval::AHEAD).is_none())

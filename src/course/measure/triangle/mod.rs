@@ -18,7 +18,7 @@
 mod boxes;
 mod tables;
 
-pub use boxes::box_rejects;
+pub use boxes::{box_cases, box_counts, box_rejects};
 pub use tables::exact_quoted;
 
 use glam::Vec3;

@@ -57,19 +57,25 @@ pub fn textbook(a: f32, b: f32, c: f32) -> Crossings {
 /// assert_eq!(stable(0.0, 2.0, -4.0, 4.0).as_slice(), [2.0]);
 /// ```
 pub fn stable(a: f32, b: f32, c: f32, disc: f32) -> Crossings {
+    match stable_pair(a, b, c, disc) {
+        Some((t0, t1)) => Crossings::two(t0, t1),
+        None => Crossings::NONE,
+    }
+}
+
+/// The two roots c/q and q/a of [`stable`] as they come: unordered, and either may be
+/// infinite (a line nearly parallel to a cylinder's axis leaves it that far away).
+/// `None` for a negative or NaN discriminant, and for q = 0 with a = 0.
+pub fn stable_pair(a: f32, b: f32, c: f32, disc: f32) -> Option<(f32, f32)> {
     if disc.is_nan() || disc < 0.0 {
-        return Crossings::NONE;
+        return None;
     }
     let sign = if b >= 0.0 { 1.0 } else { -1.0 };
     let q = -0.5 * (b + sign * disc.sqrt());
     if q == 0.0 {
-        return if a != 0.0 {
-            Crossings::two(0.0, 0.0)
-        } else {
-            Crossings::NONE
-        };
+        return (a != 0.0).then_some((0.0, 0.0));
     }
-    Crossings::two(c / q, q / a)
+    Some((c / q, q / a))
 }
 // ANCHOR_END: stable
 

@@ -90,6 +90,93 @@ pub fn uniform_disc_pdf(p: Vec2) -> f32 {
     }
 }
 
+// ANCHOR: uniform_cone
+/// A direction uniform inside the cone around +Z of half-angle theta_max, given as
+/// `one_minus_cos` = 1 - cos theta_max (so that a narrow cone does not cancel): with
+/// 1 - cos theta = u.x (1 - cos theta_max), the solid angle below theta grows with
+/// u.x linearly, so the direction is uniform in solid angle (pbrt-v3 section 13.6.4).
+pub fn uniform_cone(one_minus_cos: f32, u: Vec2) -> Vec3 {
+    let h = u.x * one_minus_cos;
+    let cos = 1.0 - h;
+    let sin = (h * (2.0 - h)).max(0.0).sqrt();
+    let (s, c) = (TAU * u.y).sin_cos();
+    Vec3::new(sin * c, sin * s, cos)
+}
+
+/// The density of [`uniform_cone`] for every direction inside the cone (it draws
+/// none outside): 1 / (2 pi (1 - cos theta_max)), one over the cone's solid angle.
+pub fn uniform_cone_pdf(one_minus_cos: f32) -> f32 {
+    1.0 / (TAU * one_minus_cos)
+}
+// ANCHOR_END: uniform_cone
+
+// ANCHOR: strata
+/// The largest float below 1, 1 - 2^-24: where a point of [0, 1) that rounding could
+/// carry up to 1 is held.
+pub const BELOW_ONE: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// A grid of `cols` x `rows` cells over the unit square, one sample in each
+/// (stratified, or jittered, sampling).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Strata {
+    /// Cells across.
+    pub cols: u32,
+    /// Cells down.
+    pub rows: u32,
+}
+
+/// The grid of `n` strata, as square as `n` allows: `rows` the largest divisor of n
+/// not above sqrt(n), `cols` = n / rows, so a square number gives a square grid
+/// (1 x 1 for n = 0).
+///
+/// ```
+/// use render_lessons::sampling::{Strata, strata};
+///
+/// assert_eq!(strata(16), Strata { cols: 4, rows: 4 });
+/// assert_eq!(strata(8), Strata { cols: 4, rows: 2 });
+/// assert_eq!(strata(7), Strata { cols: 7, rows: 1 }); // a prime: one row
+/// assert!(strata(u32::MAX - 1).cols > 0);
+/// ```
+pub fn strata(n: u32) -> Strata {
+    let mut rows = floor_sqrt(n).max(1);
+    while rows > 1 && !n.is_multiple_of(rows) {
+        rows -= 1;
+    }
+    Strata {
+        cols: n.max(1) / rows,
+        rows,
+    }
+}
+
+impl Strata {
+    /// Whether the grid is square (`n` a square number).
+    pub fn is_square(self) -> bool {
+        self.cols == self.rows
+    }
+
+    /// Sample `i`'s point: the uniform point `u` of the unit square moved into cell
+    /// (i mod cols, i div cols), kept below 1 (dividing a number just below a whole
+    /// one can round up to it).
+    pub fn point(self, i: u32, u: Vec2) -> Vec2 {
+        let cell = Vec2::new((i % self.cols) as f32, (i / self.cols) as f32);
+        let size = Vec2::new(self.cols as f32, self.rows as f32);
+        ((cell + u) / size).min(Vec2::splat(BELOW_ONE))
+    }
+}
+
+/// floor(sqrt(n)), exactly.
+fn floor_sqrt(n: u32) -> u32 {
+    let mut r = f64::from(n).sqrt() as u32;
+    while u64::from(r) * u64::from(r) > u64::from(n) {
+        r -= 1;
+    }
+    while u64::from(r + 1) * u64::from(r + 1) <= u64::from(n) {
+        r += 1;
+    }
+    r
+}
+// ANCHOR_END: strata
+
 /// An `n` x `n` grid of points at the centres of the cells of the unit square: evenly
 /// spread "random" numbers for tests that must not depend on a generator.
 pub fn grid(n: u32) -> impl Iterator<Item = Vec2> {

@@ -15,8 +15,9 @@ use render_lessons::pathtrace::light::{
 };
 use render_lessons::rng::Rng;
 use render_lessons::sampling::{
-    cosine_hemisphere, cosine_hemisphere_pdf, uniform_disc, uniform_disc_pdf, uniform_hemisphere,
-    uniform_hemisphere_pdf, uniform_sphere, uniform_sphere_pdf,
+    cosine_hemisphere, cosine_hemisphere_pdf, uniform_cone, uniform_cone_pdf, uniform_disc,
+    uniform_disc_pdf, uniform_hemisphere, uniform_hemisphere_pdf, uniform_sphere,
+    uniform_sphere_pdf,
 };
 use render_lessons::shapes::{Quad, Sphere};
 use std::f64::consts::{PI, TAU};
@@ -71,10 +72,24 @@ fn over_the_sphere(pdf: impl Fn(f32) -> f32) -> f64 {
 
 #[test]
 fn direction_densities_integrate_to_1_over_the_sphere() {
-    let cases: [(&str, &dyn Fn(f32) -> f32); 3] = [
+    // A cone is uniform inside and draws nothing outside; its rim at 90 degrees
+    // (1 - cos = 1) and at 180 degrees (1 - cos = 2) falls between the grid's rings.
+    let cone = |one_minus_cos: f32| {
+        move |cos: f32| {
+            if 1.0 - cos <= one_minus_cos {
+                uniform_cone_pdf(one_minus_cos)
+            } else {
+                0.0
+            }
+        }
+    };
+    let (hemisphere_cone, sphere_cone) = (cone(1.0), cone(2.0));
+    let cases: [(&str, &dyn Fn(f32) -> f32); 5] = [
         ("cosine hemisphere", &cosine_hemisphere_pdf),
         ("uniform hemisphere", &uniform_hemisphere_pdf),
         ("uniform sphere", &|_| uniform_sphere_pdf()),
+        ("uniform cone of 90 degrees", &hemisphere_cone),
+        ("uniform cone of 180 degrees", &sphere_cone),
     ];
     for (name, pdf) in cases {
         let integral = over_the_sphere(pdf);
@@ -138,6 +153,10 @@ fn direction_densities_are_the_densities_of_the_samples() {
         &uniform_hemisphere_pdf,
     );
     direction_histogram("uniform sphere", uniform_sphere, &|_| uniform_sphere_pdf());
+    // A cone of 1 - cos theta_max = 1/2 (60 degrees): its rim, z = 1/2, is a bin edge.
+    direction_histogram("uniform cone", |u| uniform_cone(0.5, u), &|z| {
+        if z >= 0.5 { uniform_cone_pdf(0.5) } else { 0.0 }
+    });
 }
 
 #[test]

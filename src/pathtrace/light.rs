@@ -18,13 +18,13 @@
 //! checks that each density integrates to 1 over the directions and matches a
 //! histogram of samples.
 
-use std::f32::consts::{PI, TAU};
+use std::f32::consts::PI;
 
 use glam::{Vec2, Vec3};
 
 use crate::basis::Basis;
 use crate::ray::{Interval, Ray};
-use crate::sampling::uniform_sphere;
+use crate::sampling::{uniform_cone, uniform_cone_pdf, uniform_sphere};
 use crate::shapes::{Quad, Shape, Sphere};
 
 /// How points on a spherical light are chosen.
@@ -84,15 +84,6 @@ fn cone(p: Vec3, sphere: &Sphere) -> Option<(Vec3, f32)> {
     (one_minus_cos > 0.0).then(|| (to_c / d2.sqrt(), one_minus_cos))
 }
 
-/// A direction in the cone around `axis` with 1 - cos theta_max = `one_minus_cos`:
-/// 1 - cos theta = u.x (1 - cos theta_max) is uniform, so is the solid angle.
-fn sample_cone(axis: Vec3, one_minus_cos: f32, u: Vec2) -> Vec3 {
-    let h = u.x * one_minus_cos;
-    let cos = 1.0 - h;
-    let sin = (h * (2.0 - h)).max(0.0).sqrt();
-    let (s, c) = (TAU * u.y).sin_cos();
-    Basis::around(axis).to_world(Vec3::new(sin * c, sin * s, cos))
-}
 // ANCHOR_END: cone
 
 /// A light's shape with the strategy that chooses its points: each kind of shape
@@ -182,9 +173,9 @@ pub fn sphere_cone(s: &Sphere, p: Vec3, u: Vec2) -> Option<LightPoint> {
     let Some((axis, omc)) = cone(p, s) else {
         return sphere_area(s, p, u);
     };
-    let ray = Ray::new(p, sample_cone(axis, omc, u)).ok()?;
+    let ray = Ray::new(p, Basis::around(axis).to_world(uniform_cone(omc, u))).ok()?;
     let hit = s.hit(&ray, Interval::AHEAD)?;
-    let pdf = 1.0 / (TAU * omc);
+    let pdf = uniform_cone_pdf(omc);
     pdf.is_finite().then_some(LightPoint {
         point: hit.point,
         normal: hit.normal,
@@ -199,7 +190,7 @@ pub fn sphere_cone(s: &Sphere, p: Vec3, u: Vec2) -> Option<LightPoint> {
 /// exists; 0 where it is not finite.
 pub fn sphere_cone_pdf(s: &Sphere, p: Vec3, y: Vec3, n: Vec3) -> f32 {
     match cone(p, s) {
-        Some((_, omc)) => finite_or_zero(Some(1.0 / (TAU * omc))),
+        Some((_, omc)) => finite_or_zero(Some(uniform_cone_pdf(omc))),
         None => sphere_area_pdf(s, p, y, n),
     }
 }

@@ -19,6 +19,7 @@ use crate::pathtrace::estimator::radiance;
 use crate::pathtrace::settings::Settings;
 use crate::ray::Ray;
 use crate::rng::Rng;
+use crate::sampling::strata;
 use crate::scene::Intersect;
 
 /// Where in its pixel each sample's camera ray passes.
@@ -147,7 +148,7 @@ fn check_pass(
             min: 1,
         });
     }
-    if pixels == PixelSampling::Jittered && strata(spp) * strata(spp) != spp {
+    if pixels == PixelSampling::Jittered && !strata(spp).is_square() {
         return Err(Error::Invalid {
             param: "spp",
             reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
@@ -166,18 +167,6 @@ fn check_pass(
         });
     }
     Ok(())
-}
-
-/// The number of strata per side, floor(sqrt(spp)).
-fn strata(spp: u32) -> u32 {
-    let mut n = (f64::from(spp).sqrt()) as u32;
-    while n * n > spp {
-        n -= 1;
-    }
-    while (n + 1) * (n + 1) <= spp {
-        n += 1;
-    }
-    n
 }
 
 /// The camera ray of sample `i` of `spp` in the pixel whose corner is `pixel`: a
@@ -200,12 +189,7 @@ fn pixel_offset(pixels: PixelSampling, spp: u32, i: u32, rng: &mut Rng) -> Vec2 
     let u = rng.next_vec2();
     match pixels {
         PixelSampling::Independent => u,
-        PixelSampling::Jittered => {
-            let n = strata(spp);
-            let cell = Vec2::new((i % n) as f32, (i / n) as f32);
-            // (cell + u) / n stays below 1: u < 1 - 2^-24 rounds down at most to it.
-            ((cell + u) / n as f32).min(Vec2::splat(1.0 - f32::EPSILON / 2.0))
-        }
+        PixelSampling::Jittered => strata(spp).point(i, u),
     }
 }
 // ANCHOR_END: pixel_offset

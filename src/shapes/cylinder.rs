@@ -14,6 +14,7 @@ use glam::{Vec2, Vec3};
 
 use crate::error::{Error, Result, finite, positive};
 use crate::float::gamma;
+use crate::quadratic;
 use crate::ray::{Crossings, Interval, Ray};
 use crate::shapes::{Aabb, Hit};
 
@@ -132,16 +133,9 @@ impl Cylinder {
         }
         let l = o - (half_b / a) * d;
         let delta = self.radius * self.radius - l.dot(l);
-        if delta.is_nan() || delta < 0.0 {
-            return None;
-        }
-        // Numerical Recipes' q, as in quadratic::stable, with the far root allowed
-        // to overflow to an infinite end.
-        let q = -(half_b + (a * delta).sqrt().copysign(half_b));
-        if q == 0.0 {
-            return Some((0.0, 0.0));
-        }
-        let (t0, t1) = (c / q, q / a);
+        // The sphere's stable roots, the far one allowed to overflow to an infinite
+        // end of the span.
+        let (t0, t1) = quadratic::stable_pair(a, 2.0 * half_b, c, 4.0 * (a * delta))?;
         Some((t0.min(t1), t0.max(t1)))
     }
 

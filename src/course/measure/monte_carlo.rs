@@ -28,6 +28,7 @@ use crate::pathtrace::radiance;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::Ray;
 use crate::rng::Rng;
+use crate::sampling::strata;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Shape, Sphere};
 
@@ -147,13 +148,11 @@ impl Setup {
     /// The mean of `n` samples of `estimator`.
     fn estimate(&self, estimator: Estimator, n: u32, rng: &mut Rng) -> f64 {
         let sum: f64 = if estimator == Estimator::LightConeJittered {
-            let (cols, rows) = strata(n);
+            // A grid as square as n allows, more columns than rows, along the
+            // number the cone's samples vary with.
+            let grid = strata(n);
             (0..n)
-                .map(|i| {
-                    let cell = Vec2::new((i % cols) as f32, (i / cols) as f32);
-                    let u = (cell + rng.next_vec2()) / Vec2::new(cols as f32, rows as f32);
-                    self.cone_sample(u.min(Vec2::splat(1.0 - f32::EPSILON / 2.0)))
-                })
+                .map(|i| self.cone_sample(grid.point(i, rng.next_vec2())))
                 .sum()
         } else {
             let settings = estimator.settings();
@@ -161,17 +160,6 @@ impl Setup {
         };
         sum / f64::from(n.max(1))
     }
-}
-
-/// A grid of `cols` x `rows` = n cells, as square as n allows (rows the largest
-/// divisor of n not above its square root; more columns than rows, along the
-/// number the cone's samples vary with).
-fn strata(n: u32) -> (u32, u32) {
-    let mut rows = (f64::from(n).sqrt() as u32).max(1);
-    while rows > 1 && !n.is_multiple_of(rows) {
-        rows -= 1;
-    }
-    (n.max(1) / rows, rows)
 }
 
 // ANCHOR: rmse_curve

@@ -12,13 +12,14 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::Vec3;
 use render_lessons::Result;
-use render_lessons::camera::{Camera, Film, Frame, MAX_RESOLUTION, OrthoCamera, PinholeCamera};
+use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::mine;
 use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
 use render_lessons::framebuffer::Framebuffer;
+use render_lessons::limits::MAX_RESOLUTION;
 use render_lessons::ray::Ray;
 
 fn main() -> ExitCode {

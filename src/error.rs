@@ -19,7 +19,7 @@ pub enum Error {
     /// The up vector is parallel to the view direction, so no camera frame exists
     /// (STABILITY S10).
     UpParallelToDirection,
-    /// An image resolution was 0 or larger than `max` (for images, `camera::MAX_RESOLUTION`).
+    /// An image resolution was 0 or larger than `max` (for images, `limits::MAX_RESOLUTION`).
     Resolution {
         param: &'static str,
         value: u32,

@@ -4,9 +4,9 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use crate::camera::MAX_RESOLUTION;
 use crate::error::{Error, Result};
 use crate::files::write_png_rgba;
+use crate::limits::{MAX_RESOLUTION, Resolution};
 
 /// `width` x `height` linear RGB colours, stored row by row from the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,7 +23,7 @@ impl Framebuffer {
         height: u32,
         mut shade: impl FnMut(u32, u32) -> Vec3,
     ) -> Result<Self> {
-        check_resolution(width, height)?;
+        Resolution::new(width, height)?;
         let pixels = (0..height)
             .flat_map(|y| (0..width).map(move |x| (x, y)))
             .map(|(x, y)| shade(x, y))
@@ -37,7 +37,7 @@ impl Framebuffer {
 
     /// A framebuffer from its pixels, row by row from the top.
     pub fn from_pixels(width: u32, height: u32, pixels: Vec<Vec3>) -> Result<Self> {
-        check_resolution(width, height)?;
+        Resolution::new(width, height)?;
         if pixels.len() != width as usize * height as usize {
             return Err(Error::Resolution {
                 param: "pixel count",
@@ -124,20 +124,6 @@ impl Framebuffer {
     pub fn save_png(&self, path: &Path) -> Result<()> {
         write_png_rgba(path, self.width, self.height, &self.to_srgb8()?)
     }
-}
-
-/// `Ok` if both sides are between 1 and [`MAX_RESOLUTION`] pixels.
-fn check_resolution(width: u32, height: u32) -> Result<()> {
-    for (param, value) in [("width", width), ("height", height)] {
-        if !(1..=MAX_RESOLUTION).contains(&value) {
-            return Err(Error::Resolution {
-                param,
-                value,
-                max: MAX_RESOLUTION,
-            });
-        }
-    }
-    Ok(())
 }
 
 /// A linear value in [0, 1] as an 8-bit sRGB code (IEC 61966-2-1 transfer curve).

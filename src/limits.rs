@@ -5,6 +5,52 @@
 
 use crate::error::{Error, Result};
 
+/// The largest width or height of an image, in pixels.
+pub const MAX_RESOLUTION: u32 = 16_384;
+
+/// An image's size in pixels, both sides checked once to lie between 1 and
+/// [`MAX_RESOLUTION`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Resolution {
+    width: u32,
+    height: u32,
+}
+
+impl Resolution {
+    /// `width` x `height` pixels; an error naming `width` or `height` if a side is 0
+    /// or above [`MAX_RESOLUTION`].
+    pub fn new(width: u32, height: u32) -> Result<Resolution> {
+        Ok(Resolution {
+            width: image_side("width", width)?,
+            height: image_side("height", height)?,
+        })
+    }
+
+    /// The width in pixels.
+    pub fn width(self) -> u32 {
+        self.width
+    }
+
+    /// The height in pixels.
+    pub fn height(self) -> u32 {
+        self.height
+    }
+}
+
+/// `value` pixels if that is a side an image may have, 1 to [`MAX_RESOLUTION`];
+/// otherwise an error naming `param` (e.g. `shadow map size`, or a flag).
+pub fn image_side(param: &'static str, value: u32) -> Result<u32> {
+    if (1..=MAX_RESOLUTION).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::Resolution {
+            param,
+            value,
+            max: MAX_RESOLUTION,
+        })
+    }
+}
+
 /// The most worker threads a render may ask for: more than enough for any machine
 /// a student has, far below what makes a thread pool fail.
 pub const MAX_THREADS: usize = 256;

@@ -9,7 +9,8 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
-use render_lessons::camera::{Film, MAX_RESOLUTION, OrthoCamera};
+use render_lessons::camera::{Film, OrthoCamera};
+use render_lessons::limits::MAX_RESOLUTION;
 
 fn slide_camera() -> OrthoCamera {
     OrthoCamera::at_origin(Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap())

@@ -5,9 +5,7 @@
 use glam::Vec2;
 
 use crate::error::{Error, Result, finite};
-
-/// The largest width or height accepted, in pixels.
-pub const MAX_RESOLUTION: u32 = 16_384;
+use crate::limits::Resolution;
 
 /// A rectangle [x_min, x_max] x [y_min, y_max] of the camera plane, cut into
 /// `width` x `height` pixels.
@@ -21,18 +19,6 @@ pub struct Film {
     x_max: f32,
     y_min: f32,
     y_max: f32,
-}
-
-fn resolution(param: &'static str, value: u32) -> Result<u32> {
-    if (1..=MAX_RESOLUTION).contains(&value) {
-        Ok(value)
-    } else {
-        Err(Error::Resolution {
-            param,
-            value,
-            max: MAX_RESOLUTION,
-        })
-    }
 }
 
 fn range(param: &'static str, (min, max): (f32, f32)) -> Result<(f32, f32)> {
@@ -61,8 +47,8 @@ impl Film {
     /// `width` x `height` pixels over the plane extents `x` = (x_min, x_max) and
     /// `y` = (y_min, y_max).
     pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Film> {
-        let width = resolution("width", width)?;
-        let height = resolution("height", height)?;
+        let size = Resolution::new(width, height)?;
+        let (width, height) = (size.width(), size.height());
         let (x_min, x_max) = range("x extent", x)?;
         let (y_min, y_max) = range("y extent", y)?;
         Ok(Film {

@@ -12,7 +12,7 @@ mod pinhole;
 mod row;
 mod thin_lens;
 
-pub use film::{Film, MAX_RESOLUTION};
+pub use film::Film;
 pub use frame::{Frame, MIN_UP_SINE, camera_basis, camera_basis_as_on_slide};
 pub use ortho::OrthoCamera;
 pub use pinhole::PinholeCamera;

@@ -69,7 +69,7 @@ impl PinholeCamera {
     ///
     /// Errors name the parameter at fault: `eye`, `target`, `up` (see
     /// [`Frame::look_at`]), `vfov_degrees` (not finite, or outside 0 < vfov < 180),
-    /// `width` and `height` (0 or above [`crate::camera::MAX_RESOLUTION`]).
+    /// `width` and `height` (0 or above [`crate::limits::MAX_RESOLUTION`]).
     pub fn look_at(
         eye: Vec3,
         target: Vec3,

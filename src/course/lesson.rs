@@ -67,7 +67,7 @@ impl ImageFlags {
 }
 
 /// Checks `--width`, `--height` and `--threads` before any work: each side within
-/// `camera::MAX_RESOLUTION`, the memory of `images` images of that size (16 bytes
+/// `limits::MAX_RESOLUTION`, the memory of `images` images of that size (16 bytes
 /// a pixel: the linear colour and its 8-bit copy) within
 /// [`crate::limits::memory_limit`], the thread count within
 /// [`crate::limits::MAX_THREADS`]. Returns the thread count.
@@ -77,8 +77,8 @@ pub fn budget(
     threads: Option<usize>,
     images: u64,
 ) -> Result<Option<usize>> {
-    pixels("--width", width, crate::camera::MAX_RESOLUTION)?;
-    pixels("--height", height, crate::camera::MAX_RESOLUTION)?;
+    pixels("--width", width, crate::limits::MAX_RESOLUTION)?;
+    pixels("--height", height, crate::limits::MAX_RESOLUTION)?;
     let bytes = crate::limits::images(images, width, height, 16);
     crate::limits::memory("--width x --height", bytes)?;
     crate::limits::threads("--threads", threads)

@@ -50,7 +50,7 @@ pub fn save_pfm(path: &Path, image: &Framebuffer) -> Result<()> {
 /// Errors ([`Error::Pfm`], its path "PFM data") say what is wrong: the header
 /// (not `PF` or `Pf`, a size that is not two whole numbers, a scale that is 0 or not
 /// a number), the size (width x height pixels and the bytes that follow disagree, or
-/// the image is larger than [`crate::camera::MAX_RESOLUTION`] a side), or a pixel that
+/// the image is larger than [`crate::limits::MAX_RESOLUTION`] a side), or a pixel that
 /// is NaN or infinite, named by its position (x, y from the top).
 ///
 /// ```
@@ -150,7 +150,7 @@ fn header(bytes: &[u8]) -> std::result::Result<Header, String> {
 /// The image, or what is wrong with `bytes`.
 fn parse(bytes: &[u8]) -> std::result::Result<Framebuffer, String> {
     let h = header(bytes)?;
-    let max = crate::camera::MAX_RESOLUTION;
+    let max = crate::limits::MAX_RESOLUTION;
     if !(1..=max).contains(&h.width) || !(1..=max).contains(&h.height) {
         return Err(format!(
             "wrong size: {} x {} pixels, each side must be 1 to {max}",

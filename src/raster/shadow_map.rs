@@ -13,8 +13,9 @@
 use glam::Vec3;
 
 use super::{CameraTransforms, Cull, DepthRange, Model, RasterSettings, rasterize_triangle};
-use crate::camera::{Camera, Film, Frame, MAX_RESOLUTION, PinholeCamera};
+use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::error::{Error, Result, finite3, non_negative, positive};
+use crate::limits::image_side;
 use crate::scene::PointLight;
 use crate::transform::Transform;
 
@@ -149,13 +150,7 @@ impl ShadowMap {
 /// frames the sphere of `shadows.radius` around it.
 fn light_camera(light: Vec3, shadows: &Shadows) -> Result<Camera> {
     let size = shadows.size;
-    if size == 0 || size > MAX_RESOLUTION {
-        return Err(Error::Resolution {
-            param: "shadow map size",
-            value: size,
-            max: MAX_RESOLUTION,
-        });
-    }
+    image_side("shadow map size", size)?;
     non_negative("shadow bias", shadows.bias)?;
     let radius = positive("shadow radius", shadows.radius)?;
     let direction = finite3("shadow centre", shadows.centre)? - light;

@@ -323,3 +323,37 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         quoted,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::Vec3;
+
+    use super::*;
+
+    /// The f64 lines of chart 1 measure the formulas the core runs in f32: on inputs
+    /// where every operation of both is exact (small whole numbers, perfect squares
+    /// under the roots), the f64 copies give the f32 core's roots exactly, so a change
+    /// to either formula that the other does not follow shows here.
+    #[test]
+    fn the_f64_copies_are_the_cores_formulas() {
+        let sphere = Sphere::new(Vec3::new(0.0, 0.0, -10.0), 3.0).unwrap();
+        let (c, r) = (sphere.centre().as_dvec3(), f64::from(sphere.radius()));
+        let cases = [
+            (Vec3::ZERO, Vec3::NEG_Z, [7.0, 13.0]),
+            (Vec3::new(1.0, 2.0, 0.0), Vec3::NEG_Z, [8.0, 12.0]),
+            (Vec3::new(0.0, 0.0, -20.0), 2.0 * Vec3::Z, [3.5, 6.5]),
+            (Vec3::new(3.0, 0.0, 0.0), Vec3::NEG_Z, [10.0, 10.0]),
+        ];
+        for (o, d, exact) in cases {
+            let ray = Ray::new_unnormalised(o, d).unwrap();
+            let (o, d) = (o.as_dvec3(), d.as_dvec3());
+            let f32_pair =
+                |roots: crate::ray::Crossings| [f64::from(roots[0]), f64::from(roots[1])];
+            let textbook = textbook_f64(o, d, c, r).map(|(a, b)| [a, b]);
+            let stable = stable_f64(o, d, c, r).map(|(a, b)| [a, b]);
+            assert_eq!(textbook, Some(f32_pair(sphere.roots_textbook(&ray))), "{o}");
+            assert_eq!(stable, Some(f32_pair(sphere.roots_stable(&ray))), "{o}");
+            assert_eq!(stable, Some(exact), "{o}");
+        }
+    }
+}

@@ -5,34 +5,43 @@
 
 use glam::Vec3;
 
+use crate::error::{self, Error};
+
 /// The largest angle a lesson takes, in degrees: a hundred turns. Beyond it f32
 /// degrees are too coarse to mean anything (at 1e7 two neighbouring values lie a
 /// whole degree apart).
 pub const MAX_DEGREES: f32 = 36_000.0;
 
+/// The number typed, `s`, checked by one of the core's validators
+/// ([`error::finite`], [`error::positive`], [`error::non_negative`]): the rules are
+/// the core's, only the reason is worded for the command line, where clap has named
+/// the flag already.
+fn checked(s: &str, check: fn(&'static str, f32) -> crate::Result<f32>) -> Result<f32, String> {
+    let value = s
+        .trim()
+        .parse::<f32>()
+        .map_err(|_| format!("'{s}' is not a number"))?;
+    check("value", value).map_err(|e| match e {
+        Error::NotFinite { .. } => format!("'{s}' is not a finite number"),
+        Error::NotPositive { .. } => format!("'{s}' must be greater than 0"),
+        Error::Negative { .. } => format!("'{s}' is negative: it must be 0 or more"),
+        other => other.to_string(),
+    })
+}
+
 /// A finite number (Rust's own parser also accepts `nan` and `inf`).
 pub fn finite(s: &str) -> Result<f32, String> {
-    match s.trim().parse::<f32>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(format!("'{s}' is not a finite number")),
-        Err(_) => Err(format!("'{s}' is not a number")),
-    }
+    checked(s, error::finite)
 }
 
 /// A finite number that is 0 or more.
 pub fn non_negative(s: &str) -> Result<f32, String> {
-    match finite(s)? {
-        v if v >= 0.0 => Ok(v),
-        _ => Err(format!("'{s}' is negative: it must be 0 or more")),
-    }
+    checked(s, error::non_negative)
 }
 
 /// A finite number greater than 0.
 pub fn positive(s: &str) -> Result<f32, String> {
-    match finite(s)? {
-        v if v > 0.0 => Ok(v),
-        _ => Err(format!("'{s}' must be greater than 0")),
-    }
+    checked(s, error::positive)
 }
 
 /// An angle in degrees within ±[`MAX_DEGREES`].

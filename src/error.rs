@@ -234,16 +234,21 @@ pub fn finite3(param: &'static str, v: Vec3) -> Result<Vec3> {
 
 /// `v / |v|` if `v` is finite and not zero.
 ///
-/// A vector too long or too short to normalise directly in f32 (beyond about
-/// 1.8e19 or below 1e-19) is scaled first, so only a zero vector is rejected as
-/// having zero length.
+/// A vector too long or too short to normalise directly in f32 (|v|^2 beyond
+/// f32::MAX, or below f32::MIN_POSITIVE, the smallest normal float) is scaled first,
+/// so every finite non-zero vector comes out unit, and only a zero vector is
+/// rejected as having zero length.
 pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
     let v = finite3(param, v)?;
-    // |v| overflows past 1.8e19 and underflows below 1e-19 in f32: divide by the
-    // largest component first, which changes nothing for a vector of sane length.
-    let n = match v.normalize_or_zero() {
-        Vec3::ZERO => (v / v.abs().max_element()).normalize_or_zero(),
-        n => n,
+    // |v|^2 overflows past about 1.8e19 per component, and below about 1e-19 it is
+    // subnormal or 0: with a few significant bits left, |v| and so v / |v| come out
+    // wrong by up to a few parts in a thousand. Dividing by the largest component
+    // first changes nothing for a vector of sane length, which skips it.
+    let length2 = v.length_squared();
+    let n = if (f32::MIN_POSITIVE..=f32::MAX).contains(&length2) {
+        v.normalize_or_zero()
+    } else {
+        (v / v.abs().max_element()).normalize_or_zero()
     };
     if n == Vec3::ZERO {
         Err(Error::ZeroLength { param })
@@ -267,5 +272,34 @@ pub fn non_negative(param: &'static str, value: f32) -> Result<f32> {
         Ok(value)
     } else {
         Err(Error::Negative { param, value })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every finite non-zero vector comes out unit, however short or long: from
+    /// components of 1e-45 (the smallest subnormal) through the range where |v|^2 is
+    /// subnormal (3e-22: |v| - 1 was +1.8e-3 before the rescaling) to 1e38.
+    #[test]
+    fn unit_is_unit_for_tiny_subnormal_and_huge_vectors() {
+        for scale in [1e-45f32, 1e-40, 3e-22, 4e-23, 1e-19, 1e-10, 1.0, 1e19, 1e38] {
+            for v in [Vec3::new(1.0, 1.0, 0.0), Vec3::new(0.3, -1.0, 0.7), Vec3::X] {
+                // The input as f32 holds it (at 1e-45 the small parts round away),
+                // and its direction in f64.
+                let w = v * scale;
+                let Ok(n) = unit("v", w) else {
+                    panic!("{w} was rejected");
+                };
+                let exact = w.as_dvec3().normalize();
+                assert!((n.length() - 1.0).abs() < 1e-6, "{w}: |n| = {}", n.length());
+                assert!(
+                    (n.as_dvec3() - exact).length() < 1e-6,
+                    "{w}: {n} against {exact}"
+                );
+            }
+        }
+        assert_eq!(unit("v", Vec3::ZERO), Err(Error::ZeroLength { param: "v" }));
     }
 }

@@ -57,16 +57,23 @@ fn very_short_and_very_long_directions_are_normalised_not_refused() {
     // |d| underflows (1e-30 squared is 0 in f32) or overflows (3e38 squared is
     // infinite): the direction is still well defined, and Ray::new scales it first.
     let diagonal = Vec3::splat(1.0 / 3f32.sqrt());
+    // Between them, 3e-22 squared is subnormal but not 0: without the rescaling its
+    // length came out 1.8e-3 too long.
     for d in [
         Vec3::splat(1e-30),
+        Vec3::splat(3e-22),
         Vec3::splat(3e38),
         Vec3::splat(f32::MIN_POSITIVE),
     ] {
         let ray = Ray::new(Vec3::ZERO, d).unwrap();
         assert!((ray.direction() - diagonal).length() < 1e-6, "{d}");
     }
-    let tilted = Ray::new(Vec3::ZERO, Vec3::new(3e38, 3e38, 0.0)).unwrap();
-    assert!((tilted.direction() - Vec3::new(1.0, 1.0, 0.0).normalize()).length() < 1e-6);
+    for scale in [3e38, 3e-22] {
+        let tilted = Ray::new(Vec3::ZERO, Vec3::new(scale, scale, 0.0)).unwrap();
+        let expected = Vec3::new(1.0, 1.0, 0.0).normalize();
+        assert!((tilted.direction() - expected).length() < 1e-6, "{scale:e}");
+        assert!((tilted.direction().length() - 1.0).abs() < 1e-6, "{scale:e}");
+    }
 }
 
 #[test]

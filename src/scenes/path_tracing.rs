@@ -196,10 +196,11 @@ pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, Cam
 ///
 /// Direct light only: the standard deviation of one sample under each light, per
 /// estimator, is measured by `tests/10_path_tracing.rs` (`two_lights_sigmas`
-/// snapshot). Cosine sampling does worst under the small hot light, area sampling
-/// under the large one (points on the sphere seen at wide angles), MIS is close to
-/// the better of the two under each, and cone sampling of the spheres leaves MIS
-/// little to add on a Lambertian floor.
+/// snapshot). Cosine sampling fails under the small hot light; under the large one
+/// cosine and area sampling are both poor (area sampling's points on the sphere seen
+/// at wide angles); MIS keeps area sampling's sigma under the small light and beats
+/// both under the large one; and cone sampling of the spheres leaves MIS little to
+/// add on a Lambertian floor.
 pub fn two_lights(width: u32, height: u32) -> Result<(Scene, Camera)> {
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     let small = Sphere::new(Vec3::new(-1.5, 1.0, 0.0), 0.05)?;

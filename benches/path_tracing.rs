@@ -33,7 +33,7 @@ use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling};
 use render_lessons::pathtrace::{Settings, SphereSampling};
 use render_lessons::scene::Scene;
-use render_lessons::scenes::path_tracing;
+use render_lessons::scenes::path_tracing::{self, Staged};
 
 /// The lesson's settings (examples/10_path_tracing.rs with its defaults) with
 /// `sampling`: depth at most 8, Russian roulette, cone-sampled spheres.
@@ -54,7 +54,7 @@ fn cores() -> usize {
 // ANCHOR: samples_per_second
 fn samples_per_second(c: &mut Criterion) {
     let (width, height) = (1024, 768);
-    let (scene, camera) = path_tracing::cornell(width, height).expect("the Cornell box");
+    let Staged { scene, camera } = path_tracing::cornell(width, height).expect("the Cornell box");
     let mut group = c.benchmark_group("path tracing, smallpt's Cornell box, 1024x768, 1 spp");
     group.sample_size(10);
     // One iteration takes a second or more: the same number in every sample.
@@ -232,7 +232,7 @@ fn equal_time() {
     println!(
         "\nEqual-time comparison: smallpt's Cornell box, {WIDTH}x{HEIGHT}, {threads} thread(s)"
     );
-    let (scene, camera) = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let Staged { scene, camera } = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
     let halves = REFERENCE_SEEDS.map(|seed| reference_half(&scene, &camera, seed));
     let reference = average(&halves[0], &halves[1]);
     // The halves are independent, each with error e_half; their difference has
@@ -375,7 +375,7 @@ const VARIANCE_SPP: u32 = 256;
 /// to a given error is proportional to sigma^2 times the time per sample, so MIS
 /// gains (sigma^2_a / sigma^2_MIS) x (time_a / time_MIS) where both are measured.
 fn variance_analysis() {
-    let (scene, camera) = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let Staged { scene, camera } = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
     let methods = [
         ("(a) cosine (smallpt)", Sampling::Cosine),
         ("(b1) NEE", Sampling::NextEvent),

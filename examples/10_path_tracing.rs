@@ -27,9 +27,9 @@ use render_lessons::pathtrace::convergence::{Part, Renders, Study};
 use render_lessons::pathtrace::pfm::save_pfm;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::render::with_threads;
-use render_lessons::scene::{Intersect, Scene};
+use render_lessons::scene::Intersect;
 use render_lessons::scenes::MeshScene;
-use render_lessons::scenes::path_tracing::SceneName;
+use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
@@ -40,7 +40,7 @@ fn main() -> ExitCode {
         let threads = lesson::budget(args.width, args.height, args.threads, 20)?;
         let size = (args.width, args.height);
         let lens = (args.lens.aperture, args.lens.focus);
-        let (scene, camera) = scene_and_camera(args.scene, size, lens)?;
+        let Staged { scene, camera } = scene_and_camera(args.scene, size, lens)?;
         let study = args.study.study(args.path.settings())?;
         // Every object on every ray while that stays cheap, else lesson 11's BVH.
         let scene = MeshScene::new(scene, study.samples() * u64::from(args.width * args.height));
@@ -107,13 +107,13 @@ pub fn scene_and_camera(
     name: SceneName,
     (width, height): (u32, u32),
     (aperture, focus): (f32, f32),
-) -> Result<(Scene, Camera)> {
-    let (scene, pinhole) = name.build(width, height)?;
+) -> Result<Staged> {
+    let Staged { scene, camera } = name.build(width, height)?;
     let camera = match aperture {
-        0.0 => pinhole,
-        aperture => pinhole.with_lens(aperture, focus)?,
+        0.0 => camera,
+        aperture => camera.with_lens(aperture, focus)?,
     };
-    Ok((scene, camera))
+    Ok(Staged { scene, camera })
 }
 
 // ANCHOR: numbers

@@ -31,7 +31,7 @@ use render_lessons::rng::Rng;
 use render_lessons::sampling::grid;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::scenes::path_tracing::{
-    cornell, grey_furnace, interior_furnace, look_camera, two_lights,
+    Staged, cornell, grey_furnace, interior_furnace, look_camera, two_lights,
 };
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
 use render_lessons::spawn::{Offset, SHADOW_EPSILON};
@@ -59,7 +59,8 @@ fn small_args(extra: &[&str]) -> lesson::Args {
 /// What `main` makes of the flags: the scene, its camera and the study.
 fn setup(args: &lesson::Args) -> render_lessons::Result<(Scene, Camera, Study)> {
     let lens = (args.lens.aperture, args.lens.focus);
-    let (scene, camera) = lesson::scene_and_camera(args.scene, (args.width, args.height), lens)?;
+    let Staged { scene, camera } =
+        lesson::scene_and_camera(args.scene, (args.width, args.height), lens)?;
     let study = args.study.study(args.path.settings())?;
     Ok((scene, camera, study))
 }
@@ -263,7 +264,7 @@ const S16_DEPTH_8: f64 = 0.998_046_875;
 
 #[test]
 fn s16_interior_furnace_cosine_depth_8_is_exact_with_zero_variance() {
-    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let Staged { scene, camera } = interior_furnace(8, 8).unwrap();
     let s = settings(Sampling::Cosine, Some(8), false);
     let (mean, sigma) = pixel_samples(&scene, &camera, &s, 4096, 1);
     assert!((mean - S16_DEPTH_8).abs() < 1e-6, "mean {mean}");
@@ -275,7 +276,7 @@ fn s16_interior_furnace_cosine_depth_8_is_exact_with_zero_variance() {
 
 #[test]
 fn s16_interior_furnace_uniform_hemisphere_within_4_sigma() {
-    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let Staged { scene, camera } = interior_furnace(8, 8).unwrap();
     let s = settings(Sampling::UniformHemisphere, Some(8), false);
     let n = 40_000;
     let st = pixel_samples(&scene, &camera, &s, n, 2);
@@ -285,7 +286,7 @@ fn s16_interior_furnace_uniform_hemisphere_within_4_sigma() {
 
 #[test]
 fn s16_interior_furnace_russian_roulette_infinite_depth_gives_1() {
-    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let Staged { scene, camera } = interior_furnace(8, 8).unwrap();
     let n = 40_000;
     for sampling in [Sampling::Cosine, Sampling::NextEvent, Sampling::Mis] {
         let s = settings(sampling, None, true);
@@ -297,7 +298,7 @@ fn s16_interior_furnace_russian_roulette_infinite_depth_gives_1() {
 #[test]
 fn s16_next_event_and_mis_agree_with_the_depth_8_value() {
     // The sphere is its own light: light samples from inside use area sampling.
-    let (scene, camera) = interior_furnace(8, 8).unwrap();
+    let Staged { scene, camera } = interior_furnace(8, 8).unwrap();
     let n = 20_000;
     for sampling in [Sampling::NextEvent, Sampling::Mis] {
         for sphere_lights in [SphereSampling::Area, SphereSampling::Cone] {
@@ -319,7 +320,7 @@ fn s16_next_event_and_mis_agree_with_the_depth_8_value() {
 // ---------------------------------------------------------------- S17
 
 fn grey_furnace_mean(offset: Offset, centre: Vec3) -> (f64, f64) {
-    let (scene, camera) = grey_furnace(16, 16, centre).unwrap();
+    let Staged { scene, camera } = grey_furnace(16, 16, centre).unwrap();
     let s = Settings {
         offset,
         ..settings(Sampling::Cosine, Some(8), false)
@@ -366,7 +367,7 @@ fn edge_image(
     spp: u32,
     seed: u64,
 ) -> render_lessons::framebuffer::Framebuffer {
-    let (scene, _) = grey_furnace(4, 4, Vec3::ZERO).unwrap();
+    let Staged { scene, .. } = grey_furnace(4, 4, Vec3::ZERO).unwrap();
     let camera = look_camera(24, 24, 3.0 * Vec3::Z, -Vec3::Z, 0.45).unwrap();
     let s = settings(Sampling::Cosine, Some(1), false);
     let mut acc = Accumulator::new(&camera, seed);
@@ -548,7 +549,7 @@ fn s19_for_a_quad_light_every_estimator_is_unbiased() {
 /// per estimator, as a Markdown table the page includes.
 #[test]
 fn two_lights_direct_light_sigmas() {
-    let (scene, _) = two_lights(8, 6).unwrap();
+    let Staged { scene, .. } = two_lights(8, 6).unwrap();
     let estimators = [
         ("cosine", Sampling::Cosine, SphereSampling::Area),
         ("light area", Sampling::NextEvent, SphereSampling::Area),
@@ -689,7 +690,7 @@ fn assert_within_3_sigma(label: &str, (mean, sigma): (f64, f64), n: u32, exact: 
 /// and far from them, against the closed form of each sphere's light.
 #[test]
 fn s20_direct_light_on_the_two_light_floor_matches_the_closed_form_near_and_far() {
-    let (scene, _) = two_lights(8, 6).unwrap();
+    let Staged { scene, .. } = two_lights(8, 6).unwrap();
     let lights = [([-1.5, 1.0, 0.0], 0.05, 400.0), ([1.5, 1.5, 0.0], 1.0, 1.0)];
     let n = 40_000;
     for (x, z) in [(0.0f32, 3.0f32), (0.0, -5.0), (-10.0, -20.0), (0.0, -40.0)] {
@@ -757,7 +758,7 @@ fn s20_direct_light_from_a_quad_matches_the_closed_form_near_and_far() {
 /// (`Start::ray_to`); 64 x 64 light samples per row, both offsets, both samplers.
 #[test]
 fn s20_shadow_rays_ended_at_the_error_bound_alone_find_their_own_light() {
-    let (scene, _) = two_lights(8, 6).unwrap();
+    let Staged { scene, .. } = two_lights(8, 6).unwrap();
     let mut table = String::from(
         "| floor point | light | sampler | error-bound offset, end at the bound | with `SHADOW_EPSILON` | scaled offset, end at the bound | with `SHADOW_EPSILON` |\n\
          |---|---|---|---:|---:|---:|---:|\n",
@@ -823,7 +824,7 @@ fn s20_shadow_rays_ended_at_the_error_bound_alone_find_their_own_light() {
 
 #[test]
 fn strategies_agree_on_the_two_light_scene_with_indirect_light() {
-    let (scene, camera) = two_lights(8, 6).unwrap();
+    let Staged { scene, camera } = two_lights(8, 6).unwrap();
     let n = 30_000;
     let estimates: Vec<(Sampling, (f64, f64))> =
         [Sampling::Cosine, Sampling::NextEvent, Sampling::Mis]
@@ -847,7 +848,7 @@ fn strategies_agree_on_the_two_light_scene_with_indirect_light() {
 // ---------------------------------------------------------------- determinism
 
 fn cornell_image(threads: usize, passes: &[u32], pixels: PixelSampling) -> Vec<Vec3> {
-    let (scene, camera) = cornell(16, 12).unwrap();
+    let Staged { scene, camera } = cornell(16, 12).unwrap();
     let mut acc = Accumulator::new(&camera, 42);
     let s = Settings::default();
     let pool = thread_pool(threads).unwrap();
@@ -925,10 +926,10 @@ fn any_sampling() -> impl Strategy<Value = Settings> {
 
 fn all_scenes() -> Vec<Scene> {
     vec![
-        cornell(4, 4).unwrap().0,
-        interior_furnace(4, 4).unwrap().0,
-        grey_furnace(4, 4, Vec3::ZERO).unwrap().0,
-        two_lights(4, 4).unwrap().0,
+        cornell(4, 4).unwrap().scene,
+        interior_furnace(4, 4).unwrap().scene,
+        grey_furnace(4, 4, Vec3::ZERO).unwrap().scene,
+        two_lights(4, 4).unwrap().scene,
     ]
 }
 
@@ -1013,7 +1014,7 @@ proptest! {
         t in -1.0f32..1.0,
         seed in any::<u64>(),
     ) {
-        let (cornell, _) = cornell(4, 4).unwrap();
+        let Staged { scene: cornell, .. } = cornell(4, 4).unwrap();
         // In the plane of the ceiling light, along the floor, along the walls.
         let light_y = 81.6 - render_lessons::scenes::path_tracing::CORNELL_LIGHT_GAP;
         let rays = [
@@ -1029,7 +1030,7 @@ proptest! {
         for ray in rays {
             assert_finite(&cornell, ray, &s, seed);
         }
-        let (lights, _) = two_lights(4, 4).unwrap();
+        let Staged { scene: lights, .. } = two_lights(4, 4).unwrap();
         // Tangent to the small light, and grazing the floor towards both lights.
         let tangent = Ray::new(Vec3::new(-1.5 + 0.05, 1.0, -3.0), Vec3::new(0.0, t * 1e-3, 1.0)).unwrap();
         assert_finite(&lights, tangent, &s, seed);
@@ -1068,7 +1069,7 @@ fn no_non_finite_samples_in_any_scene_with_any_flags() {
         grey_furnace(6, 6, Vec3::ZERO),
     ];
     for made in scenes {
-        let (scene, camera) = made.unwrap();
+        let Staged { scene, camera } = made.unwrap();
         for sampling in [
             Sampling::UniformHemisphere,
             Sampling::Cosine,
@@ -1091,7 +1092,7 @@ fn no_non_finite_samples_in_any_scene_with_any_flags() {
 
 #[test]
 fn aperture_0_is_the_pinhole_camera_bit_for_bit() {
-    let (_, camera) = cornell(20, 15).unwrap();
+    let Staged { camera, .. } = cornell(20, 15).unwrap();
     let film = Film::new(20, 15, (-0.3, 0.3), (-0.2, 0.25)).unwrap();
     let frame = render_lessons::camera::Frame::look(
         Vec3::new(1.0, 2.0, 3.0),
@@ -1307,7 +1308,7 @@ fn param(e: Error) -> String {
 
 #[test]
 fn bad_input_is_an_error_naming_the_parameter() {
-    let (scene, camera) = cornell(4, 4).unwrap();
+    let Staged { scene, camera } = cornell(4, 4).unwrap();
     let mut acc = Accumulator::new(&camera, 0);
     let s = Settings::default();
     let pass =
@@ -1333,7 +1334,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
         param(pass(&mut acc, &bad_offset, PixelSampling::Independent, 1).unwrap_err()),
         "offset"
     );
-    let (_, other) = cornell(5, 4).unwrap();
+    let Staged { camera: other, .. } = cornell(5, 4).unwrap();
     assert_eq!(
         param(
             acc.render_pass(&scene, &other, &s, PixelSampling::Independent, 1)
@@ -1418,7 +1419,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
 /// and leaves the random stream where `radiance` leaves it.
 #[test]
 fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
-    let (scene, camera) = cornell(160, 120).unwrap();
+    let Staged { scene, camera } = cornell(160, 120).unwrap();
     let bits = |v: Vec3| v.to_array().map(f32::to_bits);
     for s in [
         settings(Sampling::NextEvent, Some(8), true),
@@ -1467,7 +1468,7 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
 /// diffuse vertices and only with a strategy that samples lights.
 #[test]
 fn recorded_paths_lie_on_their_objects_and_sample_lights_at_diffuse_vertices() {
-    let (scene, camera) = cornell(40, 30).unwrap();
+    let Staged { scene, camera } = cornell(40, 30).unwrap();
     for sampling in Sampling::ALL {
         let s = settings(sampling, Some(8), true);
         let mut light_samples = 0;
@@ -1501,7 +1502,7 @@ fn recorded_paths_lie_on_their_objects_and_sample_lights_at_diffuse_vertices() {
 /// camera's own, bit for bit.
 #[test]
 fn the_grey_furnace_renders_through_an_orthographic_camera() {
-    let (scene, _) = grey_furnace(4, 4, Vec3::ZERO).unwrap();
+    let Staged { scene, .. } = grey_furnace(4, 4, Vec3::ZERO).unwrap();
     let film = Film::new(24, 24, (-1.5, 1.5), (-1.5, 1.5)).unwrap();
     let frame = Frame::look(3.0 * Vec3::Z, -Vec3::Z, Vec3::Y).unwrap();
     let camera = Camera::Ortho(OrthoCamera::new(film, frame));
@@ -1909,7 +1910,7 @@ fn the_monte_carlo_page_quotes_its_snapshot() {
 fn the_light_sample_exercises_are_the_crates_numbers() {
     // Step 5's exercise: the Cornell box's floor under its ceiling light, through the
     // crate's own scene, light density and BRDF.
-    let (scene, _) = cornell(16, 12).unwrap();
+    let Staged { scene, .. } = cornell(16, 12).unwrap();
     let light = &scene.objects()[scene.emitters()[0]];
     let Shape::Quad(quad) = &light.shape else {
         panic!("the Cornell light is a quad")

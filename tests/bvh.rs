@@ -532,9 +532,12 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
 #[test]
 fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
     use render_lessons::scenes::MeshScene;
-    use render_lessons::scenes::path_tracing::SceneName;
+    use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
-    let (list, camera) = SceneName::Teapot.build(16, 12).unwrap();
+    let Staged {
+        scene: list,
+        camera,
+    } = SceneName::Teapot.build(16, 12).unwrap();
     assert_eq!(list.objects().len(), 8 - 1 + 4032);
     let tree = BvhScene::new(list.clone());
     assert!(

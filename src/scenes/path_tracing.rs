@@ -14,6 +14,17 @@ use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
 use crate::transform::Transform;
 
+/// A scene and the camera that frames it, as every scene builder here returns them:
+/// the camera is the scene's own (placed and sized for it), so the two travel
+/// together.
+#[derive(Clone, Debug)]
+pub struct Staged {
+    /// The objects, their materials and the background.
+    pub scene: Scene,
+    /// The pinhole camera the lesson renders `scene` through, at the size asked for.
+    pub camera: Camera,
+}
+
 /// The lesson's scenes, by the names its `--scene` flag takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SceneName {
@@ -40,7 +51,7 @@ impl SceneName {
     ];
 
     /// The scene at `width` x `height` pixels, and its pinhole camera.
-    pub fn build(self, width: u32, height: u32) -> Result<(Scene, Camera)> {
+    pub fn build(self, width: u32, height: u32) -> Result<Staged> {
         match self {
             SceneName::Cornell => cornell(width, height),
             SceneName::TwoLights => two_lights(width, height),
@@ -51,7 +62,7 @@ impl SceneName {
     }
 }
 
-/// A pinhole camera at `eye` looking at `target` (up +Y), its screen at distance 1
+/// A pinhole camera at `eye` looking along `direction` (up +Y), its screen at distance 1
 /// spanning `half_height` above and below the centre, width by the aspect ratio.
 pub fn look_camera(
     width: u32,
@@ -86,7 +97,7 @@ pub const CORNELL_LIGHT_GAP: f32 = 0.05;
 ///
 /// smallpt's front wall is black (albedo 0, no emission): a ray that hits it gets
 /// the same radiance, 0, as a ray that escapes, so it is left out.
-pub fn cornell(width: u32, height: u32) -> Result<(Scene, Camera)> {
+pub fn cornell(width: u32, height: u32) -> Result<Staged> {
     let grey = Material::diffuse(Vec3::splat(0.75))?;
     let wall = |point: (f32, f32, f32), normal: Vec3, material| -> Result<Object> {
         let plane = Plane::new(Vec3::from(point), normal)?;
@@ -135,7 +146,7 @@ pub fn cornell(width: u32, height: u32) -> Result<(Scene, Camera)> {
         Vec3::new(0.0, -0.042_612, -1.0),
         0.5135 / 2.0,
     )?;
-    Ok((scene, camera))
+    Ok(Staged { scene, camera })
 }
 // ANCHOR_END: cornell
 
@@ -144,8 +155,11 @@ pub fn cornell(width: u32, height: u32) -> Result<(Scene, Camera)> {
 /// triangles once its quads are split) standing where the mirror ball was, white and
 /// diffuse. A scene a plain list renders slowly: lesson 10 draws it through lesson
 /// 11's BVH ([`crate::scenes::MeshScene`]).
-pub fn cornell_teapot(width: u32, height: u32) -> Result<(Scene, Camera)> {
-    let (box_scene, camera) = cornell(width, height)?;
+pub fn cornell_teapot(width: u32, height: u32) -> Result<Staged> {
+    let Staged {
+        scene: box_scene,
+        camera,
+    } = cornell(width, height)?;
     let teapot = Mesh::from_obj(&asset_path(Path::new(TEAPOT_OBJ)))?.mesh;
     // The teapot's y starts at 0, so it stands on the floor (y = 0); seven times its
     // size is about as wide as the ball was.
@@ -158,7 +172,8 @@ pub fn cornell_teapot(width: u32, height: u32) -> Result<(Scene, Camera)> {
     let mut objects: Vec<Object> = box_scene.objects().to_vec();
     objects.remove(mirror_ball);
     objects.extend(world.objects(Vec3::splat(0.75))?);
-    Ok((Scene::new(objects, box_scene.background())?, camera))
+    let scene = Scene::new(objects, box_scene.background())?;
+    Ok(Staged { scene, camera })
 }
 // ANCHOR_END: cornell_teapot
 
@@ -166,7 +181,7 @@ pub fn cornell_teapot(width: u32, height: u32) -> Result<(Scene, Camera)> {
 /// STABILITY S16 (pbrt-v4's interior furnace): a unit sphere of albedo 0.5 that
 /// emits 0.5, seen from its centre. Every path sees 0.5 + 0.5 * 0.5 + ...: depth d
 /// gives 0.5 (1 - 0.5^(d+1)) / (1 - 0.5), infinite depth exactly 1.
-pub fn interior_furnace(width: u32, height: u32) -> Result<(Scene, Camera)> {
+pub fn interior_furnace(width: u32, height: u32) -> Result<Staged> {
     let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)?);
     let objects = vec![Object::emitting(
         sphere,
@@ -174,18 +189,20 @@ pub fn interior_furnace(width: u32, height: u32) -> Result<(Scene, Camera)> {
         Vec3::splat(0.5),
     )];
     let camera = look_camera(width, height, Vec3::ZERO, -Vec3::Z, 0.5)?;
-    Ok((Scene::new(objects, Vec3::ZERO)?, camera))
+    let scene = Scene::new(objects, Vec3::ZERO)?;
+    Ok(Staged { scene, camera })
 }
 
 /// STABILITY S17: a unit sphere of albedo 0.5 centred at `centre`, in an environment
 /// of radiance 1. A ray that hits it sees exactly 0.5 (one bounce, then the
 /// environment); each wrong self-hit multiplies by 0.5 again. The camera, 3 units in
 /// front along +Z, sees only the sphere.
-pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, Camera)> {
+pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<Staged> {
     let sphere = Shape::Sphere(Sphere::new(centre, 1.0)?);
     let objects = vec![Object::new(sphere, Material::diffuse(Vec3::splat(0.5))?)];
     let camera = look_camera(width, height, centre + 3.0 * Vec3::Z, -Vec3::Z, 0.2)?;
-    Ok((Scene::new(objects, Vec3::ONE)?, camera))
+    let scene = Scene::new(objects, Vec3::ONE)?;
+    Ok(Staged { scene, camera })
 }
 // ANCHOR_END: furnaces
 
@@ -201,7 +218,7 @@ pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<(Scene, Cam
 /// at wide angles); MIS keeps area sampling's sigma under the small light and beats
 /// both under the large one; and cone sampling of the spheres leaves MIS little to
 /// add on a Lambertian floor.
-pub fn two_lights(width: u32, height: u32) -> Result<(Scene, Camera)> {
+pub fn two_lights(width: u32, height: u32) -> Result<Staged> {
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     let small = Sphere::new(Vec3::new(-1.5, 1.0, 0.0), 0.05)?;
     let large = Sphere::new(Vec3::new(1.5, 1.5, 0.0), 1.0)?;
@@ -212,6 +229,7 @@ pub fn two_lights(width: u32, height: u32) -> Result<(Scene, Camera)> {
     ];
     let eye = Vec3::new(0.0, 4.0, 6.0);
     let camera = look_camera(width, height, eye, Vec3::new(0.0, 0.5, 0.0) - eye, 0.5)?;
-    Ok((Scene::new(objects, Vec3::ZERO)?, camera))
+    let scene = Scene::new(objects, Vec3::ZERO)?;
+    Ok(Staged { scene, camera })
 }
 // ANCHOR_END: two_lights

@@ -19,7 +19,7 @@ use render_lessons::sampling::{
 };
 use render_lessons::scene::Scene;
 use render_lessons::scenes::path_tracing;
-use render_lessons::scenes::path_tracing::SceneName;
+use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
 /// Writes `10_path.png`, `10_hemisphere.png` and the steps' renders.
 pub fn figures(out: &Output) -> Result<()> {
@@ -172,7 +172,10 @@ impl Step {
     /// render with seed 1 from the scene's camera (a thin lens focused at 220 when
     /// the aperture is not 0), the calls the example's study makes.
     pub fn render(&self, width: u32, height: u32) -> Result<Framebuffer> {
-        let (scene, pinhole) = self.scene.build(width, height)?;
+        let Staged {
+            scene,
+            camera: pinhole,
+        } = self.scene.build(width, height)?;
         let camera = match self.aperture {
             0.0 => pinhole,
             aperture => pinhole.with_lens(aperture, 220.0)?,
@@ -237,7 +240,7 @@ fn is_diffuse(scene: &Scene, v: &PathVertex) -> bool {
 /// estimator's own `Path`, with next event estimation (MIS draws the same random numbers,
 /// so its paths take the same turns).
 pub fn path_figure() -> Result<Diagram> {
-    let (scene, camera) = path_tracing::cornell(160, 120)?;
+    let Staged { scene, camera } = path_tracing::cornell(160, 120)?;
     let s = Settings {
         sampling: Sampling::NextEvent,
         ..Settings::default()

@@ -8,7 +8,7 @@ use render_lessons::course::lesson::Output;
 use render_lessons::course::measure::variance::pixel_variance;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::pathtrace::{Sampling, Settings, SphereSampling};
-use render_lessons::scenes::path_tracing;
+use render_lessons::scenes::path_tracing::{self, Staged};
 
 /// The figure's size per panel and its samples per pixel.
 const WIDTH: u32 = 256;
@@ -18,7 +18,7 @@ const SPP: u32 = 32;
 /// Writes `10_variance.png`: sigma / (sigma + 1) per pixel, cosine sampling (left)
 /// and MIS (right), the lesson's default settings otherwise.
 pub fn figures(out: &Output) -> Result<()> {
-    let (scene, camera) = path_tracing::cornell(WIDTH, HEIGHT)?;
+    let Staged { scene, camera } = path_tracing::cornell(WIDTH, HEIGHT)?;
     let panel = |sampling| -> Result<Framebuffer> {
         let settings = Settings {
             sampling,

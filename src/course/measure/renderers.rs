@@ -19,7 +19,7 @@ use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
 use crate::pathtrace::{Accumulator, PixelSampling, Sampling, Settings};
 use crate::scene::Scene;
-use crate::scenes::path_tracing::cornell;
+use crate::scenes::path_tracing::{Staged, cornell};
 
 /// The four strategies of lesson 10, worst first, with their names in the legend.
 pub const TECHNIQUES: [(Sampling, &str); 4] = [
@@ -142,7 +142,7 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
             min: 1,
         });
     }
-    let (scene, camera) = cornell(plan.width, plan.height)?;
+    let Staged { scene, camera } = cornell(plan.width, plan.height)?;
     let reference = reference(&scene, &camera, plan.reference_spp)?;
     let total: u32 = plan.passes.iter().sum();
     let mut chart = Chart::new(

@@ -195,13 +195,13 @@ fn with_caustics(scene: &Scene, path: Path<'_, Scene>) -> (Vec3, Vec3) {
 mod tests {
     use super::*;
     use crate::pathtrace::{Sampling, radiance};
-    use crate::scenes::path_tracing::cornell;
+    use crate::scenes::path_tracing::{Staged, cornell};
 
     /// The measurement watches the estimator's own path: its sample is, bit for bit,
     /// the one `radiance` returns, and the caustic part is a part of it.
     #[test]
     fn the_watched_sample_is_the_estimators() {
-        let (scene, camera) = cornell(16, 12).unwrap();
+        let Staged { scene, camera } = cornell(16, 12).unwrap();
         for sampling in Sampling::ALL {
             let settings = Settings {
                 sampling,

@@ -17,7 +17,7 @@ use render_lessons::Result;
 use render_lessons::course::diagram::cross_section;
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::report::{Table, nums, vec3};
-use render_lessons::ray::{Interval, Ray};
+use render_lessons::ray::{ClosedSpan, Interval, Ray};
 use render_lessons::shapes::{Aabb, Plane, Quadric, Shape, Sphere, Triangle};
 
 fn main() -> ExitCode {
@@ -63,7 +63,7 @@ pub fn naive_and_robust<'a>(cases: impl IntoIterator<Item = &'a Case>) -> String
 pub fn methods(shape: &Shape, ray: &Ray) -> [(&'static str, Vec<f32>); 2] {
     let line = Interval::EVERYWHERE;
     let one = |t: Option<f32>| Vec::from_iter(t);
-    let pair = |p: Option<(f32, f32)>| p.map_or(vec![], |(t0, t1)| vec![t0, t1]);
+    let pair = |p: Option<ClosedSpan>| p.map_or(vec![], |s| vec![s.t0, s.t1]);
     match shape {
         Shape::Sphere(s) => [
             ("textbook roots", s.roots_textbook(ray).to_vec()),

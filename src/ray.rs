@@ -157,6 +157,17 @@ impl Interval {
 }
 // ANCHOR_END: interval
 
+/// The part of a ray inside a closed box, `t0 <= t <= t1`: both ends CLOSED, unlike
+/// [`Interval`]'s. A box's slab test returns it; `t0 == t1` is a ray that only
+/// touches the box (an edge or a corner), still a hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClosedSpan {
+    /// Where the ray enters (the closed lower end).
+    pub t0: f32,
+    /// Where it leaves (the closed upper end), `t1 >= t0`.
+    pub t1: f32,
+}
+
 // ANCHOR: crossings
 /// Every `t` at which a ray's line crosses a surface: both crossings of a sphere, a
 /// box or a quadric (entry and exit), the one of a plane, triangle or quad; none, one

@@ -8,7 +8,7 @@
 mod common;
 
 use render_lessons::course::measure::Quality;
-use render_lessons::course::measure::triangle::{box_cases, box_counts};
+use render_lessons::course::measure::triangle::{BoxCounts, box_cases, box_counts};
 #[path = "../examples/07_intersections.rs"]
 #[allow(dead_code)]
 mod lesson;
@@ -17,7 +17,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::course::diagram::cross_section;
-use render_lessons::ray::{Interval, Ray};
+use render_lessons::ray::{ClosedSpan, Interval, Ray};
 use render_lessons::shapes::{Aabb, Barycentric, Plane, Shape, Sphere, Triangle};
 
 fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
@@ -265,7 +265,7 @@ fn cube() -> Aabb {
 
 /// A slab test written the naive way round: `t0 = if t0 > t_near { t0 } else { t_near }`
 /// lets a NaN from 0 * inf replace the interval (kept to show the failure).
-fn naive_slab(b: &Aabb, r: &Ray, range: Interval) -> Option<(f32, f32)> {
+fn naive_slab(b: &Aabb, r: &Ray, range: Interval) -> Slab {
     let (mut t0, mut t1) = (range.min, range.max);
     for i in 0..3 {
         let inv = 1.0 / r.direction()[i];
@@ -278,7 +278,15 @@ fn naive_slab(b: &Aabb, r: &Ray, range: Interval) -> Option<(f32, f32)> {
             return None;
         }
     }
-    Some((t0, t1))
+    Some(ClosedSpan { t0, t1 })
+}
+
+/// What a slab test returns: the closed span `[t0, t1]` inside the box, or `None`.
+type Slab = Option<ClosedSpan>;
+
+/// The closed span `[t0, t1]` a slab test returns.
+fn closed(t0: f32, t1: f32) -> Slab {
+    Some(ClosedSpan { t0, t1 })
 }
 
 #[test]
@@ -286,25 +294,25 @@ fn s8_slab_truth_table() {
     let b = cube();
     // (box, origin, direction, expected interval clipped to [0, inf))
     let flat = Aabb::new(Vec3::new(-1.0, 0.0, -1.0), Vec3::new(1.0, 0.0, 1.0)).unwrap();
-    let table: [(Aabb, [f32; 3], [f32; 3], Pair); 10] = [
+    let table: [(Aabb, [f32; 3], [f32; 3], Slab); 10] = [
         // In the top face's plane but outside in x: miss.
         (b, [3.0, 1.0, -5.0], [0.0, 0.0, 1.0], None),
         // In the plane z = 3, outside: miss.
         (b, [-5.0, 1.0, 3.0], [1.0, 0.0, 0.0], None),
         // A box of zero thickness, hit head on at y = 0: t = 1.
-        (flat, [0.5, 1.0, 0.5], [0.0, -1.0, 0.0], Some((1.0, 1.0))),
+        (flat, [0.5, 1.0, 0.5], [0.0, -1.0, 0.0], closed(1.0, 1.0)),
         // Origin inside: from 0 to the exit at x = 1.
-        (b, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], Some((0.0, 1.0))),
+        (b, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], closed(0.0, 1.0)),
         // Box behind the origin: miss.
         (b, [0.0, 0.0, 5.0], [0.0, 0.0, 1.0], None),
         // Along the top face's plane, over the face: touches from z = -1 to 1.
-        (b, [0.0, 1.0, -5.0], [0.0, 0.0, 1.0], Some((4.0, 6.0))),
+        (b, [0.0, 1.0, -5.0], [0.0, 0.0, 1.0], closed(4.0, 6.0)),
         // Along an edge (two faces' planes at once).
-        (b, [1.0, 1.0, -5.0], [0.0, 0.0, 1.0], Some((4.0, 6.0))),
+        (b, [1.0, 1.0, -5.0], [0.0, 0.0, 1.0], closed(4.0, 6.0)),
         // Zero components, straight through.
-        (b, [0.5, -0.5, -5.0], [0.0, 0.0, 1.0], Some((4.0, 6.0))),
+        (b, [0.5, -0.5, -5.0], [0.0, 0.0, 1.0], closed(4.0, 6.0)),
         // Negative zero components: 1 / -0 = -inf must work too.
-        (b, [0.5, 0.5, 5.0], [-0.0, -0.0, -1.0], Some((4.0, 6.0))),
+        (b, [0.5, 0.5, 5.0], [-0.0, -0.0, -1.0], closed(4.0, 6.0)),
         // Parallel to x, just outside in y: miss.
         (b, [-5.0, 1.0 + 1e-6, 0.0], [1.0, 0.0, 0.0], None),
     ];
@@ -566,7 +574,11 @@ fn s6_conservative_box_never_rejects_its_own_triangle() {
     // The cases of lesson 11's S6 finding: rays aimed exactly at a vertex of random
     // triangles, kept when the watertight test hits, with the triangle's f32 box.
     let cases = box_cases(Quality::Quick).unwrap();
-    let (tested, naive_miss, conservative_miss) = box_counts(&cases);
+    let BoxCounts {
+        rays: tested,
+        plain: naive_miss,
+        conservative: conservative_miss,
+    } = box_counts(&cases);
     eprintln!(
         "S6: {tested} vertex hits; plain slab rejects {naive_miss}, conservative {conservative_miss}"
     );
@@ -696,7 +708,7 @@ proptest! {
         }
         let (a, b, e) = corners;
         let bx = Aabb::new(a.min(b), a.max(b)).unwrap();
-        if let Some((t0, t1)) = bx.slab(&r, Interval::AHEAD) {
+        if let Some(ClosedSpan { t0, t1 }) = bx.slab(&r, Interval::AHEAD) {
             prop_assert!(!t0.is_nan() && !t1.is_nan() && t0 <= t1);
         }
         if let Some(h) = bx.hit(&r, Interval::AHEAD) {
@@ -809,7 +821,7 @@ fn lesson_crossings_are_each_shapes_own_roots() {
             Shape::Plane(p) => p.t(ray).into_iter().collect(),
             Shape::Aabb(b) => b
                 .slab(ray, Interval::new(all.0, all.1))
-                .map_or(vec![], |(a, b)| vec![a, b]),
+                .map_or(vec![], |s| vec![s.t0, s.t1]),
             Shape::Triangle(t) => t
                 .watertight(ray, Interval::new(all.0, all.1))
                 .map(|h| vec![h.t])
@@ -954,7 +966,7 @@ fn s8_a_ray_along_any_face_hits_for_either_sign_of_zero() {
             let (o, d) = (r.origin(), r.direction());
             assert_eq!(
                 b.slab(&r, Interval::AHEAD),
-                Some((4.0, 6.0)),
+                closed(4.0, 6.0),
                 "o {o}, d {d:?}"
             );
             let wide = b.slab_conservative(&r, Interval::AHEAD);

@@ -25,7 +25,7 @@ use render_lessons::camera::{
 };
 use render_lessons::course::exercises::check::*;
 use render_lessons::raster::ScreenVertex;
-use render_lessons::ray::{Interval, Ray};
+use render_lessons::ray::{ClosedSpan, Interval, Ray};
 use render_lessons::scene::{Object, PointLight, Scene};
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere};
 use render_lessons::transform::Transform;
@@ -1334,7 +1334,7 @@ mod checks {
         by_min_max: bool,
         keep_nan: bool,
         closed: bool,
-    ) -> impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> Option<(f32, f32)> {
+    ) -> impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> Option<ClosedSpan> {
         move |o, inv_d, min, max, range: Interval| {
             let (mut t0, mut t1) = (range.min, range.max);
             for i in 0..3 {
@@ -1357,7 +1357,7 @@ mod checks {
                     return None;
                 }
             }
-            Some((t0, t1))
+            Some(ClosedSpan { t0, t1 })
         }
     }
 

@@ -230,7 +230,7 @@ mod tests {
             };
             let expected = aabb
                 .slab_conservative(&ray, range)
-                .map(|(t0, _)| t0.to_bits());
+                .map(|span| span.t0.to_bits());
             let box_ray = BoxRay::new(&PreparedRay::new(&ray));
             let entry = box_entry((min.into(), max.into()), &box_ray, range).map(f32::to_bits);
             assert_eq!(entry, expected, "case {n}: {aabb:?} {ray:?} {range:?}");

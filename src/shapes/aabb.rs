@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use crate::error::{Error, Result, finite3};
 use crate::float::gamma;
-use crate::ray::{Crossings, Interval, Ray};
+use crate::ray::{ClosedSpan, Crossings, Interval, Ray};
 use crate::shapes::{Hit, PreparedRay};
 
 /// Where a ray crosses a box's surface: the distance `t`, the `axis` of the face
@@ -119,8 +119,8 @@ impl Aabb {
     }
 
     // ANCHOR: slab
-    /// The slab test: the interval `[t0, t1]` of the ray inside the box, clipped to
-    /// `[t_min, t_max]`, or `None`.
+    /// The slab test: the closed interval `[t0, t1]` of the ray inside the box,
+    /// clipped to `range`, or `None`.
     ///
     /// Convention: INCLUSIVE. The box is closed and the result is a hit whenever
     /// t0 <= t1, so a ray that grazes an edge, touches a corner or runs along a face
@@ -134,9 +134,9 @@ impl Aabb {
     /// depend on the sign of the zero; `slab_ends` turns it into -inf (an entry) or
     /// +inf (an exit), so the axis on whose boundary the ray runs constrains nothing,
     /// for either sign, as the closed box requires.
-    pub fn slab(&self, ray: &Ray, range: Interval) -> Option<(f32, f32)> {
+    pub fn slab(&self, ray: &Ray, range: Interval) -> Option<ClosedSpan> {
         let s = self.span(ray.origin(), ray.direction().recip(), range, Exits::Exact)?;
-        Some((s.t0, s.t1))
+        Some(ClosedSpan { t0: s.t0, t1: s.t1 })
     }
     // ANCHOR_END: slab
 
@@ -146,7 +146,7 @@ impl Aabb {
     /// operations behind it cannot make the box miss a point that lies on it, such as
     /// a vertex of a triangle it bounds (STABILITY S6). The BVH's node test applies
     /// the same rule to its boxes, and gives the same entries (a test ties the two).
-    pub fn slab_conservative(&self, ray: &Ray, range: Interval) -> Option<(f32, f32)> {
+    pub fn slab_conservative(&self, ray: &Ray, range: Interval) -> Option<ClosedSpan> {
         self.slab_conservative_prepared(&PreparedRay::new(ray), range)
     }
     // ANCHOR_END: slab_conservative
@@ -158,10 +158,10 @@ impl Aabb {
         &self,
         ray: &PreparedRay,
         range: Interval,
-    ) -> Option<(f32, f32)> {
+    ) -> Option<ClosedSpan> {
         let o = ray.ray().origin();
         let s = self.span(o, ray.inv_d, range, Exits::MovedOut)?;
-        Some((s.t0, s.t1))
+        Some(ClosedSpan { t0: s.t0, t1: s.t1 })
     }
 
     // ANCHOR: span
@@ -230,7 +230,7 @@ impl Aabb {
         Hit::new(ray, t, point, normal, error)
     }
 
-    /// The nearest crossing of the box surface with `t_min < t < t_max`:
+    /// The nearest crossing of the box surface within `range`:
     /// [`Aabb::nearest_face`], then [`Aabb::hit_at`].
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let face = self.nearest_face(&PreparedRay::new(ray), range)?;

@@ -6,12 +6,12 @@
 
 use glam::Vec3;
 
-use crate::ray::Interval;
+use crate::ray::{ClosedSpan, Interval};
 use crate::shapes::Aabb;
 
-/// Coding exercise 11.1: the slab test with a precomputed `1/d`. The interval
+/// Coding exercise 11.1: the slab test with a precomputed `1/d`. The closed interval
 /// `[t0, t1]` of the ray `o + t d` inside the closed box `[min, max]`, clipped to
-/// `[range.min, range.max]`, or `None` if it is empty. `inv_d` is `1 / d`, component by
+/// `[range.min, range.max]`, as a `ClosedSpan { t0, t1 }`, or `None` if it is empty. `inv_d` is `1 / d`, component by
 /// component, computed once per ray by the caller: a zero component of `d` gives an
 /// infinite one here (`1 / 0 = inf`, `1 / -0 = -inf`).
 ///
@@ -20,7 +20,7 @@ use crate::shapes::Aabb;
 /// t_near if t_near > t0, lower t1 to t_far if t_far < t1, and give up when t0 > t1.
 /// The box is closed (a hit whenever t0 <= t1), and a NaN from 0 * inf (a ray lying
 /// in a face's plane) must leave the interval alone.
-pub fn slab(o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, range: Interval) -> Option<(f32, f32)> {
+pub fn slab(o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, range: Interval) -> Option<ClosedSpan> {
     todo!(
         "Coding exercise 11.1 (chapter 11, Speed against accuracy): the slab test \
          with a precomputed 1/d"

@@ -6,7 +6,7 @@
 use glam::Vec3;
 
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, run, v};
-use crate::ray::{Interval, Ray};
+use crate::ray::{ClosedSpan, Interval, Ray};
 use crate::shapes::Aabb;
 
 /// Coding exercise 11.1.
@@ -29,8 +29,8 @@ struct SlabArgs {
     range: Interval,
 }
 
-/// The answer: the interval `[t0, t1]`, or `None`.
-type SlabAnswer = Option<(f32, f32)>;
+/// The answer: the closed interval `[t0, t1]`, or `None`.
+type SlabAnswer = Option<ClosedSpan>;
 
 // ANCHOR: solution
 /// A worked solution of exercise 11.1, written as the exercise asks (the book shows
@@ -41,7 +41,7 @@ pub fn slab_solution(
     min: Vec3,
     max: Vec3,
     range: Interval,
-) -> Option<(f32, f32)> {
+) -> Option<ClosedSpan> {
     let (mut t0, mut t1) = (range.min, range.max);
     for i in 0..3 {
         let mut t_near = (min[i] - o[i]) * inv_d[i];
@@ -62,7 +62,7 @@ pub fn slab_solution(
             return None;
         }
     }
-    Some((t0, t1))
+    Some(ClosedSpan { t0, t1 })
 }
 // ANCHOR_END: solution
 
@@ -136,7 +136,18 @@ fn slab_wrongly(rule: Slab, a: &SlabArgs) -> SlabAnswer {
             return None;
         }
     }
-    Some((t0, t1))
+    Some(ClosedSpan { t0, t1 })
+}
+
+impl Answer for ClosedSpan {
+    /// Both ends equal within the tolerance.
+    fn close(&self, other: &ClosedSpan) -> bool {
+        self.t0.close(&other.t0) && self.t1.close(&other.t1)
+    }
+    /// `[t0, t1]`, closed.
+    fn show(&self) -> String {
+        format!("[{}, {}]", self.t0.show(), self.t1.show())
+    }
 }
 
 /// The same interval, a NaN matching a NaN.
@@ -144,7 +155,7 @@ fn same(a: &SlabAnswer, b: &SlabAnswer) -> bool {
     let eq = |x: f32, y: f32| x.close(&y) || (x.is_nan() && y.is_nan());
     match (a, b) {
         (None, None) => true,
-        (Some(a), Some(b)) => eq(a.0, b.0) && eq(a.1, b.1),
+        (Some(a), Some(b)) => eq(a.t0, b.t0) && eq(a.t1, b.t1),
         _ => false,
     }
 }

@@ -35,9 +35,31 @@ pub fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
     Ok(cases)
 }
 
-/// How often the plain and the conservative slab test reject the boxes of `cases`:
-/// (rays, plain rejects, conservative rejects).
-pub fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
+/// How many of the S6 rays ([`box_cases`]) each slab test turns away from their
+/// own triangle's box.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BoxCounts {
+    /// The rays, each with its triangle's box.
+    pub rays: usize,
+    /// The boxes [`Aabb::slab`] rejects.
+    pub plain: usize,
+    /// The boxes [`Aabb::slab_conservative`] rejects (none, if it is right).
+    pub conservative: usize,
+}
+
+/// [`BoxCounts`], and what each slab test costs, in nanoseconds per test.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoxRejects {
+    /// How many boxes each test rejects.
+    pub counts: BoxCounts,
+    /// [`Aabb::slab`]'s time per test.
+    pub plain_ns: f64,
+    /// [`Aabb::slab_conservative`]'s time per test.
+    pub conservative_ns: f64,
+}
+
+/// How often the plain and the conservative slab test reject the boxes of `cases`.
+pub fn box_counts(cases: &[(Aabb, Ray)]) -> BoxCounts {
     let plain = cases
         .iter()
         .filter(|(b, r)| b.slab(r, Interval::AHEAD).is_none())
@@ -46,16 +68,19 @@ pub fn box_counts(cases: &[(Aabb, Ray)]) -> (usize, usize, usize) {
         .iter()
         .filter(|(b, r)| b.slab_conservative(r, Interval::AHEAD).is_none())
         .count();
-    (cases.len(), plain, conservative)
+    BoxCounts {
+        rays: cases.len(),
+        plain,
+        conservative,
+    }
 }
 
 /// STABILITY S6: rays aimed exactly at a vertex of random triangles, kept when the
 /// watertight test hits; how often the plain and the conservative slab test on the
-/// triangle's f32 bounding box reject it, and their times per test:
-/// (rays, plain rejects, conservative rejects, plain ns, conservative ns).
-pub fn box_rejects(quality: Quality) -> Result<(usize, usize, usize, f64, f64)> {
+/// triangle's f32 bounding box reject it, and their times per test.
+pub fn box_rejects(quality: Quality) -> Result<BoxRejects> {
     let cases = box_cases(quality)?;
-    let (n_cases, plain, conservative) = box_counts(&cases);
+    let counts = box_counts(&cases);
     let n = cases.len().max(1);
     let calls = quality.pick(300_000, 3_000_000);
     let [plain_ns, conservative_ns] = fastest(
@@ -75,5 +100,9 @@ pub fn box_rejects(quality: Quality) -> Result<(usize, usize, usize, f64, f64)> 
             },
         ],
     );
-    Ok((n_cases, plain, conservative, plain_ns, conservative_ns))
+    Ok(BoxRejects {
+        counts,
+        plain_ns,
+        conservative_ns,
+    })
 }

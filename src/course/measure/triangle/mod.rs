@@ -18,7 +18,7 @@
 mod boxes;
 mod tables;
 
-pub use boxes::{box_cases, box_counts, box_rejects};
+pub use boxes::{BoxCounts, BoxRejects, box_cases, box_counts, box_rejects};
 pub use tables::exact_quoted;
 
 use glam::Vec3;
@@ -267,7 +267,16 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         .iter()
         .map(|(m, ns, leak)| format!("{} {ns:.1} ns, {leak:.2}%", m.name()))
         .collect();
-    let (cases, plain, conservative, plain_ns, conservative_ns) = box_rejects(quality)?;
+    let BoxRejects {
+        counts:
+            BoxCounts {
+                rays: cases,
+                plain,
+                conservative,
+            },
+        plain_ns,
+        conservative_ns,
+    } = box_rejects(quality)?;
     let (slivers, sliver_rays) = mesh_and_rays(SLIVERS, 1)?;
     let findings = vec![
         format!(

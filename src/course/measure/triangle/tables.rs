@@ -2,7 +2,7 @@
 //! (S4, S5, the slivers) and the S6 box rejections, exact and measured without a
 //! clock; and the times, which only the lesson measures.
 
-use super::boxes::{box_cases, box_counts};
+use super::boxes::{BoxCounts, box_cases, box_counts};
 use super::{MESH, SLIVERS, TriangleMethod, bumpy_sphere, leaks, mesh_and_rays, per_edge};
 use crate::course::measure::Quality;
 use crate::course::report::{BookNumbers, Quoted};
@@ -51,7 +51,11 @@ pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
         cells.extend(TriangleMethod::ALL.map(|m| share(leaks(m, tris, rays), rays.len())));
         leaks_table = leaks_table.row(cells);
     }
-    let (cases, plain, conservative) = box_counts(&box_cases(quality)?);
+    let BoxCounts {
+        rays: cases,
+        plain,
+        conservative,
+    } = box_counts(&box_cases(quality)?);
     let boxes = Quoted::new(
         "boxes",
         false,

@@ -13,67 +13,36 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::Vec3;
+use render_lessons::course::failure::LessonResult;
 use render_lessons::course::image_tables::{coverage_table, differing_table, spots_table};
 use render_lessons::course::lesson::{self, ImageFlags, Output};
-use render_lessons::course::mine;
+use render_lessons::course::mine::{self, Picture};
 use render_lessons::course::parsers;
 use render_lessons::course::report::vec3;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Interval;
 use render_lessons::raycast::{lit, shadowless};
-use render_lessons::render::{render, with_threads};
+use render_lessons::render::render;
 use render_lessons::scenes::{STILL_LIFE_OBJECTS, still_life, still_life_cameras};
 use render_lessons::spawn::Offset;
 use render_lessons::{Error, Result};
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        let (closest, lambert) = if args.mine {
-            let closest = mine::if_passing(mine::my_closest())?;
-            (closest, mine::if_passing(mine::my_lambert())?)
-        } else {
-            (None, None)
-        };
-        let mine_images = u64::from(closest.is_some()) + u64::from(lambert.is_some());
-        let (size, threads) = args.image.check(IMAGES.len() as u64 + mine_images)?;
-        with_threads(threads, || {
+    let mine = || my_pictures(args.mine);
+    args.image
+        .run_with_mine(Images::COUNT, &args.output, mine, |size| {
             let images = images(size, args.epsilon, args.far)?;
             lesson::print(&numbers(size, args.epsilon, args.far, &images)?);
-            for (name, image) in IMAGES.iter().zip(&images) {
-                args.output.image(name, image)?;
-            }
-            if let Some(closest) = closest {
-                let image = my_shadowless_image(closest, size)?;
-                args.output.image("08_shadowless_mine.png", &image)?;
-            }
-            if let Some(lambert) = lambert {
-                let image = my_lambert_image(lambert, size)?;
-                args.output.image("08_lambert_mine.png", &image)?;
-            }
-            Ok(())
+            Ok(args.output.images(images.named())?)
         })
-    })
 }
 
-/// The lesson's images, in the order [`images`] renders them.
-pub const IMAGES: &[&str] = &[
-    "08_shadowless_ortho.png",
-    "08_shadowless_pinhole.png",
-    "08_lambert.png",
-    "08_far_fixed_epsilon.png",
-    "08_far_scaled_offset.png",
-];
-
 // ANCHOR: images
-/// Every image of the lesson, named in [`IMAGES`]: the scene shadowless through both
-/// cameras, lit with shadow rays, and lit again moved by `far`, where a fixed
-/// shadow-ray `epsilon` fails and the scaled offset does not.
-pub fn images(
-    (width, height): (u32, u32),
-    epsilon: f32,
-    far: Vec3,
-) -> Result<[Framebuffer; IMAGES.len()]> {
+/// Every image of the lesson: the scene shadowless through both cameras, lit with
+/// shadow rays, and lit again moved by `far`, where a fixed shadow-ray `epsilon`
+/// fails and the scaled offset does not.
+pub fn images((width, height): (u32, u32), epsilon: f32, far: Vec3) -> Result<Images> {
     let near = still_life(Vec3::ZERO)?;
     let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
     let far_scene = still_life(far).map_err(|_| Error::Invalid {
@@ -81,15 +50,40 @@ pub fn images(
         reason: "moves the scene out of f32's reach (its triangle loses its area)",
     })?;
     let [_, far_pinhole] = still_life_cameras(width, height, far)?;
-    Ok([
-        render(&ortho, |r| shadowless(&near, r))?,
-        render(&pinhole, |r| shadowless(&near, r))?,
-        render(&pinhole, |r| lit(&near, r, Offset::Scaled))?,
-        render(&far_pinhole, |r| lit(&far_scene, r, Offset::Fixed(epsilon)))?,
-        render(&far_pinhole, |r| lit(&far_scene, r, Offset::Scaled))?,
-    ])
+    Ok(Images {
+        shadowless_ortho: render(&ortho, |r| shadowless(&near, r))?,
+        shadowless_pinhole: render(&pinhole, |r| shadowless(&near, r))?,
+        lambert: render(&pinhole, |r| lit(&near, r, Offset::Scaled))?,
+        far_fixed_epsilon: render(&far_pinhole, |r| lit(&far_scene, r, Offset::Fixed(epsilon)))?,
+        far_scaled_offset: render(&far_pinhole, |r| lit(&far_scene, r, Offset::Scaled))?,
+    })
 }
 // ANCHOR_END: images
+
+/// The lesson's images, one field per file ([`Images::named`]).
+pub struct Images {
+    pub shadowless_ortho: Framebuffer,
+    pub shadowless_pinhole: Framebuffer,
+    pub lambert: Framebuffer,
+    pub far_fixed_epsilon: Framebuffer,
+    pub far_scaled_offset: Framebuffer,
+}
+
+impl Images {
+    /// How many images the lesson holds at once.
+    pub const COUNT: u64 = 5;
+
+    /// Each image with the name of the file it is saved as.
+    pub fn named(&self) -> [(&'static str, &Framebuffer); Self::COUNT as usize] {
+        [
+            ("08_shadowless_ortho.png", &self.shadowless_ortho),
+            ("08_shadowless_pinhole.png", &self.shadowless_pinhole),
+            ("08_lambert.png", &self.lambert),
+            ("08_far_fixed_epsilon.png", &self.far_fixed_epsilon),
+            ("08_far_scaled_offset.png", &self.far_scaled_offset),
+        ]
+    }
+}
 
 /// The lesson's tables: pixels per object for both cameras, the acne count of the
 /// far scene, and a few pixels of the Lambert image.
@@ -97,7 +91,7 @@ pub fn numbers(
     (width, height): (u32, u32),
     epsilon: f32,
     far: Vec3,
-    images: &[Framebuffer; IMAGES.len()],
+    images: &Images,
 ) -> Result<String> {
     let near = still_life(Vec3::ZERO)?;
     let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
@@ -105,7 +99,11 @@ pub fn numbers(
         format!("Shadowless ray casting, {width} x {height} pixels: pixels showing each primitive");
     let cameras = [("orthographic", &ortho), ("pinhole", &pinhole)];
     let coverage = coverage_table(&title, &near, &STILL_LIFE_OBJECTS, &cameras);
-    let [_, _, lambert, fixed, scaled] = images;
+    let (lambert, fixed, scaled) = (
+        &images.lambert,
+        &images.far_fixed_epsilon,
+        &images.far_scaled_offset,
+    );
     let title = format!(
         "Shadow rays, scene moved by {}: pixels differing from the clean image",
         vec3(far, 0)
@@ -125,6 +123,26 @@ pub fn numbers(
     ];
     let pixels = spots_table(title, lambert, &spots);
     Ok(format!("{coverage}\n{acne}\n{pixels}"))
+}
+
+/// With `--mine`, the pictures drawn with the student's functions that pass their
+/// checks ([`mine::if_passing`]): the shadowless pinhole image with `closest`, as
+/// `08_shadowless_mine.png`, and the Lambert image with `lambert`, as
+/// `08_lambert_mine.png`.
+fn my_pictures(mine: bool) -> LessonResult<Vec<Picture>> {
+    let mut pictures = Vec::new();
+    if !mine {
+        return Ok(pictures);
+    }
+    if let Some(closest) = mine::if_passing(mine::my_closest())? {
+        let draw = move |size| my_shadowless_image(closest, size);
+        pictures.push(Picture::new("08_shadowless_mine.png", draw));
+    }
+    if let Some(lambert) = mine::if_passing(mine::my_lambert())? {
+        let draw = move |size| my_lambert_image(lambert, size);
+        pictures.push(Picture::new("08_lambert_mine.png", draw));
+    }
+    Ok(pictures)
 }
 
 /// The shadowless pinhole image drawn with `closest`, the student's own once it

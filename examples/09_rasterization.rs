@@ -24,7 +24,7 @@ use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Agreement, Model, Shadows, TOLERANCE, agreement, difference};
 use render_lessons::raster::{check_segments, floor_settings, point_light, rasterize};
 use render_lessons::raster::{reference, tessellate};
-use render_lessons::render::{render, with_threads};
+use render_lessons::render::render;
 use render_lessons::scenes::{MeshScene, PlacedMesh, still_life_shadows};
 use render_lessons::scenes::{STILL_LIFE_OBJECTS, TORUS_OBJ, still_life, still_life_pinhole};
 use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
@@ -33,35 +33,28 @@ use render_lessons::{raycast::lit, scene::Scene};
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
-    lesson::run(|| {
-        // The images it keeps, and as many again while it works (z-buffers, shadows).
-        let ((width, height), threads) = args.image.check(2 * IMAGES.len() as u64)?;
+    // The images it keeps, and as many again while it works (z-buffers, shadows).
+    args.image.run(2 * Images::COUNT, |(width, height)| {
         let scene = still_life(Vec3::ZERO)?;
         let camera = still_life_pinhole(width, height)?;
-        let shadows = still_life_shadows(args.shadow_map_size, args.bias);
         check_segments(&scene, args.segments)?;
+        let shadows = still_life_shadows(args.shadow_map_size, args.bias);
         let mesh = mesh_on_the_floor(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
-        let model = &mesh.model;
-        let i = with_threads(threads, || {
-            images(&scene, &camera, args.segments, shadows, model)
-        })?;
+        let lesson = images(&scene, &camera, args.segments, shadows, &mesh.model)?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
-        lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &i)?);
-        lesson::print(&i.times.table().to_string()); // the terminal only
-        for (name, image) in IMAGES.iter().zip(&i.images) {
-            args.output.image(name, image)?;
-        }
-        Ok(())
+        lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &lesson)?);
+        lesson::print(&lesson.times.table().to_string()); // the terminal only
+        Ok(args.output.images(lesson.images.named())?)
     })
 }
 
 // ANCHOR: images
-/// Lecture 2's pipeline, stage by stage, beside the ray caster: the scene modelled
-/// as triangles (spheres of `segments` slices), lit by its point light, then
-/// transformed, clipped, rasterized and shaded per pixel and per vertex; the shadows
-/// both ways (the map with its bias, none, and 50 times too much); and the floor
-/// with `mesh`, both ways (the ray caster goes through a BVH when the mesh is too big
-/// to test every triangle).
+/// Lecture 2's pipeline, stage by stage, beside the ray caster: the scene ray cast
+/// (the reference); modelled as triangles (spheres of `segments` slices), lit by its
+/// point light, then transformed, clipped, rasterized and shaded per pixel and per
+/// vertex; the shadows both ways (the map with its bias, none, and 50 times too
+/// much); and the floor with `mesh`, both ways (the ray caster goes through a BVH
+/// when the mesh is too big to test every triangle).
 pub fn images(
     scene: &Scene,
     camera: &Camera,
@@ -69,36 +62,41 @@ pub fn images(
     shadows: Shadows,
     mesh: &Model,
 ) -> Result<Lesson> {
+    let mut t = Timings::default();
+    let ray_cast = t.time("ray cast, analytic scene", || reference(scene, camera))?;
+
     let models = tessellate(scene, segments)?; // modeling: vertex and triangle lists
     let light = point_light(scene)?; // lighting
     let pipeline = |models: &[Model], shading, shadows| {
         let settings = floor_settings(scene).with(shading, shadows);
         rasterize(models, camera, &light, &settings) // transform ... shading
     };
+    let per_pixel = t.time("rasterized, per-pixel shading", || {
+        pipeline(&models, PerPixel, None)
+    })?;
+    let per_vertex = pipeline(&models, PerVertex, None)?;
+    let difference = difference(&ray_cast.image, &per_pixel, &ray_cast.silhouettes)?;
+
+    let shadow_ray = t.time("ray cast with shadow rays", || {
+        render(camera, |r| lit(scene, r, Offset::Scaled))
+    })?;
     let mapped = |bias| pipeline(&models, PerPixel, Some(shadows.with_bias(bias)));
-    let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
+    let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
+    let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
+
     let pixels = u64::from(camera.film().width()) * u64::from(camera.film().height());
     let meshed = MeshScene::new(floor_and_mesh(scene, mesh)?, pixels);
     let mesh_cast = match meshed {
         MeshScene::List(_) => "ray cast, floor + mesh",
         MeshScene::Tree(_) => "ray cast through a BVH, floor + mesh",
     };
-    let mut t = Timings::default();
-    let ray_cast = t.time("ray cast, analytic scene", || reference(scene, camera))?;
-    let per_vertex = pipeline(&models, PerVertex, None)?;
-    let per_pixel = t.time("rasterized, per-pixel shading", || {
-        pipeline(&models, PerPixel, None)
-    })?;
-    let shadow_ray = t.time("ray cast with shadow rays", || {
-        render(camera, |r| lit(scene, r, Offset::Scaled))
-    })?;
-    let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
     let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera))?;
     drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes
+    let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
     let mesh_raster = t.time("rasterized, floor + mesh", || {
         pipeline(&floor_and_mesh_models, PerPixel, None)
     })?;
-    let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
+
     // Each rasterized image against its ray-cast counterpart, away from silhouettes.
     let mask = &ray_cast.silhouettes;
     let cast = ("ray_cast.png", &ray_cast.image, mask);
@@ -114,47 +112,68 @@ pub fn images(
         ("floor + mesh", &mesh_raster, mesh),
     ]
     .map(|(label, a, (name, b, mask))| (label, name, agreement(a, b, mask, TOLERANCE)));
-    let difference = difference(&ray_cast.image, &per_pixel, mask)?;
+    let images = Images {
+        ray_cast: ray_cast.image,
+        per_pixel,
+        per_vertex,
+        difference,
+        shadow_ray,
+        shadow_map,
+        shadow_map_acne: acne,
+        shadow_map_peter_pan: peter_pan,
+        mesh_ray_cast: mesh_ray_cast.image,
+        mesh_raster,
+    };
     Ok(Lesson {
-        images: [
-            ray_cast.image,
-            per_pixel,
-            per_vertex,
-            difference,
-            shadow_ray,
-            shadow_map,
-            acne,
-            peter_pan,
-            mesh_ray_cast.image,
-            mesh_raster,
-        ],
+        images,
         agreements: agreements.to_vec(),
         times: t,
     })
 }
 // ANCHOR_END: images
 
-/// The lesson's images, in the order of [`Lesson::images`].
-pub const IMAGES: &[&str] = &[
-    "09_ray_cast.png",
-    "09_per_pixel.png",
-    "09_per_vertex.png",
-    "09_difference.png",
-    "09_shadow_ray.png",
-    "09_shadow_map.png",
-    "09_shadow_map_acne.png",
-    "09_shadow_map_peter_pan.png",
-    "09_mesh_ray_cast.png",
-    "09_mesh_raster.png",
-];
-
-/// What the lesson produces: its images, named in [`IMAGES`]; each rasterized image
-/// against its ray-cast reference away from silhouettes (label, reference,
-/// agreement); and how long each renderer took, in seconds.
+/// What the lesson produces: its images; each rasterized image against its ray-cast
+/// reference away from silhouettes (label, reference, agreement); and how long each
+/// renderer took, in seconds.
 pub struct Lesson {
-    pub images: [Framebuffer; IMAGES.len()],
+    pub images: Images,
     pub agreements: Vec<(&'static str, &'static str, Agreement)>,
     pub times: Timings,
+}
+
+/// The lesson's images, one field per file ([`Images::named`]).
+pub struct Images {
+    pub ray_cast: Framebuffer,
+    pub per_pixel: Framebuffer,
+    pub per_vertex: Framebuffer,
+    pub difference: Framebuffer,
+    pub shadow_ray: Framebuffer,
+    pub shadow_map: Framebuffer,
+    pub shadow_map_acne: Framebuffer,
+    pub shadow_map_peter_pan: Framebuffer,
+    pub mesh_ray_cast: Framebuffer,
+    pub mesh_raster: Framebuffer,
+}
+
+impl Images {
+    /// How many images the lesson keeps.
+    pub const COUNT: u64 = 10;
+
+    /// Each image with the name of the file it is saved as.
+    pub fn named(&self) -> [(&'static str, &Framebuffer); Self::COUNT as usize] {
+        [
+            ("09_ray_cast.png", &self.ray_cast),
+            ("09_per_pixel.png", &self.per_pixel),
+            ("09_per_vertex.png", &self.per_vertex),
+            ("09_difference.png", &self.difference),
+            ("09_shadow_ray.png", &self.shadow_ray),
+            ("09_shadow_map.png", &self.shadow_map),
+            ("09_shadow_map_acne.png", &self.shadow_map_acne),
+            ("09_shadow_map_peter_pan.png", &self.shadow_map_peter_pan),
+            ("09_mesh_ray_cast.png", &self.mesh_ray_cast),
+            ("09_mesh_raster.png", &self.mesh_raster),
+        ]
+    }
 }
 
 /// The lesson's tables: the scene as triangles, and how far each rasterized image is
@@ -167,7 +186,10 @@ pub fn numbers(
 ) -> Result<String> {
     let models = tessellate(scene, segments)?;
     let counts = triangle_table(&STILL_LIFE_OBJECTS, &models, mesh, file);
-    let size = (lesson.images[0].width(), lesson.images[0].height());
+    let size = (
+        lesson.images.ray_cast.width(),
+        lesson.images.ray_cast.height(),
+    );
     let compare = agreement_table(size, TOLERANCE, &lesson.agreements);
     Ok(format!("{counts}\n{compare}"))
 }

@@ -116,7 +116,7 @@ fn the_lambert_image_matches_the_book_within_one_level() {
 #[test]
 fn every_pixel_is_finite_and_in_range() {
     let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
-    for (name, image) in lesson::IMAGES.iter().zip(images) {
+    for (name, image) in images.named() {
         for y in 0..image.height() {
             for x in 0..image.width() {
                 let c = image.get(x, y).unwrap();
@@ -292,8 +292,8 @@ fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
         scene.closest(ray, range)
     }
     let mine = lesson::my_shadowless_image(reference, SMALL).unwrap();
-    let [_, pinhole, ..] = lesson::images(SMALL, EPSILON, FAR).unwrap();
-    assert_eq!(mine, pinhole);
+    let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
+    assert_eq!(mine, images.shadowless_pinhole);
 }
 
 #[test]
@@ -304,8 +304,8 @@ fn mine_draws_the_lambert_image_with_the_given_lambert() {
         render_lessons::lighting::lambert(p, n, albedo, light, || visible)
     }
     let mine = lesson::my_lambert_image(reference, SMALL).unwrap();
-    let [_, _, lambert, ..] = lesson::images(SMALL, EPSILON, FAR).unwrap();
-    assert_eq!(mine, lambert);
+    let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
+    assert_eq!(mine, images.lambert);
 }
 
 #[cfg(not(feature = "exercises"))]

@@ -616,8 +616,6 @@ fn numbers() {
         let found = lesson.agreements.iter().find(|(l, _, _)| *l == label);
         found.map(|&(_, _, a)| a).unwrap()
     };
-    let image =
-        |name: &str| &lesson.images[lesson::IMAGES.iter().position(|n| *n == name).unwrap()];
     // The target: the rasterized image and the ray-cast one agree on at least
     // 99% of the pixels away from silhouettes, for the tessellated scene and the mesh.
     let per_pixel = by_label("per-pixel shading");
@@ -626,8 +624,8 @@ fn numbers() {
     assert!(mesh.percent_agreeing() >= 99.0, "{mesh:?}");
     // The table compares what the lesson writes: recomputed from the files' images.
     let recomputed = agreement(
-        image("09_per_pixel.png"),
-        image("09_ray_cast.png"),
+        &lesson.images.per_pixel,
+        &lesson.images.ray_cast,
         &reference(&scene, &still_life_pinhole(480, 270).unwrap())
             .unwrap()
             .silhouettes,

@@ -7,8 +7,10 @@ use std::process::ExitCode;
 
 use crate::course::diagram::Diagram;
 use crate::course::failure::{Failure, LessonResult};
+use crate::course::mine;
 use crate::error::Result;
 use crate::framebuffer::Framebuffer;
+use crate::render::with_threads;
 
 /// The flag every lesson accepts: the folder its images go to.
 #[derive(clap::Args, Clone, Debug)]
@@ -40,6 +42,16 @@ impl Output {
         wrote(&path);
         Ok(())
     }
+
+    /// Saves each image under its file name, in the output folder, and says so.
+    pub fn images<'a>(
+        &self,
+        named: impl IntoIterator<Item = (&'a str, &'a Framebuffer)>,
+    ) -> Result<()> {
+        named
+            .into_iter()
+            .try_for_each(|(name, image)| self.image(name, image))
+    }
 }
 
 /// The flags of a lesson that renders images of lesson 08's scene (lessons 08 and
@@ -60,9 +72,78 @@ pub struct ImageFlags {
 impl ImageFlags {
     /// The size and thread count, checked ([`budget`]) for a run that holds `images`
     /// images of this size at once.
-    pub fn check(&self, images: u64) -> Result<((u32, u32), Option<usize>)> {
+    pub fn check(&self, images: u64) -> Result<CheckedImage> {
         let threads = budget(self.width, self.height, self.threads, images)?;
-        Ok(((self.width, self.height), threads))
+        Ok(CheckedImage {
+            width: self.width,
+            height: self.height,
+            threads,
+        })
+    }
+
+    /// Runs a lesson that renders images, with [`run`]'s one-line errors: the flags
+    /// checked first for the `images` images the lesson holds at once, then `lesson`,
+    /// given the image size, on a pool of `--threads` workers ([`with_threads`]).
+    pub fn run(
+        &self,
+        images: u64,
+        lesson: impl FnOnce((u32, u32)) -> LessonResult<()> + Send,
+    ) -> ExitCode {
+        run(|| self.within_budget(images, &[], None, lesson))
+    }
+
+    /// [`ImageFlags::run`] with `--mine` pictures ([`mine::Picture`]): `mine` gives
+    /// them first (the student's functions checked, so that a failing check stops
+    /// the lesson before any work), the budget counts them among the images held,
+    /// and after `lesson` each is drawn at the same size and saved in `out`.
+    pub fn run_with_mine(
+        &self,
+        images: u64,
+        out: &Output,
+        mine: impl FnOnce() -> LessonResult<Vec<mine::Picture>>,
+        lesson: impl FnOnce((u32, u32)) -> LessonResult<()> + Send,
+    ) -> ExitCode {
+        run(|| self.within_budget(images, &mine()?, Some(out), lesson))
+    }
+
+    /// The body of [`ImageFlags::run`] and [`ImageFlags::run_with_mine`].
+    fn within_budget(
+        &self,
+        images: u64,
+        pictures: &[mine::Picture],
+        out: Option<&Output>,
+        lesson: impl FnOnce((u32, u32)) -> LessonResult<()> + Send,
+    ) -> LessonResult<()> {
+        let checked = self.check(images + pictures.len() as u64)?;
+        with_threads(checked.threads, || {
+            lesson(checked.size())?;
+            if let Some(out) = out {
+                for picture in pictures {
+                    out.image(picture.file, &(picture.draw)(checked.size())?)?;
+                }
+            }
+            Ok(())
+        })
+    }
+}
+
+/// `--width`, `--height` and `--threads` once [`ImageFlags::check`] has passed
+/// them: each side within `camera::MAX_RESOLUTION`, the images within the memory
+/// limit, the thread count within `limits::MAX_THREADS`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CheckedImage {
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// Worker threads; `None` for every core.
+    pub threads: Option<usize>,
+}
+
+impl CheckedImage {
+    /// The image size, `(width, height)` in pixels.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
     }
 }
 

@@ -14,6 +14,8 @@ use crate::camera::{Film, Frame};
 use crate::course::exercises as ch;
 use crate::course::exercises::check::{self, Exercise};
 use crate::course::failure::{Failure, LessonResult};
+use crate::error::Result;
+use crate::framebuffer::Framebuffer;
 use crate::lighting::AMBIENT;
 use crate::ray::{Interval, Ray};
 use crate::scene::{PointLight, Scene, SceneHit};
@@ -175,5 +177,29 @@ fn feature_off(exercise: Exercise, command: &str) -> Failure {
             "--mine runs your code for coding exercise {}; turn the exercises on: {command}",
             exercise.number
         ),
+    }
+}
+
+/// A `--mine` picture of a lesson that renders images: its file name, and how it is
+/// drawn at the lesson's image size with the student's function (which `draw`
+/// holds). [`crate::course::lesson::ImageFlags::run_with_mine`] draws and saves it
+/// after the lesson's own images.
+pub struct Picture {
+    /// The file name, `NN_..._mine.png`.
+    pub file: &'static str,
+    /// Draws the picture at `(width, height)` pixels.
+    pub draw: Box<dyn Fn((u32, u32)) -> Result<Framebuffer> + Send + Sync>,
+}
+
+impl Picture {
+    /// The picture `file`, drawn by `draw`.
+    pub fn new(
+        file: &'static str,
+        draw: impl Fn((u32, u32)) -> Result<Framebuffer> + Send + Sync + 'static,
+    ) -> Picture {
+        Picture {
+            file,
+            draw: Box::new(draw),
+        }
     }
 }

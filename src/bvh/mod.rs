@@ -237,7 +237,7 @@ impl Bvh {
 }
 
 /// A [`Scene`] together with a BVH over its objects: the same questions as the scene
-/// ([`BvhScene::closest_hit`], [`BvhScene::occluded`]) with the same answers, faster
+/// ([`Intersect::closest`], [`Intersect::occluded`]) with the same answers, faster
 /// once the scene is big. The scene itself is unchanged.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BvhScene {

@@ -193,7 +193,7 @@ impl Bvh {
         if self.unbounded.iter().any(hits) {
             return true;
         }
-        // The boxes get the same margin as in `closest_hit`: an object that hits just
+        // The boxes get the same margin as in [`Bvh::closest`]: an object that hits just
         // before `range.max` may have a box entered just after it.
         let box_t_max = widened(range.max);
         let mut found = false;
@@ -211,7 +211,7 @@ impl Bvh {
 
     // ANCHOR: traverse
     /// Visits, nearer child first, every leaf whose box the ray passes through
-    /// within `t_min < t < t_max`, handing the range of its primitives (positions in
+    /// within `range`, handing the range of its primitives (positions in
     /// [`Bvh::primitives`]) to `leaf`, which answers with the far end to use from
     /// then on, or [`Walk::Stop`].
     ///

@@ -82,7 +82,7 @@ impl Instance {
     }
 
     // ANCHOR: instance_hit
-    /// The nearest crossing with `t_min < t < t_max`, `t` measured along the world ray.
+    /// The nearest crossing within `range`, `t` measured along the world ray.
     ///
     /// Object-space ray: origin o' = M^-1 o (a point), direction d' = M^-1 d (a
     /// vector). Because M^-1 is affine, M^-1 (o + t d) = o' + t d': with d' left as it

@@ -5,8 +5,9 @@
 //!
 //! Every routine takes a [`Ray`] (finite origin, a direction of any non-zero
 //! length: `t` is in lengths of it, a distance for a unit direction) and reports the
-//! nearest crossing with `t_min < t < t_max`. For finite input none of them panics or
-//! returns NaN: a comparison that meets a NaN always falls on the "miss" side.
+//! nearest crossing within a `range` (an open [`Interval`], `min < t < max`). For
+//! finite input none of them panics or returns NaN: a comparison that meets a NaN
+//! always falls on the "miss" side.
 
 use glam::Vec3;
 
@@ -303,7 +304,7 @@ impl From<Instance> for Shape {
 }
 
 impl Shape {
-    /// The nearest crossing of `ray` with `t_min < t < t_max`, if any: the
+    /// The nearest crossing of `ray` within `range`, if any: the
     /// [`Shape::candidate`] test, then [`Shape::record`].
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let prepared = PreparedRay::new(ray);
@@ -312,7 +313,7 @@ impl Shape {
     }
 
     // ANCHOR: shape_candidate
-    /// The nearest crossing with `t_min < t < t_max` as a [`Candidate`]: `t` and
+    /// The nearest crossing within `range` as a [`Candidate`]: `t` and
     /// what the hit record needs, nothing more, from the test of the shape's kind
     /// ([`Sphere::candidate`] and each other kind's). The closest-hit loop
     /// asks every primitive for this, and [`Shape::record`] once, for the winner.

@@ -53,7 +53,7 @@ impl Plane {
     // ANCHOR_END: plane_t
 
     // ANCHOR: plane_hit
-    /// [`Plane::t`] if it lies in `t_min < t < t_max`.
+    /// [`Plane::t`] if it lies within `range`.
     #[inline]
     pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
         self.t(ray).filter(|&t| range.contains(t))
@@ -65,7 +65,7 @@ impl Plane {
         Hit::new(ray, t, point, self.normal, error)
     }
 
-    /// The crossing with `t_min < t < t_max`, if any.
+    /// The crossing within `range`, if any.
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let t = self.nearest(ray, range)?;
         Some(self.hit_at(ray, t))

@@ -70,7 +70,7 @@ impl Quad {
     }
 
     // ANCHOR: quad_hit
-    /// The crossing's `t` with `t_min < t < t_max`, if any: the plane through q
+    /// The crossing's `t` within `range`, if any: the plane through q
     /// first, then the hit's coordinates (u, v) in the edges, from the dual vectors
     /// w = n / |a x b| with u = w . (p' x b) and v = w . (a x p'), p' = p - q.
     #[inline]

@@ -203,7 +203,7 @@ impl Quadric {
     // ANCHOR_END: quadric_roots_stable
 
     // ANCHOR: quadric_hit
-    /// The nearest crossing with `t_min < t < t_max`, using [`Quadric::roots_stable`].
+    /// The nearest crossing within `range`, using [`Quadric::roots_stable`].
     ///
     /// The normal is the normalised gradient, the xyz part of 2 Q x: it points to
     /// where x^T Q x > 0 (outward for the named constructors). Where the gradient
@@ -213,7 +213,7 @@ impl Quadric {
         Some(self.hit_at(ray, t))
     }
 
-    /// The smallest root with `t_min < t < t_max`, by [`Quadric::roots_stable`].
+    /// The smallest root within `range`, by [`Quadric::roots_stable`].
     pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
         self.roots_stable(ray).first_in(range)
     }

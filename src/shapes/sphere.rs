@@ -90,7 +90,7 @@ impl Sphere {
     // ANCHOR_END: roots_stable
 
     // ANCHOR: sphere_hit
-    /// The nearest root with `t_min < t < t_max`, by [`Sphere::roots_stable`]: all
+    /// The nearest root within `range`, by [`Sphere::roots_stable`]: all
     /// that the closest-hit loop asks of a sphere.
     #[inline]
     pub fn nearest(&self, ray: &Ray, range: Interval) -> Option<f32> {
@@ -127,7 +127,7 @@ impl Sphere {
         (point, gamma(6) * local.abs() + gamma(1) * point.abs())
     }
 
-    /// The nearest crossing with `t_min < t < t_max`: [`Sphere::nearest`], then
+    /// The nearest crossing within `range`: [`Sphere::nearest`], then
     /// [`Sphere::hit_at`].
     pub fn hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         let t = self.nearest(ray, range)?;

@@ -194,10 +194,10 @@ impl Triangle {
     }
 }
 
-/// True if t = `t_scaled` / `det` certainly lies outside `t_min < t < t_max`, decided
-/// without dividing (pbrt-v4 does the same): behind the origin when `t_min >= 0`
-/// and the signs differ, or beyond `t_max` with a margin of 8 ulps, far more than
-/// the rounding of the quotient and of `t_max |det|`. A NaN decides nothing.
+/// True if t = `t_scaled` / `det` certainly lies outside `range`, decided
+/// without dividing (pbrt-v4 does the same): behind the origin when `range.min >= 0`
+/// and the signs differ, or beyond `range.max` with a margin of 8 ulps, far more
+/// than the rounding of the quotient and of `range.max |det|`. A NaN decides nothing.
 fn surely_outside(t_scaled: f32, det: f32, range: Interval) -> bool {
     const MARGIN: f32 = 1.0 + 8.0 * f32::EPSILON;
     let (t_abs, det_abs) = if det < 0.0 {

@@ -8,7 +8,8 @@
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
 //! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
-//! - [`lesson`]: what every example shares: flag parsing, `--out`, one-line errors;
+//! - [`lesson`]: what every example shares, a file per job: flag parsing, budgets
+//!   and the runner of lessons that render images, `--out`, Ctrl-C, one-line errors;
 //! - [`failure`]: why a lesson stops, besides the renderer's errors (an exercise
 //!   that fails, Ctrl-C, a name that matches nothing);
 //! - [`mine`]: `--mine`, a lesson's picture drawn with the student's exercise code;

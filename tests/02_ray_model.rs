@@ -72,7 +72,10 @@ fn very_short_and_very_long_directions_are_normalised_not_refused() {
         let tilted = Ray::new(Vec3::ZERO, Vec3::new(scale, scale, 0.0)).unwrap();
         let expected = Vec3::new(1.0, 1.0, 0.0).normalize();
         assert!((tilted.direction() - expected).length() < 1e-6, "{scale:e}");
-        assert!((tilted.direction().length() - 1.0).abs() < 1e-6, "{scale:e}");
+        assert!(
+            (tilted.direction().length() - 1.0).abs() < 1e-6,
+            "{scale:e}"
+        );
     }
 }
 

@@ -590,7 +590,10 @@ fn two_lights_direct_light_sigmas() {
     // cosine and light area are "about equally" poor (within a factor 1.5).
     let small_ratio = sigma[0][0] / sigma[1][0];
     assert!((5.0..20.0).contains(&small_ratio), "{sigma:?}");
-    assert!((sigma[2][0] - sigma[1][0]).abs() < 0.1 * sigma[1][0], "{sigma:?}");
+    assert!(
+        (sigma[2][0] - sigma[1][0]).abs() < 0.1 * sigma[1][0],
+        "{sigma:?}"
+    );
     let large_ratio = sigma[0][1] / sigma[1][1];
     assert!((1.0 / 1.5..1.5).contains(&large_ratio), "{sigma:?}");
     // It also names the other measurement of cosine sampling that the listing's

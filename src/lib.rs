@@ -22,8 +22,9 @@
 //! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
 //! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
 //!    image in memory;
-//! 6. `bvh`, `lighting`, `render`: the same questions through a tree, the one
-//!    Lambert formula, one ray per pixel in parallel;
+//! 6. `bvh`, `lighting`, `render`, `mesh`: the same questions through a tree, the
+//!    one Lambert formula, one ray per pixel in parallel, triangle meshes (read,
+//!    made from shapes, placed);
 //! 7. `raycast`, `raster`, `pathtrace`: the three renderers;
 //! 8. `scenes`: the lessons' scenes, shared by several lessons.
 //!
@@ -43,6 +44,7 @@ pub mod framebuffer;
 pub mod lighting;
 pub mod limits;
 pub mod material;
+pub mod mesh;
 pub mod pathtrace;
 pub mod progress;
 pub mod quadratic;

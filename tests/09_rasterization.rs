@@ -13,10 +13,10 @@ use std::path::Path;
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Error;
+use render_lessons::mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Model};
 use render_lessons::raster::{
-    CameraTransforms, ClipVertex, Cull, DepthRange, LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh,
-    Model, RasterSettings, ScreenVertex, Shading, ShadowMap, Shadows, Varyings, clip_triangle,
-    rasterize, rasterize_triangle,
+    CameraTransforms, ClipVertex, Cull, DepthRange, RasterSettings, ScreenVertex, Shading,
+    ShadowMap, Shadows, Varyings, clip_triangle, rasterize, rasterize_triangle,
 };
 use render_lessons::raster::{TOLERANCE, agreement, reference};
 use render_lessons::render::with_threads;
@@ -537,11 +537,11 @@ fn uv_sphere_is_closed_and_faces_out() {
 #[test]
 fn segments_are_checked_before_tessellating() {
     let scene = render_lessons::scenes::still_life(Vec3::ZERO).unwrap();
-    assert!(render_lessons::raster::check_segments(&scene, 4).is_ok());
-    let too_few = render_lessons::raster::check_segments(&scene, 3).unwrap_err();
+    assert!(render_lessons::mesh::check_segments(&scene, 4).is_ok());
+    let too_few = render_lessons::mesh::check_segments(&scene, 3).unwrap_err();
     assert_eq!(too_few.param(), "segments");
     // 65536 segments: three spheres of 2^32 triangles, far more than any machine has.
-    let too_many = render_lessons::raster::check_segments(&scene, 65536).unwrap_err();
+    let too_many = render_lessons::mesh::check_segments(&scene, 65536).unwrap_err();
     assert!(
         matches!(
             too_many,
@@ -552,7 +552,7 @@ fn segments_are_checked_before_tessellating() {
         ),
         "{too_many:?}"
     );
-    assert!(render_lessons::raster::tessellate(&scene, u32::MAX).is_err());
+    assert!(render_lessons::mesh::tessellate(&scene, u32::MAX).is_err());
 }
 
 #[test]

@@ -25,7 +25,7 @@ const LAYERS: &[&[&str]] = &[
     &["quadratic", "spawn"],
     &["camera", "shapes"],
     &["scene", "framebuffer"],
-    &["bvh", "lighting", "render"],
+    &["bvh", "lighting", "render", "mesh"],
     &["raycast", "raster", "pathtrace"],
     &["scenes"],
     &["course"],

@@ -12,7 +12,7 @@ use std::collections::BTreeSet;
 use glam::{Mat4, Vec3};
 use render_lessons::bvh::build::Strategy;
 use render_lessons::bvh::{Bvh, BvhScene, Child, MAX_DEPTH, Node};
-use render_lessons::raster::mesh::Mesh;
+use render_lessons::mesh::Mesh;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
 use render_lessons::shapes::{Aabb, Cylinder, Instance, Plane, Quadric, Shape, Sphere, Triangle};

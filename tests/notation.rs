@@ -11,7 +11,7 @@ use std::fs;
 use std::path::PathBuf;
 
 use glam::{Vec3, Vec4};
-use render_lessons::raster::tessellate::{FLOOR_SIZE, tessellate};
+use render_lessons::mesh::tessellate::{FLOOR_SIZE, tessellate};
 use render_lessons::scenes::{STILL_LIFE_OBJECTS, still_life};
 
 // ---- reading the book ----------------------------------------------------------

@@ -2,7 +2,7 @@
 //! of each tessellated object, their total, and the mesh read from a file.
 
 use crate::course::report::Table;
-use crate::raster::Model;
+use crate::mesh::Model;
 use crate::scenes::PlacedMesh;
 
 /// One row per object of `instances` (named by `names`) with its vertices and

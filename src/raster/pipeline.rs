@@ -16,12 +16,13 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::{
-    CameraTransforms, ClipVertex, Model, RasterSettings, ScreenVertex, Shading, ShadowMap,
-    Varyings, Viewer, clip_triangle, rasterize_triangle, shade,
+    CameraTransforms, ClipVertex, RasterSettings, ScreenVertex, Shading, ShadowMap, Varyings,
+    Viewer, clip_triangle, rasterize_triangle, shade,
 };
 use crate::camera::Camera;
 use crate::error::{Result, finite3};
 use crate::framebuffer::Framebuffer;
+use crate::mesh::Model;
 use crate::scene::PointLight;
 use crate::transform::Transform;
 

@@ -27,7 +27,7 @@ pub enum Cull {
     #[default]
     None,
     /// Skip triangles whose vertices appear clockwise on screen, i.e. seen from
-    /// behind, given the counter-clockwise-outside winding of [`super::Mesh`].
+    /// behind, given the counter-clockwise-outside winding of [`crate::mesh::Mesh`].
     Back,
 }
 

@@ -12,10 +12,11 @@
 
 use glam::Vec3;
 
-use super::{CameraTransforms, Cull, DepthRange, Model, RasterSettings, rasterize_triangle};
+use super::{CameraTransforms, Cull, DepthRange, RasterSettings, rasterize_triangle};
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::error::{Error, Result, finite3, non_negative, positive};
 use crate::limits::image_side;
+use crate::mesh::Model;
 use crate::scene::PointLight;
 use crate::transform::Transform;
 

@@ -8,8 +8,8 @@ use glam::Vec3;
 use super::asset_path;
 use crate::bvh::BvhScene;
 use crate::error::{Error, Result, finite};
-use crate::raster::{FaceCounts, LoadedMesh, Mesh, Model};
-use crate::raster::{check_subdivisions, subdivided_count};
+use crate::mesh::{FaceCounts, LoadedMesh, Mesh, Model};
+use crate::mesh::{check_subdivisions, subdivided_count};
 use crate::ray::{Interval, Ray};
 use crate::scene::{Intersect, Scene, SceneHit};
 use crate::transform::Transform;
@@ -19,7 +19,7 @@ use crate::{limits, progress};
 /// repository's root (see [`asset_path`] for other folders).
 pub const TORUS_OBJ: &str = "assets/meshes/torus.obj";
 
-/// The Newell teapot as 2048 quads (`raster::teapot::teapot_obj(8)`), relative to the
+/// The Newell teapot as 2048 quads (`mesh::teapot::teapot_obj(8)`), relative to the
 /// repository's root: `--mesh assets/meshes/teapot.obj`.
 pub const TEAPOT_OBJ: &str = "assets/meshes/teapot.obj";
 

@@ -9,7 +9,7 @@ use super::{TEAPOT_OBJ, asset_path};
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::error::Result;
 use crate::material::Material;
-use crate::raster::Mesh;
+use crate::mesh::Mesh;
 use crate::scene::{Object, Scene};
 use crate::shapes::{Plane, Quad, Shape, Sphere};
 use crate::transform::Transform;

@@ -14,7 +14,7 @@ use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
-use crate::raster::Mesh;
+use crate::mesh::Mesh;
 use crate::ray::{Interval, Ray};
 use crate::scene::{Intersect, Object, PointLight, Scene};
 use crate::shapes::{Shape, Triangle};

@@ -255,7 +255,7 @@ const HEADER: &str = "\
 # The Newell teapot (the \"Utah teapot\"): Martin Newell's 32 bicubic Bezier
 # patches over 306 control points (University of Utah, 1975; public domain),
 # each cut into {grid} x {grid} quads, counter-clockwise seen from outside, y up.
-# Written by render_lessons::raster::teapot::teapot_obj({grid}); do not edit.
+# Written by render_lessons::mesh::teapot::teapot_obj({grid}); do not edit.
 o teapot
 ";
 

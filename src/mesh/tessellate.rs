@@ -1,20 +1,14 @@
 //! Tessellation: a scene of analytic primitives (lesson 08's) as triangle meshes,
-//! the only thing a rasterizer draws.
+//! the only thing a rasterizer draws (its settings for such a scene are
+//! [`crate::raster::floor_settings`]).
 
-use super::{DepthRange, Mesh, Model, RasterSettings};
+use super::{Mesh, Model};
 use crate::error::{Error, Result};
-use crate::scene::{PointLight, Scene};
+use crate::scene::Scene;
 use crate::shapes::Shape;
 
 /// Side of the square that stands in for an infinite floor.
 pub const FLOOR_SIZE: f32 = 1e4;
-
-/// A rasterization needs a far plane; this one lies beyond the far edge of a floor
-/// of [`FLOOR_SIZE`] seen from near its centre.
-pub const FLOOR_DEPTH: DepthRange = DepthRange {
-    near: 0.1,
-    far: 2e4,
-};
 
 // ANCHOR: tessellate
 /// The scene as triangle meshes, object by object in the same order: a sphere
@@ -64,22 +58,4 @@ pub fn check_segments(scene: &Scene, segments: u32) -> Result<()> {
         "segments",
         spheres.saturating_mul(triangles).saturating_mul(100),
     )
-}
-
-/// How to rasterize a tessellated scene: depth range [`FLOOR_DEPTH`], the scene's
-/// background, per-pixel shading, no culling, no shadows.
-pub fn floor_settings(scene: &Scene) -> RasterSettings {
-    RasterSettings {
-        depth: FLOOR_DEPTH,
-        background: scene.background(),
-        ..RasterSettings::default()
-    }
-}
-
-/// The scene's point light: the one light a rasterizer shades with.
-pub fn point_light(scene: &Scene) -> Result<PointLight> {
-    scene.point_light().ok_or(Error::Invalid {
-        param: "scene",
-        reason: "needs a point light to be rasterized",
-    })
 }

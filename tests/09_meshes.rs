@@ -18,11 +18,11 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 use render_lessons::camera::Camera;
+use render_lessons::course::compare::reference;
 use render_lessons::course::report::num;
 use render_lessons::error::Error;
 use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{FaceCounts, Mesh, fan, patch_point, teapot_obj};
-use render_lessons::raster::reference;
 use render_lessons::scenes::floor_and_mesh;
 use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, asset_path, still_life};
 use render_lessons::scenes::{mesh_on_the_floor, still_life_pinhole, still_life_shadows};

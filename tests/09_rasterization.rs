@@ -12,13 +12,13 @@ use std::path::Path;
 
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+use render_lessons::course::compare::{TOLERANCE, agreement, reference};
 use render_lessons::error::Error;
 use render_lessons::mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Model};
 use render_lessons::raster::{
     CameraTransforms, ClipVertex, Cull, DepthRange, RasterSettings, ScreenVertex, Shading,
     ShadowMap, Shadows, Varyings, clip_triangle, rasterize, rasterize_triangle,
 };
-use render_lessons::raster::{TOLERANCE, agreement, reference};
 use render_lessons::render::with_threads;
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::{

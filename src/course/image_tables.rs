@@ -6,9 +6,9 @@
 use glam::Vec3;
 
 use crate::camera::Camera;
+use crate::course::compare::{Agreement, agreement};
 use crate::course::report::{Table, num, vec3};
 use crate::framebuffer::Framebuffer;
-use crate::raster::{Agreement, agreement};
 use crate::ray::Interval;
 use crate::scene::Scene;
 

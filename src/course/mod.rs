@@ -8,6 +8,8 @@
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
 //! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
+//! - [`compare`]: lesson 09's measurement, a rasterized image against the ray
+//!   caster's, away from silhouettes;
 //! - [`lesson`]: what every example shares, a file per job: flag parsing, budgets
 //!   and the runner of lessons that render images, `--out`, Ctrl-C, one-line errors;
 //! - [`failure`]: why a lesson stops, besides the renderer's errors (an exercise
@@ -21,6 +23,7 @@
 
 pub mod bars;
 pub mod chart;
+pub mod compare;
 pub mod diagram;
 pub mod exercises;
 pub mod failure;

@@ -8,7 +8,6 @@
 //! [`pipeline`] runs the stages in order; each stage has a file of its own.
 
 pub mod clip;
-pub mod compare;
 pub mod pipeline;
 pub mod projection;
 pub mod rasterize;
@@ -17,7 +16,6 @@ pub mod shadow_map;
 pub mod vertex;
 
 pub use clip::clip_triangle;
-pub use compare::{Agreement, Reference, TOLERANCE, agreement, difference, reference};
 pub use pipeline::{BAND_ROWS, rasterize, viewer};
 pub use projection::{CameraTransforms, DepthRange};
 pub use rasterize::{Cull, Fragment, ScreenVertex, rasterize_triangle};

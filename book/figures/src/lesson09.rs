@@ -5,6 +5,7 @@
 
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
+use render_lessons::course::compare::reference;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
 use render_lessons::framebuffer::{Framebuffer, to_srgb8};
@@ -12,7 +13,7 @@ use render_lessons::mesh::{Model, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{CameraTransforms, Shadows, floor_settings, point_light};
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
-use render_lessons::raster::{rasterize, rasterize_triangle, reference};
+use render_lessons::raster::{rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};

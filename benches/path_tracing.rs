@@ -28,7 +28,7 @@ use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking};
 use render_lessons::course::measure::variance::{Seen, pixel_variance};
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::pathtrace::pfm::{load_pfm, save_pfm};
+use render_lessons::framebuffer::pfm::{load_pfm, save_pfm};
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling};
 use render_lessons::pathtrace::{Settings, SphereSampling};

@@ -21,7 +21,7 @@
 //!    and the quadrics; where a spawned ray starts, and where a shadow ray ends;
 //! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
 //! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
-//!    image in memory;
+//!    image in memory with its two files (PNG, PFM);
 //! 6. `bvh`, `lighting`, `render`, `mesh`: the same questions through a tree, the
 //!    one Lambert formula, one ray per pixel in parallel, triangle meshes (read,
 //!    made from shapes, placed);

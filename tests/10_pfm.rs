@@ -5,7 +5,7 @@
 use glam::Vec3;
 use render_lessons::error::Error;
 use render_lessons::framebuffer::Framebuffer;
-use render_lessons::pathtrace::pfm::{load_pfm, pfm_bytes, read_pfm, save_pfm};
+use render_lessons::framebuffer::pfm::{load_pfm, pfm_bytes, read_pfm, save_pfm};
 
 /// Values that a lossy reader would change: signed zero, a subnormal, the largest
 /// and smallest normal floats, values with every mantissa bit set.

@@ -13,14 +13,12 @@
 //! - [`progressive`]: sample passes accumulated into an image;
 //! - [`convergence`]: the lesson's experiment, a ladder of sample counts, every
 //!   strategy, and a reference;
-//! - [`pfm`]: the floating-point image file;
 
 pub mod convergence;
 pub mod estimator;
 pub mod light;
 pub mod mis;
 pub mod next_event;
-pub mod pfm;
 pub mod progressive;
 pub mod record;
 pub mod roulette;

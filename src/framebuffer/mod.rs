@@ -1,4 +1,8 @@
-//! A framebuffer: one linear RGB colour per pixel, row 0 at the top, saved as PNG.
+//! Images: a framebuffer in memory, and the two files it is saved as, PNG and PFM.
+//!
+//! A framebuffer holds one linear RGB colour per pixel, row 0 at the top. This file
+//! saves it as PNG, 8-bit sRGB ([`Framebuffer::save_png`]); [`pfm`] saves and reads
+//! it as raw floats.
 
 use std::path::Path;
 
@@ -7,6 +11,8 @@ use glam::Vec3;
 use crate::error::{Error, Result};
 use crate::files::write_png_rgba;
 use crate::limits::{MAX_RESOLUTION, Resolution};
+
+pub mod pfm;
 
 /// `width` x `height` linear RGB colours, stored row by row from the top.
 #[derive(Clone, Debug, PartialEq)]

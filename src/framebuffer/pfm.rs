@@ -56,7 +56,7 @@ pub fn save_pfm(path: &Path, image: &Framebuffer) -> Result<()> {
 /// ```
 /// use glam::Vec3;
 /// use render_lessons::framebuffer::Framebuffer;
-/// use render_lessons::pathtrace::pfm::{pfm_bytes, read_pfm};
+/// use render_lessons::framebuffer::pfm::{pfm_bytes, read_pfm};
 ///
 /// let image = Framebuffer::from_fn(3, 2, |x, y| Vec3::new(x as f32, y as f32, 0.1))?;
 /// assert_eq!(read_pfm(&pfm_bytes(&image)?)?, image);

@@ -17,13 +17,14 @@ use clap::Parser;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera, ThinLensCamera};
+use render_lessons::course::convergence::{Renders, Study, ladder};
+use render_lessons::course::record::record_path;
 use render_lessons::error::Error;
 use render_lessons::material::{Material, fresnel};
-use render_lessons::pathtrace::convergence::{Renders, Study, ladder};
 use render_lessons::pathtrace::light::LightShape;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::pathtrace::{
-    Accumulator, At, Path, PixelSampling, Sampling, Settings, SphereSampling, radiance, record_path,
+    Accumulator, At, Path, PixelSampling, Sampling, Settings, SphereSampling, radiance,
 };
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::render::{thread_pool, with_threads};

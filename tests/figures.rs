@@ -68,7 +68,7 @@ fn lesson_figures() -> Result<Vec<(String, Diagram)>> {
     // Lesson 10's ladder at its default size (160 x 120, up to 64 spp), blank: the
     // layout and captions are what is checked, and they do not depend on the pixels.
     let blank = Framebuffer::from_fn(160, 120, |_, _| glam::Vec3::splat(0.3))?;
-    let rungs = render_lessons::pathtrace::convergence::ladder(64)?;
+    let rungs = render_lessons::course::convergence::ladder(64)?;
     let ladder: Vec<_> = rungs.into_iter().map(|n| (n, blank.clone())).collect();
     let convergence = render_lessons::course::ladder_figure::ladder_figure(&ladder)?;
     all.push(("10_convergence.png".into(), convergence));

@@ -4,7 +4,10 @@
 //!
 //! - [`diagram`]: ray diagrams drawn with tiny-skia from the real cameras and shapes;
 //! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;
+//! - [`convergence`]: lesson 10's experiment, a ladder of sample counts, every
+//!   strategy, and a reference;
 //! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
+//! - [`record`]: lesson 10's paths recorded vertex by vertex, for figures;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
 //! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
 //! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
@@ -24,6 +27,7 @@
 pub mod bars;
 pub mod chart;
 pub mod compare;
+pub mod convergence;
 pub mod diagram;
 pub mod exercises;
 pub mod failure;
@@ -35,5 +39,6 @@ pub mod measure;
 pub mod mine;
 pub mod parsers;
 pub mod path_flags;
+pub mod record;
 pub mod report;
 pub mod triangle_table;

@@ -4,9 +4,9 @@
 //! thin lens (`--aperture`, `--focus`). Every value is checked when it is parsed or
 //! when the core value is made, before any work.
 
+use crate::course::convergence::{Study, ladder};
 use crate::course::parsers;
 use crate::error::Result;
-use crate::pathtrace::convergence::{Study, ladder};
 use crate::pathtrace::{Passes, PixelSampling, Sampling, Settings};
 
 /// How the estimator follows a path: `--sampling`, `--max-depth`, `--rr`/`--no-rr`.

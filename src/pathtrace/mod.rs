@@ -6,26 +6,20 @@
 //!   density, and the strategies each light's shape allows;
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
 //! - [`estimator`]: the path, vertex by vertex, and the sum of its light;
-//! - [`record`]: paths recorded vertex by vertex, for figures;
 //! - [`next_event`]: light samples with shadow rays;
 //! - [`mis`]: the power heuristic that combines light and BRDF samples;
 //! - [`roulette`]: Russian roulette;
-//! - [`progressive`]: sample passes accumulated into an image;
-//! - [`convergence`]: the lesson's experiment, a ladder of sample counts, every
-//!   strategy, and a reference;
+//! - [`progressive`]: sample passes accumulated into an image.
 
-pub mod convergence;
 pub mod estimator;
 pub mod light;
 pub mod mis;
 pub mod next_event;
 pub mod progressive;
-pub mod record;
 pub mod roulette;
 pub mod settings;
 
 pub use estimator::{At, Path, Vertex, radiance};
 pub use light::{LightShape, SphereSampling};
 pub use progressive::{Accumulator, Passes, PixelSampling};
-pub use record::{PathVertex, RecordedPath, record_path};
 pub use settings::{Sampling, Settings};

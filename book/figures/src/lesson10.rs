@@ -7,11 +7,11 @@ use render_lessons::Result;
 use render_lessons::camera::Camera;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
+use render_lessons::course::record::{PathVertex, RecordedPath, record_path};
 use render_lessons::course::report::num;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::material::Material;
 use render_lessons::pathtrace::progressive::render_progressive;
-use render_lessons::pathtrace::record::{PathVertex, RecordedPath, record_path};
 use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
 use render_lessons::rng::Rng;
 use render_lessons::sampling::{

@@ -15,6 +15,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::Vec3;
+use render_lessons::bvh::MeshScene;
 use render_lessons::course::compare::{Agreement, TOLERANCE, agreement, difference, reference};
 use render_lessons::course::image_tables::agreement_table;
 use render_lessons::course::lesson::{self, ImageFlags, Output};
@@ -25,7 +26,7 @@ use render_lessons::mesh::{Model, check_segments, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Shadows, floor_settings, point_light, rasterize};
 use render_lessons::render::render;
-use render_lessons::scenes::{MeshScene, PlacedMesh, still_life_shadows};
+use render_lessons::scenes::{PlacedMesh, still_life_shadows};
 use render_lessons::scenes::{STILL_LIFE_OBJECTS, TORUS_OBJ, still_life, still_life_pinhole};
 use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
 use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, spawn::Offset};

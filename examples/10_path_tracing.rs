@@ -16,6 +16,7 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::ProgressBar;
 use render_lessons::Result;
+use render_lessons::bvh::MeshScene;
 use render_lessons::camera::Camera;
 use render_lessons::course::convergence::{Part, Renders, Study};
 use render_lessons::course::failure::LessonResult;
@@ -28,7 +29,6 @@ use render_lessons::pathtrace::PixelSampling;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::render::with_threads;
 use render_lessons::scene::Intersect;
-use render_lessons::scenes::MeshScene;
 use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
 fn main() -> ExitCode {

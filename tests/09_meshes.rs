@@ -17,6 +17,7 @@ use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
 use glam::Vec3;
+use render_lessons::bvh::MeshScene;
 use render_lessons::camera::Camera;
 use render_lessons::course::compare::reference;
 use render_lessons::course::report::num;
@@ -24,7 +25,7 @@ use render_lessons::error::Error;
 use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{FaceCounts, Mesh, fan, patch_point, teapot_obj};
 use render_lessons::scenes::floor_and_mesh;
-use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, asset_path, still_life};
+use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, asset_path, still_life};
 use render_lessons::scenes::{mesh_on_the_floor, still_life_pinhole, still_life_shadows};
 
 /// A scratch folder, and a function that writes `text` to a file of it.

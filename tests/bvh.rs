@@ -531,7 +531,7 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
 /// same, bit for bit.
 #[test]
 fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
-    use render_lessons::scenes::MeshScene;
+    use render_lessons::bvh::MeshScene;
     use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
     let Staged {

@@ -21,9 +21,12 @@ use crate::scene::{Intersect, Scene, SceneHit};
 use crate::shapes::{Aabb, Candidate, PreparedRay, Shape, Triangle};
 
 pub mod build;
+pub mod list_or_tree;
 mod sah;
 mod slab;
 pub mod traverse;
+
+pub use list_or_tree::{BRUTE_FORCE_TESTS, MeshScene};
 
 /// The most levels a tree may have, root included; also the size of the traversal
 /// stack, which never holds more entries than the tree is deep.

@@ -1,17 +1,15 @@
-//! A mesh from a file standing in the still life (lesson 09's second scene), and the
-//! list or the BVH that the ray caster sees it through.
+//! A mesh from a file standing in the still life (lesson 09's second scene); the
+//! list or the BVH that the ray caster sees it through is [`crate::bvh::MeshScene`].
 
 use std::path::Path;
 
 use glam::Vec3;
 
 use super::asset_path;
-use crate::bvh::BvhScene;
 use crate::error::{Error, Result, finite};
 use crate::mesh::{FaceCounts, LoadedMesh, Mesh, Model};
 use crate::mesh::{check_subdivisions, subdivided_count};
-use crate::ray::{Interval, Ray};
-use crate::scene::{Intersect, Scene, SceneHit};
+use crate::scene::Scene;
 use crate::transform::Transform;
 use crate::{limits, progress};
 
@@ -127,61 +125,5 @@ pub fn floor_and_mesh(scene: &Scene, mesh: &Model) -> Result<Scene> {
     match scene.point_light() {
         Some(light) => floor_and_mesh.with_light(light),
         None => Ok(floor_and_mesh),
-    }
-}
-
-/// Above this many ray-primitive tests (pixels times primitives) lesson 09's ray
-/// caster stops testing every primitive on every ray and goes through lesson 11's
-/// BVH: 2^28, about 2.7 x 10^8 tests, a few seconds of brute force. The torus at
-/// 480 x 270 (1.3 x 10^8 tests) stays below; the teapot (5.2 x 10^8) goes above.
-pub const BRUTE_FORCE_TESTS: u64 = 1 << 28;
-
-/// Lesson 09's floor and mesh as the ray caster sees them: the plain list of
-/// lesson 08 while every ray may test every primitive (at most
-/// [`BRUTE_FORCE_TESTS`] tests in all), else the same list through lesson 11's
-/// BVH, which answers every ray as the list does, so the image is the same, bit
-/// for bit.
-#[derive(Clone, Debug, PartialEq)]
-pub enum MeshScene {
-    /// Every ray tests every primitive.
-    List(Scene),
-    /// Rays walk a BVH over the same primitives.
-    Tree(BvhScene),
-}
-
-impl MeshScene {
-    /// `scene` as a plain list, or through a BVH (built under a spinner) when a
-    /// render of `rays` camera rays would make more than [`BRUTE_FORCE_TESTS`] tests.
-    pub fn new(scene: Scene, rays: u64) -> MeshScene {
-        let primitives = scene.objects().len();
-        if rays.saturating_mul(primitives as u64) <= BRUTE_FORCE_TESTS {
-            return MeshScene::List(scene);
-        }
-        let message = format!("building a BVH over {primitives} primitives");
-        MeshScene::Tree(progress::spinner(message, || BvhScene::new(scene)))
-    }
-}
-
-/// The list's or the tree's answers.
-impl Intersect for MeshScene {
-    fn scene(&self) -> &Scene {
-        match self {
-            MeshScene::List(scene) => scene,
-            MeshScene::Tree(tree) => tree.scene(),
-        }
-    }
-
-    fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        match self {
-            MeshScene::List(scene) => scene.closest(ray, range),
-            MeshScene::Tree(tree) => tree.closest(ray, range),
-        }
-    }
-
-    fn occluded(&self, ray: &Ray, range: Interval) -> bool {
-        match self {
-            MeshScene::List(scene) => scene.occluded(ray, range),
-            MeshScene::Tree(tree) => tree.occluded(ray, range),
-        }
     }
 }

@@ -4,6 +4,7 @@
 //! settings from the same core calls as the lesson.
 
 use glam::{Vec2, Vec3};
+use render_lessons::bvh::MeshScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::compare::reference;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
@@ -16,7 +17,7 @@ use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVerte
 use render_lessons::raster::{rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-use render_lessons::scenes::{MeshScene, TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
+use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
 use render_lessons::scenes::{
     mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };

@@ -1,3 +1,5 @@
+//! The bounding volume hierarchy: a scene's questions answered through a tree of boxes.
+//!
 //! A bounding volume hierarchy (BVH): a binary tree of boxes over a scene's
 //! primitives, so that a ray tests the few primitives whose boxes it passes through
 //! instead of every one (lesson 11, where a measured chart shows when it pays).
@@ -9,6 +11,9 @@
 //!   both children's boxes are tested and the nearer one visited first, with the
 //!   conservative slab test of Ize 2013 on the node boxes (STABILITY S6) and the
 //!   ray's 1/d computed once ([`PreparedRay`](crate::shapes::PreparedRay)).
+//!
+//! - [`list_or_tree`]: the choice between a scene's plain list and the tree, by the
+//!   number of ray-primitive tests a render would make.
 //!
 //! Planes and quadrics have no box; they are kept in a plain list and tested on
 //! every ray, before the tree. The tree keeps its own copy of the bounded shapes in

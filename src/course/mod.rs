@@ -1,6 +1,8 @@
-//! The course's own tools, apart from the renderer: what draws the figures, prints
-//! the tables, measures the charts and checks the exercises. The renderer (every
-//! module outside `course`) never imports from here; the lessons and the book do.
+//! The course's own tools, apart from the renderer: figures, tables, measurements.
+//!
+//! What draws the figures, prints the tables, measures the charts and checks the
+//! exercises. The renderer (every module outside `course`) never imports from here;
+//! the lessons and the book do.
 //!
 //! - [`diagram`]: ray diagrams drawn with tiny-skia from the real cameras and shapes;
 //! - [`chart`]: SVG + CSV line charts (plotters) for lesson 11;

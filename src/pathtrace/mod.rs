@@ -1,3 +1,5 @@
+//! The path tracer: radiance estimated along random paths, summed into an image.
+//!
 //! Lesson 10: Monte Carlo path tracing, an estimator of Kajiya's rendering equation
 //! (Lecture 2), one idea per file, on the shared
 //! [`crate::scene::Scene`] (objects with a [`crate::material::Material`] and emission):

@@ -1,6 +1,8 @@
-//! The lessons' scenes, built once: lesson 08's still life (which lessons 09 and 11
-//! render too), a mesh from a file standing in it (lesson 09), and the scenes of
-//! lesson 10's path tracer (the Cornell box, the furnaces, two lights).
+//! The lessons' scenes, each built once for the lessons that render it.
+//!
+//! Lesson 08's still life (which lessons 09 and 11 render too), a mesh from a file
+//! standing in it (lesson 09), and the scenes of lesson 10's path tracer (the
+//! Cornell box, the furnaces, two lights).
 
 pub mod meshes;
 pub mod path_tracing;

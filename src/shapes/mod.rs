@@ -1,3 +1,5 @@
+//! The primitives: where a ray crosses each kind of surface, and its bounding box.
+//!
 //! Ray / primitive intersection (Lecture 4): sphere, plane, axis-aligned box and
 //! triangle, each in its own file, each with the naive method next to the robust one
 //! (STABILITY cases S1, S2, S4 to S8); then the quad, the quadrics, the capped

@@ -1,6 +1,8 @@
-//! Ray diagrams: a small 2-D drawing canvas over tiny-skia, with labels set in the
-//! embedded DejaVu Sans font (ab_glyph). Lessons draw their figures with it from the
-//! same cameras and rays that render, so a figure cannot disagree with the code.
+//! Ray diagrams: the lessons' 2-D figures, drawn from the real cameras and shapes.
+//!
+//! A small 2-D drawing canvas over tiny-skia, with labels set in the embedded
+//! DejaVu Sans font (ab_glyph). Lessons draw their figures with it from the same
+//! cameras and rays that render, so a figure cannot disagree with the code.
 //!
 //! Coordinates are diagram units (y up); one uniform scale maps them to pixels, so
 //! circles stay round and right angles stay right.

@@ -1,5 +1,7 @@
-//! Coding exercises: one file per chapter, in which the student writes the functions
-//! the lesson is about, two or more per lesson ([`check::ALL`] lists them).
+//! The coding exercises: the student's functions, and the checks that grade them.
+//!
+//! One file per chapter, in which the student writes the functions the lesson is
+//! about, two or more per lesson ([`check::ALL`] lists them).
 //!
 //! The files `chNN.rs` hold the student's functions, each a `todo!()` to begin with;
 //! they are compiled only with the `exercises` feature. [`check`] holds the checks,

@@ -1,4 +1,5 @@
 //! Lesson 11's measurements: speed against accuracy, on the machine that runs them.
+//!
 //! Each file measures one chart of the lesson and returns it with the findings a
 //! student should read off it. Times are measured here, in the lesson, never in a
 //! test: the tests check only what physics and numerics say must hold.

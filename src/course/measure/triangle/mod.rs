@@ -1,5 +1,6 @@
-//! Chart 11.2: ray/triangle, the time per test against the leak rate (STABILITY S4,
-//! S5, with S6 as a finding).
+//! Chart 11.2: ray/triangle, the time per test against the leak rate.
+//!
+//! The cases are STABILITY S4 and S5, with S6 as a finding.
 //!
 //! The mesh is the closed bumpy UV sphere of lesson 07's stability tests (16 x 16
 //! segments, vertex radii 1 to 1.5, wound outwards). Rays from the origin, inside it,

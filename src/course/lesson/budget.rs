@@ -8,6 +8,7 @@ use super::{Output, run};
 use crate::course::failure::LessonResult;
 use crate::course::mine;
 use crate::error::Result;
+use crate::limits::image_side;
 use crate::render::with_threads;
 
 /// The flags of a lesson that renders images of lesson 08's scene (lessons 08 and
@@ -114,25 +115,11 @@ pub fn budget(
     threads: Option<usize>,
     images: u64,
 ) -> Result<Option<usize>> {
-    pixels("--width", width, crate::limits::MAX_RESOLUTION)?;
-    pixels("--height", height, crate::limits::MAX_RESOLUTION)?;
+    image_side("--width", width)?;
+    image_side("--height", height)?;
     let bytes = crate::limits::images(images, width, height, 16);
     crate::limits::memory("--width x --height", bytes)?;
     crate::limits::threads("--threads", threads)
-}
-
-/// `value` if it lies in 1..=`max` pixels; otherwise an error naming the flag
-/// (e.g. `--view-width`) that asked for it.
-pub fn pixels(flag: &'static str, value: u32, max: u32) -> Result<u32> {
-    if (1..=max).contains(&value) {
-        Ok(value)
-    } else {
-        Err(crate::error::Error::Resolution {
-            param: flag,
-            value,
-            max,
-        })
-    }
 }
 
 /// `(min, max)` if `min < max` and twice the span between them is a finite number; the

@@ -15,7 +15,7 @@ use std::process::ExitCode;
 
 use crate::course::failure::{Failure, LessonResult};
 
-pub use budget::{CheckedImage, ImageFlags, budget, extent, pixels};
+pub use budget::{CheckedImage, ImageFlags, budget, extent};
 pub use command_line::parse;
 pub use errors::flag;
 pub use interrupt::{check_interrupt, stop_on_ctrl_c};

@@ -16,7 +16,8 @@ use crate::shapes::Aabb;
 /// infinite one here (`1 / 0 = inf`, `1 / -0 = -inf`).
 ///
 /// Per axis i, t_near = (min_i - o_i) * inv_d_i and t_far = (max_i - o_i) * inv_d_i,
-/// swapped if t_near > t_far. Start with [t0, t1] = [range.min, range.max]; raise t0 to
+/// swapped if inv_d_i < 0 (the sign decides, not a comparison of the ends, which a NaN
+/// defeats). Start with [t0, t1] = [range.min, range.max]; raise t0 to
 /// t_near if t_near > t0, lower t1 to t_far if t_far < t1, and give up when t0 > t1.
 /// The box is closed (a hit whenever t0 <= t1), and a NaN from 0 * inf (a ray lying
 /// in a face's plane) must leave the interval alone.

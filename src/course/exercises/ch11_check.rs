@@ -44,13 +44,17 @@ pub fn slab_solution(
 ) -> Option<ClosedSpan> {
     let (mut t0, mut t1) = (range.min, range.max);
     for i in 0..3 {
-        let mut t_near = (min[i] - o[i]) * inv_d[i];
-        let mut t_far = (max[i] - o[i]) * inv_d[i];
-        // A negative d_i meets the max plane first.
-        if t_near > t_far {
-            std::mem::swap(&mut t_near, &mut t_far);
-        }
-        // Written this way round, a NaN (0 * inf) compares false and changes nothing.
+        let to_min = (min[i] - o[i]) * inv_d[i];
+        let to_max = (max[i] - o[i]) * inv_d[i];
+        // A negative d_i (or d_i = -0, inv_d_i = -inf) meets the max plane first. The
+        // sign of inv_d_i decides, not a comparison of the two ends, which a NaN
+        // (0 * inf, a ray in a face's plane) would defeat.
+        let (t_near, t_far) = if inv_d[i] < 0.0 {
+            (to_max, to_min)
+        } else {
+            (to_min, to_max)
+        };
+        // Written this way round, a NaN compares false and changes nothing.
         if t_near > t0 {
             t0 = t_near;
         }
@@ -75,6 +79,9 @@ enum Slab {
     Unclipped,
     /// No swap of t_near and t_far when d_i < 0.
     NoSwap,
+    /// Swapped when t_near > t_far, by comparing them: a NaN end (a ray in a face's
+    /// plane) is never swapped, so with d_i = -0 the exit becomes -inf.
+    ComparedSwap,
     /// Rejects when t0 >= t1: a touching ray misses the closed box.
     Strict,
     /// The test's `naive_slab`: swap with `if a < c`, update with
@@ -102,6 +109,13 @@ fn slab_wrongly(rule: Slab, a: &SlabArgs) -> SlabAnswer {
         };
         let (near, far) = match rule {
             Slab::NoSwap => (p, q),
+            Slab::ComparedSwap => {
+                if p > q {
+                    (q, p)
+                } else {
+                    (p, q)
+                }
+            }
             Slab::NanWins => {
                 if p < q {
                     (p, q)
@@ -111,7 +125,7 @@ fn slab_wrongly(rule: Slab, a: &SlabArgs) -> SlabAnswer {
             }
             Slab::MinMax => (p.min(q), p.max(q)),
             _ => {
-                if p > q {
+                if a.inv_d[i] < 0.0 {
                     (q, p)
                 } else {
                     (p, q)
@@ -284,6 +298,15 @@ fn slab_checked(
             inf,
         ),
         (
+            "a -0 component and in a face's plane: d_y = -0 on the bottom face's plane y = -1 \
+             (0 * -inf = NaN as the exit in y, -inf as the entry)",
+            cube,
+            v(-5.0, -1.0, 0.0),
+            v(1.0, -0.0, 0.0),
+            0.0,
+            inf,
+        ),
+        (
             "parallel to x, just above the top face",
             cube,
             v(-5.0, 1.0 + 1e-6, 0.0),
@@ -344,6 +367,7 @@ fn slab_checked(
     let divides = wrong_first_here(Slab::Divides);
     let unclipped = wrong_first_here(Slab::Unclipped);
     let no_swap = wrong_first_here(Slab::NoSwap);
+    let compared_swap = wrong_first_here(Slab::ComparedSwap);
     let strict = wrong_first_here(Slab::Strict);
     let nan_wins = wrong_first_here(Slab::NanWins);
     let min_max = wrong_first_here(Slab::MinMax);
@@ -367,7 +391,14 @@ fn slab_checked(
                 looks_like: &no_swap,
                 hint: "when d_i < 0 the ray crosses the max plane first: t_near = (min_i - o_i) \
                        * inv_d_i is then the larger of the two, so swap t_near and t_far when \
-                       t_near > t_far",
+                       inv_d_i < 0",
+            },
+            Mistake {
+                looks_like: &compared_swap,
+                hint: "swapping when t_near > t_far compares the two ends, and a NaN end (0 * inf, \
+                       a ray in a face's plane) compares false: with d_i = -0 the pair (NaN, -inf) \
+                       stays unswapped and t1 becomes -inf. Decide by the sign of inv_d_i \
+                       instead: the max plane comes first when inv_d_i < 0 (1 / -0 = -inf)",
             },
             Mistake {
                 looks_like: &strict,
@@ -378,16 +409,16 @@ fn slab_checked(
                 looks_like: &nan_wins,
                 hint: "a ray lying in a face's plane gives 0 * inf = NaN, and every comparison \
                        with NaN is false: `if a < b { a } else { b }` then picks the NaN, which \
-                       wipes out the interval, and no later test can reject it. Swap with \
-                       `if t_near > t_far`, and update with `if t_near > t0 { t0 = t_near }`, \
+                       wipes out the interval, and no later test can reject it. Order the ends \
+                       by the sign of inv_d_i, and update with `if t_near > t0 { t0 = t_near }`, \
                        so that a NaN changes nothing",
             },
             Mistake {
                 looks_like: &min_max,
                 hint: "f32::min and f32::max drop a NaN and return the other value: sorting \
                        t_near and t_far with them turns the NaN of a ray lying in a face's plane \
-                       into -inf, and the ray along the face misses. Swap with \
-                       `if t_near > t_far`, which leaves the NaN where it is",
+                       into -inf, and the ray along the face misses. Order the ends by the sign \
+                       of inv_d_i, which leaves the NaN where it is",
             },
             Mistake {
                 looks_like: &nan_update,
@@ -397,7 +428,7 @@ fn slab_checked(
             },
         ],
         "per axis t_near = (min_i - o_i) * inv_d_i, t_far = (max_i - o_i) * inv_d_i, swapped \
-         if t_near > t_far; start at [range.min, range.max], then `if t_near > t0 { t0 = t_near }`, \
+         if inv_d_i < 0; start at [range.min, range.max], then `if t_near > t0 { t0 = t_near }`, \
          `if t_far < t1 { t1 = t_far }`, and None as soon as t0 > t1",
     )
 }

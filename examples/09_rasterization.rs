@@ -17,20 +17,19 @@ use clap::Parser;
 use glam::Vec3;
 use render_lessons::bvh::MeshScene;
 use render_lessons::course::compare::{Agreement, TOLERANCE, agreement, difference, reference};
-use render_lessons::course::image_tables::agreement_table;
 use render_lessons::course::lesson::{self, ImageFlags, Output};
-use render_lessons::course::parsers;
-use render_lessons::course::report::Timings;
-use render_lessons::course::triangle_table::triangle_table;
+use render_lessons::course::{
+    image_tables::agreement_table, parsers, report::Timings, triangle_table::triangle_table,
+};
 use render_lessons::mesh::{Model, check_segments, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Shadows, floor_settings, point_light, rasterize};
-use render_lessons::render::render;
-use render_lessons::scenes::{PlacedMesh, still_life_shadows};
-use render_lessons::scenes::{STILL_LIFE_OBJECTS, TORUS_OBJ, still_life, still_life_pinhole};
-use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
-use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, spawn::Offset};
-use render_lessons::{raycast::lit, scene::Scene};
+use render_lessons::scenes::{PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_and_mesh};
+use render_lessons::scenes::{
+    mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
+};
+use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, render::render};
+use render_lessons::{raycast::lit, scene::Scene, spawn::Offset};
 
 fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
@@ -187,10 +186,8 @@ pub fn numbers(
 ) -> Result<String> {
     let models = tessellate(scene, segments)?;
     let counts = triangle_table(&STILL_LIFE_OBJECTS, &models, mesh, file);
-    let size = (
-        lesson.images.ray_cast.width(),
-        lesson.images.ray_cast.height(),
-    );
+    let reference = &lesson.images.ray_cast;
+    let size = (reference.width(), reference.height());
     let compare = agreement_table(size, TOLERANCE, &lesson.agreements);
     Ok(format!("{counts}\n{compare}"))
 }

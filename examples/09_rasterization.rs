@@ -15,7 +15,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::Vec3;
-use render_lessons::bvh::MeshScene;
+use render_lessons::bvh::ListOrTree;
 use render_lessons::course::compare::{Agreement, TOLERANCE, agreement, difference, reference};
 use render_lessons::course::lesson::{self, ImageFlags, Output};
 use render_lessons::course::{
@@ -85,10 +85,10 @@ pub fn images(
     let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
 
     let pixels = u64::from(camera.film().width()) * u64::from(camera.film().height());
-    let meshed = MeshScene::new(floor_and_mesh(scene, mesh)?, pixels);
+    let meshed = ListOrTree::new(floor_and_mesh(scene, mesh)?, pixels);
     let mesh_cast = match meshed {
-        MeshScene::List(_) => "ray cast, floor + mesh",
-        MeshScene::Tree(_) => "ray cast through a BVH, floor + mesh",
+        ListOrTree::List(_) => "ray cast, floor + mesh",
+        ListOrTree::Tree(_) => "ray cast through a BVH, floor + mesh",
     };
     let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera))?;
     drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes

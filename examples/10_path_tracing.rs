@@ -16,7 +16,7 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::ProgressBar;
 use render_lessons::Result;
-use render_lessons::bvh::MeshScene;
+use render_lessons::bvh::ListOrTree;
 use render_lessons::camera::Camera;
 use render_lessons::course::convergence::{Part, Renders, Study};
 use render_lessons::course::failure::LessonResult;
@@ -43,7 +43,7 @@ fn main() -> ExitCode {
         let Staged { scene, camera } = scene_and_camera(args.scene, size, lens)?;
         let study = args.study.study(args.path.settings())?;
         // Every object on every ray while that stays cheap, else lesson 11's BVH.
-        let scene = MeshScene::new(scene, study.samples() * u64::from(args.width * args.height));
+        let scene = ListOrTree::new(scene, study.samples() * u64::from(args.width * args.height));
         // ANCHOR_END: setup
         let renders = with_threads(threads, || render(&scene, &camera, &study, &args.output))?;
         let seconds = start.elapsed().as_secs_f64();

@@ -18,7 +18,7 @@ pub enum Error {
     Negative { param: &'static str, value: f32 },
     /// The up vector is parallel to the view direction, so no camera frame exists
     /// (STABILITY S10).
-    UpParallelToDirection,
+    UpParallelToDirection { param: &'static str },
     /// An image resolution was 0 or larger than `max` (for images, `limits::MAX_RESOLUTION`).
     Resolution {
         param: &'static str,
@@ -38,7 +38,11 @@ pub enum Error {
     /// A matrix has no inverse.
     Singular { param: &'static str },
     /// The operating system would not start a pool of `threads` worker threads.
-    ThreadPool { threads: usize, message: String },
+    ThreadPool {
+        param: &'static str,
+        threads: usize,
+        message: String,
+    },
     /// A pixel holds NaN or infinity and must not be written to an image.
     NonFinitePixel { x: u32, y: u32 },
     /// Reading or writing a file failed.
@@ -98,10 +102,10 @@ impl Error {
             | Error::Singular { param }
             | Error::TooFew { param, .. }
             | Error::Invalid { param, .. }
-            | Error::TooMuch { param, .. } => param,
-            Error::UpParallelToDirection => "up",
+            | Error::TooMuch { param, .. }
+            | Error::UpParallelToDirection { param }
+            | Error::ThreadPool { param, .. } => param,
             Error::NonFinitePixel { .. } => "pixel",
-            Error::ThreadPool { .. } => "threads",
             Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
             Error::VertexIndex { .. } => "triangle",
         }
@@ -119,9 +123,9 @@ impl fmt::Display for Error {
             Error::Negative { param, value } => {
                 write!(f, "{param} must be 0 or more (got {value})")
             }
-            Error::UpParallelToDirection => write!(
+            Error::UpParallelToDirection { param } => write!(
                 f,
-                "up must not be parallel to direction: no camera frame can be built"
+                "{param} must not be parallel to direction: no camera frame can be built"
             ),
             Error::Resolution { param, value, max } => write!(
                 f,
@@ -146,10 +150,14 @@ impl fmt::Display for Error {
                     "pixel ({x}, {y}) is NaN or infinite; refusing to write it"
                 )
             }
-            Error::ThreadPool { threads, message } => {
+            Error::ThreadPool {
+                param,
+                threads,
+                message,
+            } => {
                 write!(
                     f,
-                    "threads: could not start {threads} worker threads ({message})"
+                    "{param}: could not start {threads} worker threads ({message})"
                 )
             }
             Error::Io { path, message } | Error::Pfm { path, message } => {

@@ -67,6 +67,7 @@ pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool> {
         .num_threads(threads)
         .build()
         .map_err(|e| Error::ThreadPool {
+            param: "threads",
             threads,
             message: e.to_string(),
         })

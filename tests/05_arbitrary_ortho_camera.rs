@@ -82,20 +82,20 @@ proptest! {
 fn s10_up_parallel_to_direction_is_an_error_not_nan() {
     assert_eq!(
         camera_basis(Vec3::Y, Vec3::Y),
-        Err(Error::UpParallelToDirection)
+        Err(Error::UpParallelToDirection { param: "up" })
     );
     assert_eq!(
         camera_basis(Vec3::NEG_Y, Vec3::Y),
-        Err(Error::UpParallelToDirection)
+        Err(Error::UpParallelToDirection { param: "up" })
     );
     let nearly = Vec3::new(0.0, 1.0, 1e-8);
     assert_eq!(
         camera_basis(nearly, Vec3::Y),
-        Err(Error::UpParallelToDirection)
+        Err(Error::UpParallelToDirection { param: "up" })
     );
     assert_eq!(
         Frame::look(Vec3::ZERO, Vec3::Y * 3.0, Vec3::Y * 0.5),
-        Err(Error::UpParallelToDirection)
+        Err(Error::UpParallelToDirection { param: "up" })
     );
 }
 

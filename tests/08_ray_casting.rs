@@ -399,6 +399,7 @@ fn with_threads_runs_the_work_on_a_pool_of_that_many_threads() {
         assert_eq!(seen, Ok(n));
     }
     let error = render_lessons::Error::ThreadPool {
+        param: "threads",
         threads: 2,
         message: "no more threads".into(),
     };

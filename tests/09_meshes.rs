@@ -17,7 +17,7 @@ use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
 use glam::Vec3;
-use render_lessons::bvh::MeshScene;
+use render_lessons::bvh::ListOrTree;
 use render_lessons::camera::Camera;
 use render_lessons::course::compare::reference;
 use render_lessons::course::report::num;
@@ -506,11 +506,11 @@ fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_sa
     let model = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;
     let floor_and_torus = floor_and_mesh(&scene, &model).unwrap();
     // The book's render, 480 x 270 x 1025 primitives: the list.
-    let list = MeshScene::new(floor_and_torus.clone(), 480 * 270);
-    assert!(matches!(list, MeshScene::List(_)));
+    let list = ListOrTree::new(floor_and_torus.clone(), 480 * 270);
+    assert!(matches!(list, ListOrTree::List(_)));
     // At 1920 x 1080 the list would make 2 x 10^9 tests: the tree.
-    let tree = MeshScene::new(floor_and_torus, 1920 * 1080);
-    assert!(matches!(tree, MeshScene::Tree(_)));
+    let tree = ListOrTree::new(floor_and_torus, 1920 * 1080);
+    assert!(matches!(tree, ListOrTree::Tree(_)));
     let (a, b) = (reference(&list, &camera), reference(&tree, &camera));
     assert_eq!(a.unwrap(), b.unwrap());
 }

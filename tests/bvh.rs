@@ -527,11 +527,11 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
 
 /// Lesson 10's `--scene teapot`: the Cornell box with the Newell teapot (4032
 /// triangles) in place of the mirror ball. The lesson draws it through the tree
-/// (`MeshScene`); here a small render through the list and through the tree are the
+/// (`ListOrTree`); here a small render through the list and through the tree are the
 /// same, bit for bit.
 #[test]
 fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
-    use render_lessons::bvh::MeshScene;
+    use render_lessons::bvh::ListOrTree;
     use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
     let Staged {
@@ -547,7 +547,7 @@ fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
     assert_eq!(path_traced(&tree, &camera), path_traced(&list, &camera));
     // The lesson's own choice at its default size: the tree.
     let rays = 160 * 120 * 64;
-    assert!(matches!(MeshScene::new(list, rays), MeshScene::Tree(_)));
+    assert!(matches!(ListOrTree::new(list, rays), ListOrTree::Tree(_)));
 }
 
 #[test]

@@ -31,7 +31,7 @@ mod sah;
 mod slab;
 pub mod traverse;
 
-pub use list_or_tree::{BRUTE_FORCE_TESTS, MeshScene};
+pub use list_or_tree::{BRUTE_FORCE_TESTS, ListOrTree};
 
 /// The most levels a tree may have, root included; also the size of the traversal
 /// stack, which never holds more entries than the tree is deep.

@@ -29,7 +29,7 @@ pub fn camera_basis(d: Vec3, k: Vec3) -> Result<Basis> {
     let k = unit("up", k)?;
     let k_cross_w = k.cross(w);
     if k_cross_w.length() < MIN_UP_SINE {
-        return Err(Error::UpParallelToDirection);
+        return Err(Error::UpParallelToDirection { param: "up" });
     }
     let u = k_cross_w.normalize();
     let u = (u - u.dot(w) * w).normalize();
@@ -46,7 +46,7 @@ pub fn camera_basis_as_on_slide(d: Vec3, k: Vec3) -> Result<Basis> {
     let w = unit("direction", d)?;
     let u = unit("up", k)?.cross(w);
     if u == Vec3::ZERO {
-        return Err(Error::UpParallelToDirection);
+        return Err(Error::UpParallelToDirection { param: "up" });
     }
     let u = u.normalize();
     let v = w.cross(u).normalize();

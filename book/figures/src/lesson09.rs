@@ -4,7 +4,7 @@
 //! settings from the same core calls as the lesson.
 
 use glam::{Vec2, Vec3};
-use render_lessons::bvh::MeshScene;
+use render_lessons::bvh::ListOrTree;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::compare::reference;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
@@ -49,7 +49,7 @@ pub fn figures(output: &Output) -> Result<()> {
     let mesh_cast = reference(&floor_and_mesh(&scene, &mesh)?, &camera)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
     let teapot = mesh_on_the_floor(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
-    let teapot_scene = MeshScene::new(floor_and_mesh(&scene, &teapot)?, 480 * 270);
+    let teapot_scene = ListOrTree::new(floor_and_mesh(&scene, &teapot)?, 480 * 270);
     let teapot_cast = reference(&teapot_scene, &camera)?.image;
     let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];

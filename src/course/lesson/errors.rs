@@ -14,10 +14,8 @@ pub fn as_typed(e: &Error) -> String {
 
 /// [`as_typed`] with `flag_for`, the lesson's flag for a parameter's name. Matched
 /// on the error's fields, never on its text: an error with a `param` field gets the
-/// flag in that field; the two whose parameter is fixed and opens their message,
-/// [`Error::UpParallelToDirection`] (`up`) and [`Error::ThreadPool`] (`threads`),
-/// get the flag's dashes before it; the others (files, pixels, triangles) name no
-/// flag and stay as they are.
+/// flag in that field; the others (files, pixels, triangles) name no flag and stay
+/// as they are.
 fn typed(e: &Error, flag_for: impl Fn(&str) -> Option<&'static str>) -> String {
     let mut typed = e.clone();
     match &mut typed {
@@ -32,16 +30,13 @@ fn typed(e: &Error, flag_for: impl Fn(&str) -> Option<&'static str>) -> String {
         | Error::Singular { param }
         | Error::TooFew { param, .. }
         | Error::Invalid { param, .. }
-        | Error::TooMuch { param, .. } => {
+        | Error::TooMuch { param, .. }
+        | Error::UpParallelToDirection { param }
+        | Error::ThreadPool { param, .. } => {
             if let Some(flag) = flag_for(param) {
                 *param = flag;
             }
             typed.to_string()
-        }
-        Error::UpParallelToDirection | Error::ThreadPool { .. }
-            if flag_for(e.param()).is_some() =>
-        {
-            format!("--{e}")
         }
         _ => e.to_string(),
     }
@@ -95,10 +90,11 @@ mod tests {
             "--screen-distance must be greater than 0 (got -1)"
         );
         assert_eq!(
-            typed(Error::UpParallelToDirection),
+            typed(Error::UpParallelToDirection { param: "up" }),
             "--up must not be parallel to direction: no camera frame can be built"
         );
         let pool = Error::ThreadPool {
+            param: "threads",
             threads: 3,
             message: "no".into(),
         };

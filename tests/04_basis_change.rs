@@ -195,4 +195,13 @@ fn lesson_04_worked_numbers() {
         show(turned.to_world(Vec3::new(1.0, 1.0, 0.0)), 4),
         "0.0000 1.4142"
     );
+    // Exercise 4: the lesson at `--angle 45 --b 1,1,0` prints |B^T a - b|, "about
+    // 8e-8" on the page, from the same basis the lesson makes.
+    let b = Vec3::new(1.0, 1.0, 0.0);
+    let basis = lesson::turned_basis(45.0).unwrap();
+    let error = (basis.to_local(basis.to_world(b)) - b).length();
+    eprintln!("exercise 4: |B^T a - b| = {error:e}");
+    assert_eq!(format!("{error:.0e}"), "8e-8");
+    let numbers = lesson::numbers(45.0, b).unwrap();
+    assert!(numbers.contains(&format!("{error:.1e}")), "{numbers}");
 }

@@ -9,6 +9,7 @@ use std::path::Path;
 use glam::Vec3;
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Camera, Film, OrthoCamera};
+use render_lessons::course::compare::agreement;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
 use render_lessons::render::{render, with_threads};
@@ -333,6 +334,40 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
 
 /// The numbers `08_ray_casting.md` and `08_1_light_and_shadows.md` work out by hand,
 /// and the acne counts the second quotes from runs with other flags.
+/// Exercise 2 of the page on light and shadows: the far comparison at `--far
+/// 1000,0,0` and at `--far 0,0,0`, pixels of the lit image that differ by more than
+/// two levels from the image at the origin, fixed epsilon and scaled offset.
+#[test]
+fn exercise_2_far_comparisons_count_the_pages_pixels() {
+    let page = std::fs::read_to_string("chapters/08_1_light_and_shadows.md").unwrap();
+    let total = f64::from(BOOK.0 * BOOK.1);
+    for (far, quoted) in [
+        (
+            Vec3::new(1000.0, 0.0, 0.0),
+            "reports {fixed} pixels ({share} %), and {scaled} for",
+        ),
+        (
+            Vec3::ZERO,
+            "the rounding error: {fixed} pixels ({share} %),",
+        ),
+    ] {
+        let images = lesson::images(BOOK, EPSILON, far).unwrap();
+        let differing = |image| agreement(image, &images.lambert, &[], 2.0 / 255.0).differing;
+        let (fixed, scaled) = (
+            differing(&images.far_fixed_epsilon),
+            differing(&images.far_scaled_offset),
+        );
+        eprintln!("--far {far}: fixed epsilon {fixed} pixels, scaled offset {scaled}");
+        assert_eq!(scaled, 0, "--far {far}");
+        let share = format!("{:.2}", 100.0 * f64::from(fixed) / total);
+        let phrase = quoted
+            .replace("{fixed}", &fixed.to_string())
+            .replace("{share}", &share)
+            .replace("{scaled}", &scaled.to_string());
+        assert!(page.contains(&phrase), "the page no longer says {phrase:?}");
+    }
+}
+
 #[test]
 fn lesson_08_worked_numbers() {
     // The image: 480 x 270 = 129 600 pixels.

@@ -88,8 +88,20 @@ pub enum Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
-    /// The name of the parameter at fault, as the caller spelled it.
+    /// The name of the parameter at fault, as the caller spelled it (for a file, its
+    /// path).
     pub fn param(&self) -> &str {
+        match self {
+            Error::NonFinitePixel { .. } => "pixel",
+            Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
+            Error::VertexIndex { .. } => "triangle",
+            named => named.clone().param_field().map_or("", |param| *param),
+        }
+    }
+
+    /// The `param` field of the variants that have one, to read or to rewrite: the
+    /// course puts the flag the user typed in it (`course::lesson::as_typed`).
+    pub fn param_field(&mut self) -> Option<&mut &'static str> {
         match self {
             Error::NotFinite { param }
             | Error::ZeroLength { param }
@@ -104,10 +116,12 @@ impl Error {
             | Error::Invalid { param, .. }
             | Error::TooMuch { param, .. }
             | Error::UpParallelToDirection { param }
-            | Error::ThreadPool { param, .. } => param,
-            Error::NonFinitePixel { .. } => "pixel",
-            Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
-            Error::VertexIndex { .. } => "triangle",
+            | Error::ThreadPool { param, .. } => Some(param),
+            Error::NonFinitePixel { .. }
+            | Error::Io { .. }
+            | Error::Obj { .. }
+            | Error::Pfm { .. }
+            | Error::VertexIndex { .. } => None,
         }
     }
 }

@@ -650,25 +650,14 @@ fn polygon_light_on_floor(p: [f64; 3], rho: f64, poly: &[[f64; 3]], radiance: f6
     rho / std::f64::consts::PI * radiance / 2.0 * sum.abs()
 }
 
-/// The light-sampling estimators of S20: every strategy that traces a shadow ray to
-/// a point on a light, with both sphere samplers.
+/// The light-sampling estimators of S20, every strategy that traces a shadow ray to
+/// a point on a light, with both sphere samplers: S19's less the two that sample no
+/// light (light area, light cone, MIS with each, in that order).
 fn s20_estimators() -> Vec<(&'static str, Settings)> {
-    let with = |sampling, sphere_lights| Settings {
-        sphere_lights,
-        ..settings(sampling, Some(1), false)
-    };
-    vec![
-        (
-            "light area",
-            with(Sampling::NextEvent, SphereSampling::Area),
-        ),
-        (
-            "light cone",
-            with(Sampling::NextEvent, SphereSampling::Cone),
-        ),
-        ("MIS (area)", with(Sampling::Mis, SphereSampling::Area)),
-        ("MIS (cone)", with(Sampling::Mis, SphereSampling::Cone)),
-    ]
+    s19_estimators()
+        .into_iter()
+        .filter(|(_, s)| matches!(s.sampling, Sampling::NextEvent | Sampling::Mis))
+        .collect()
 }
 
 /// Mean and sigma of `n` samples of direct light (depth 1) at the floor point

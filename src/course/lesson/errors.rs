@@ -18,28 +18,12 @@ pub fn as_typed(e: &Error) -> String {
 /// as they are.
 fn typed(e: &Error, flag_for: impl Fn(&str) -> Option<&'static str>) -> String {
     let mut typed = e.clone();
-    match &mut typed {
-        Error::NotFinite { param }
-        | Error::ZeroLength { param }
-        | Error::NotPositive { param, .. }
-        | Error::Negative { param, .. }
-        | Error::Resolution { param, .. }
-        | Error::EmptyRange { param, .. }
-        | Error::NotOrthonormal { param, .. }
-        | Error::NotSymmetric { param, .. }
-        | Error::Singular { param }
-        | Error::TooFew { param, .. }
-        | Error::Invalid { param, .. }
-        | Error::TooMuch { param, .. }
-        | Error::UpParallelToDirection { param }
-        | Error::ThreadPool { param, .. } => {
-            if let Some(flag) = flag_for(param) {
-                *param = flag;
-            }
-            typed.to_string()
-        }
-        _ => e.to_string(),
+    if let Some(param) = typed.param_field()
+        && let Some(flag) = flag_for(param)
+    {
+        *param = flag;
     }
+    typed.to_string()
 }
 
 /// For `map_err`: an error reading the file given after `flag` (`--mesh`) names the

@@ -521,15 +521,21 @@ fn square_light_exact(side: f64, h: f64) -> f64 {
     4.0 * corner
 }
 
-#[test]
-fn s19_for_a_quad_light_every_estimator_is_unbiased() {
+/// A white Lambertian floor under a two-sided unit square light of radiance 1 at
+/// height 1, centred over the origin (corners at x, z = -0.5 and 0.5).
+fn square_light_scene() -> Scene {
     let floor = Object::new(
         Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap()),
         Material::diffuse(Vec3::ONE).unwrap(),
     );
     let quad = Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).unwrap();
     let light = Object::emitting(Shape::Quad(quad), Material::BLACK, Vec3::ONE);
-    let scene = Scene::new(vec![floor, light], Vec3::ZERO).unwrap();
+    Scene::new(vec![floor, light], Vec3::ZERO).unwrap()
+}
+
+#[test]
+fn s19_for_a_quad_light_every_estimator_is_unbiased() {
+    let scene = square_light_scene();
     let exact = square_light_exact(1.0, 1.0);
     assert_quotes("10_5_next_event.md", "exact form factor 0.239456", exact);
     let ray = Ray::new(Vec3::new(0.0, 0.5, 0.0), -Vec3::Y).unwrap();
@@ -723,19 +729,19 @@ fn s20_direct_light_on_the_two_light_floor_matches_the_closed_form_near_and_far(
 /// does not reach a quad, so the area rows are enough).
 #[test]
 fn s20_direct_light_from_a_quad_matches_the_closed_form_near_and_far() {
-    let floor = Object::new(
-        Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap()),
-        Material::diffuse(Vec3::ONE).unwrap(),
-    );
-    let quad = Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).unwrap();
-    let light = Object::emitting(Shape::Quad(quad), Material::BLACK, Vec3::ONE);
-    let scene = Scene::new(vec![floor, light], Vec3::ZERO).unwrap();
+    let scene = square_light_scene();
     let corners = [
         [-0.5, 1.0, -0.5],
         [-0.5, 1.0, 0.5],
         [0.5, 1.0, 0.5],
         [0.5, 1.0, -0.5],
     ];
+    // Under the centre, Lambert's polygon formula is S19's form factor.
+    let centre = polygon_light_on_floor([0.0; 3], 1.0, &corners, 1.0);
+    assert!(
+        (centre - square_light_exact(1.0, 1.0)).abs() < 1e-12,
+        "{centre}"
+    );
     let points = [
         (0.0, 0.0),
         (0.0, 3.0),

@@ -16,6 +16,7 @@ use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::mine;
 use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, vec3};
+use render_lessons::error::Problem;
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
@@ -66,9 +67,11 @@ pub fn numbers(degrees: f32, p: Vec3) -> Result<String> {
 
 /// `p` if it is finite; otherwise the error that `--point` was too large.
 fn finite(p: Vec3) -> Result<Vec3> {
-    p.is_finite().then_some(p).ok_or(Error::Invalid {
+    p.is_finite().then_some(p).ok_or(Error::Value {
         param: "point",
-        reason: "is so large that a transform of it overflows f32",
+        problem: Problem::Invalid {
+            reason: "is so large that a transform of it overflows f32",
+        },
     })
 }
 

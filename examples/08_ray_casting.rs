@@ -19,6 +19,7 @@ use render_lessons::course::lesson::{self, ImageFlags, Output};
 use render_lessons::course::mine::{self, Picture};
 use render_lessons::course::parsers;
 use render_lessons::course::report::vec3;
+use render_lessons::error::Problem;
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::ray::Interval;
 use render_lessons::raycast::{lit, shadowless};
@@ -45,9 +46,11 @@ fn main() -> ExitCode {
 pub fn images((width, height): (u32, u32), epsilon: f32, far: Vec3) -> Result<Images> {
     let near = still_life(Vec3::ZERO)?;
     let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
-    let far_scene = still_life(far).map_err(|_| Error::Invalid {
+    let far_scene = still_life(far).map_err(|_| Error::Value {
         param: "far",
-        reason: "moves the scene out of f32's reach (its triangle loses its area)",
+        problem: Problem::Invalid {
+            reason: "moves the scene out of f32's reach (its triangle loses its area)",
+        },
     })?;
     let [_, far_pinhole] = still_life_cameras(width, height, far)?;
     Ok(Images {

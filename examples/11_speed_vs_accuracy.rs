@@ -26,7 +26,7 @@ use render_lessons::course::measure::lessons::{Sweep, best_ms, lessons_measured}
 use render_lessons::course::measure::runner::run_charts;
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
 use render_lessons::course::report::{Table, Timings, num};
-use render_lessons::error::Error;
+use render_lessons::error::{Error, Problem};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::mesh::tessellate;
 use render_lessons::progress;
@@ -46,9 +46,11 @@ fn main() -> ExitCode {
             args.output.image("11_mesh.png", &image)?;
             Ok(())
         }
-        None if args.subdivide.is_some() => Err(Error::Invalid {
+        None if args.subdivide.is_some() => Err(Error::Value {
             param: "subdivide",
-            reason: "needs --mesh: it splits that mesh's triangles",
+            problem: Problem::Invalid {
+                reason: "needs --mesh: it splits that mesh's triangles",
+            },
         }
         .into()),
         None => {

@@ -7,7 +7,7 @@
 
 use glam::{Mat3, Vec3};
 
-use crate::error::{Error, Result, finite3};
+use crate::error::{Error, Problem, Result, finite3};
 
 /// Largest |B^T B - I| entry accepted as orthonormal by [`Basis::new`].
 pub const ORTHONORMAL_TOLERANCE: f32 = 1e-4;
@@ -40,9 +40,9 @@ impl Basis {
         if error <= ORTHONORMAL_TOLERANCE {
             Ok(basis)
         } else {
-            Err(Error::NotOrthonormal {
+            Err(Error::Value {
                 param: "basis",
-                error,
+                problem: Problem::NotOrthonormal { error },
             })
         }
     }

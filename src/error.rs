@@ -1,52 +1,65 @@
-//! One error type for the whole crate: every constructor that can be handed bad
-//! input returns it, and every variant names the parameter at fault.
+//! The renderer's errors, grouped by what failed: a value handed in, a file, or
+//! the machine. Every error names what was at fault: a value or a request names its
+//! parameter, a file its path. How an error reads as a lesson's flag is the course's
+//! business (`course::lesson::errors`), not the renderer's.
 
 use std::fmt;
 
 use glam::Vec3;
 
-/// What went wrong, and with which parameter.
+/// What failed, and with which parameter or file.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Error {
-    /// A number was NaN or infinite.
-    NotFinite { param: &'static str },
-    /// A direction (or other vector that must have a length) was zero.
-    ZeroLength { param: &'static str },
-    /// A value that must be strictly positive was not.
-    NotPositive { param: &'static str, value: f32 },
-    /// A value that must be 0 or more was negative.
-    Negative { param: &'static str, value: f32 },
-    /// The up vector is parallel to the view direction, so no camera frame exists
-    /// (STABILITY S10).
-    UpParallelToDirection { param: &'static str },
-    /// An image resolution was 0 or larger than `max` (for images, `limits::MAX_RESOLUTION`).
-    Resolution {
+    /// A value handed to a constructor or a writer is not one it can use.
+    Value {
         param: &'static str,
-        value: u32,
-        max: u32,
+        problem: Problem,
     },
-    /// A range such as `x_min..x_max` was empty or inverted.
-    EmptyRange {
-        param: &'static str,
-        min: f32,
-        max: f32,
-    },
-    /// Three vectors that should form an orthonormal basis do not.
-    NotOrthonormal { param: &'static str, error: f32 },
-    /// A matrix that must be symmetric is not (relative asymmetry `error`).
-    NotSymmetric { param: &'static str, error: f32 },
-    /// A matrix has no inverse.
-    Singular { param: &'static str },
-    /// The operating system would not start a pool of `threads` worker threads.
-    ThreadPool {
-        param: &'static str,
-        threads: usize,
+    /// A file could not be read, written or understood; `line` (1-based) when known.
+    File {
+        path: String,
+        line: Option<usize>,
         message: String,
     },
+    /// A value asks for more than the machine can give.
+    Machine {
+        param: &'static str,
+        shortfall: Shortfall,
+    },
+}
+
+/// What is wrong with a value. Each reads after the parameter's name: "radius"
+/// + "must be greater than 0 (got -1)".
+#[derive(Clone, Debug, PartialEq)]
+pub enum Problem {
+    /// NaN or infinite.
+    NotFinite,
+    /// A direction (or other vector that must have a length) was zero.
+    ZeroLength,
+    /// Must be strictly positive.
+    NotPositive { value: f32 },
+    /// Must be 0 or more.
+    Negative { value: f32 },
+    /// The up vector is parallel to the view direction, so no camera frame exists
+    /// (STABILITY S10).
+    UpParallelToDirection,
+    /// An image resolution was 0 or larger than `max` (for images,
+    /// `limits::MAX_RESOLUTION`).
+    Resolution { value: u32, max: u32 },
+    /// A range such as `x_min..x_max` was empty or inverted.
+    EmptyRange { min: f32, max: f32 },
+    /// Three vectors that should form an orthonormal basis do not.
+    NotOrthonormal { error: f32 },
+    /// A matrix that must be symmetric is not (relative asymmetry `error`).
+    NotSymmetric { error: f32 },
+    /// A matrix has no inverse.
+    Singular,
+    /// A count such as a sphere's number of segments was below its minimum.
+    TooFew { value: u32, min: u32 },
+    /// Outside what the parameter may be; `reason` says what is allowed.
+    Invalid { reason: &'static str },
     /// A pixel holds NaN or infinity and must not be written to an image.
     NonFinitePixel { x: u32, y: u32 },
-    /// Reading or writing a file failed.
-    Io { path: String, message: String },
     /// Triangle number `triangle` (0-based) refers to vertex `index`, but the mesh
     /// has only `vertices` vertices.
     VertexIndex {
@@ -54,34 +67,19 @@ pub enum Error {
         index: u32,
         vertices: usize,
     },
-    /// A count such as a sphere's number of segments was below its minimum.
-    TooFew {
-        param: &'static str,
-        value: u32,
-        min: u32,
-    },
-    /// A parameter's value is outside what it may be; `reason` says what is allowed.
-    Invalid {
-        param: &'static str,
-        reason: &'static str,
-    },
-    /// A parameter asks for more than the machine can give: `needed` units where
-    /// `limit` are allowed (`unit` is "bytes", "threads", ...).
+}
+
+/// What the machine cannot give.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shortfall {
+    /// `needed` units where `limit` are allowed (`unit` is "bytes", "threads", ...).
     TooMuch {
-        param: &'static str,
         needed: u64,
         limit: u64,
         unit: &'static str,
     },
-    /// A PFM image could not be read: `path` names the file (or the bytes), `message`
-    /// says what is wrong with it.
-    Pfm { path: String, message: String },
-    /// An OBJ file could not be turned into a mesh; `line` (1-based) when known.
-    Obj {
-        path: String,
-        line: Option<usize>,
-        message: String,
-    },
+    /// The operating system would not start a pool of `threads` worker threads.
+    ThreadPool { threads: usize, message: String },
 }
 
 /// The crate's result type.
@@ -92,36 +90,24 @@ impl Error {
     /// path).
     pub fn param(&self) -> &str {
         match self {
-            Error::NonFinitePixel { .. } => "pixel",
-            Error::Io { path, .. } | Error::Obj { path, .. } | Error::Pfm { path, .. } => path,
-            Error::VertexIndex { .. } => "triangle",
-            named => named.clone().param_field().map_or("", |param| *param),
+            Error::Value { param, .. } | Error::Machine { param, .. } => param,
+            Error::File { path, .. } => path,
         }
     }
 
-    /// The `param` field of the variants that have one, to read or to rewrite: the
-    /// course puts the flag the user typed in it (`course::lesson::as_typed`).
-    pub fn param_field(&mut self) -> Option<&mut &'static str> {
+    /// What is wrong, without the parameter's name: the error reads
+    /// "{param} {what}" ("radius must be greater than 0 (got -1)"), so a lesson
+    /// can put its own name for the parameter, its flag, in front.
+    pub fn what(&self) -> String {
         match self {
-            Error::NotFinite { param }
-            | Error::ZeroLength { param }
-            | Error::NotPositive { param, .. }
-            | Error::Negative { param, .. }
-            | Error::Resolution { param, .. }
-            | Error::EmptyRange { param, .. }
-            | Error::NotOrthonormal { param, .. }
-            | Error::NotSymmetric { param, .. }
-            | Error::Singular { param }
-            | Error::TooFew { param, .. }
-            | Error::Invalid { param, .. }
-            | Error::TooMuch { param, .. }
-            | Error::UpParallelToDirection { param }
-            | Error::ThreadPool { param, .. } => Some(param),
-            Error::NonFinitePixel { .. }
-            | Error::Io { .. }
-            | Error::Obj { .. }
-            | Error::Pfm { .. }
-            | Error::VertexIndex { .. } => None,
+            Error::Value { problem, .. } => problem.to_string(),
+            Error::Machine { shortfall, .. } => shortfall.to_string(),
+            Error::File {
+                line: Some(line),
+                message,
+                ..
+            } => format!("line {line}: {message}"),
+            Error::File { message, .. } => message.clone(),
         }
     }
 }
@@ -129,96 +115,86 @@ impl Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::NotFinite { param } => write!(f, "{param} must be a finite number"),
-            Error::ZeroLength { param } => write!(f, "{param} must not have zero length"),
-            Error::NotPositive { param, value } => {
-                write!(f, "{param} must be greater than 0 (got {value})")
-            }
-            Error::Negative { param, value } => {
-                write!(f, "{param} must be 0 or more (got {value})")
-            }
-            Error::UpParallelToDirection { param } => write!(
-                f,
-                "{param} must not be parallel to direction: no camera frame can be built"
-            ),
-            Error::Resolution { param, value, max } => write!(
-                f,
-                "{param} must be between 1 and {max} pixels (got {value})"
-            ),
-            Error::EmptyRange { param, min, max } => {
-                write!(f, "{param} must have min < max (got {min} .. {max})")
-            }
-            Error::NotOrthonormal { param, error } => {
-                write!(f, "{param} is not orthonormal (error {error:e})")
-            }
-            Error::NotSymmetric { param, error } => {
-                write!(
-                    f,
-                    "{param} must be symmetric (relative asymmetry {error:e})"
-                )
-            }
-            Error::Singular { param } => write!(f, "{param} is singular: it has no inverse"),
-            Error::NonFinitePixel { x, y } => {
-                write!(
-                    f,
-                    "pixel ({x}, {y}) is NaN or infinite; refusing to write it"
-                )
-            }
-            Error::ThreadPool {
-                param,
-                threads,
+            Error::Value { param, problem } => write!(f, "{param} {problem}"),
+            Error::Machine { param, shortfall } => write!(f, "{param} {shortfall}"),
+            Error::File {
+                path,
+                line: Some(line),
                 message,
-            } => {
-                write!(
-                    f,
-                    "{param}: could not start {threads} worker threads ({message})"
-                )
-            }
-            Error::Io { path, message } | Error::Pfm { path, message } => {
-                write!(f, "{path}: {message}")
-            }
-            Error::TooFew { param, value, min } => {
-                write!(f, "{param} must be at least {min} (got {value})")
-            }
-            Error::Invalid { param, reason } => write!(f, "{param} {reason}"),
-            Error::TooMuch {
-                param,
-                needed,
-                limit,
-                unit: "bytes",
-            } => write!(
+            } => write!(f, "{path}, line {line}: {message}"),
+            Error::File {
+                path,
+                line: None,
+                message,
+            } => write!(f, "{path}: {message}"),
+        }
+    }
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Problem::NotFinite => write!(f, "must be a finite number"),
+            Problem::ZeroLength => write!(f, "must not have zero length"),
+            Problem::NotPositive { value } => write!(f, "must be greater than 0 (got {value})"),
+            Problem::Negative { value } => write!(f, "must be 0 or more (got {value})"),
+            Problem::UpParallelToDirection => write!(
                 f,
-                "{param} would need {} of memory, more than the {} this machine allows",
-                bytes(*needed),
-                bytes(*limit)
+                "must not be parallel to direction: no camera frame can be built"
             ),
-            Error::TooMuch {
-                param,
-                needed,
-                limit,
-                unit,
-            } => write!(
-                f,
-                "{param} asks for {needed} {unit}, more than the limit of {limit}"
-            ),
-            Error::VertexIndex {
+            Problem::Resolution { value, max } => {
+                write!(f, "must be between 1 and {max} pixels (got {value})")
+            }
+            Problem::EmptyRange { min, max } => {
+                write!(f, "must have min < max (got {min} .. {max})")
+            }
+            Problem::NotOrthonormal { error } => write!(f, "is not orthonormal (error {error:e})"),
+            Problem::NotSymmetric { error } => {
+                write!(f, "must be symmetric (relative asymmetry {error:e})")
+            }
+            Problem::Singular => write!(f, "is singular: it has no inverse"),
+            Problem::TooFew { value, min } => write!(f, "must be at least {min} (got {value})"),
+            Problem::Invalid { reason } => write!(f, "{reason}"),
+            Problem::NonFinitePixel { x, y } => {
+                write!(f, "({x}, {y}) is NaN or infinite; refusing to write it")
+            }
+            Problem::VertexIndex {
                 triangle,
                 index,
                 vertices,
             } => write!(
                 f,
-                "triangle {triangle} refers to vertex {index}, but the mesh has {vertices} vertices"
+                "{triangle} refers to vertex {index}, but the mesh has {vertices} vertices"
             ),
-            Error::Obj {
-                path,
-                line: Some(line),
-                message,
-            } => write!(f, "{path}, line {line}: {message}"),
-            Error::Obj {
-                path,
-                line: None,
-                message,
-            } => write!(f, "{path}: {message}"),
+        }
+    }
+}
+
+impl fmt::Display for Shortfall {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Shortfall::TooMuch {
+                needed,
+                limit,
+                unit: "bytes",
+            } => write!(
+                f,
+                "would need {} of memory, more than the {} this machine allows",
+                bytes(*needed),
+                bytes(*limit)
+            ),
+            Shortfall::TooMuch {
+                needed,
+                limit,
+                unit,
+            } => write!(
+                f,
+                "asks for {needed} {unit}, more than the limit of {limit}"
+            ),
+            Shortfall::ThreadPool { threads, message } => write!(
+                f,
+                "asks for {threads} worker threads, which the system would not start ({message})"
+            ),
         }
     }
 }
@@ -236,12 +212,15 @@ fn bytes(n: u64) -> String {
     }
 }
 
-/// `value` itself if it is finite, else [`Error::NotFinite`] naming `param`.
+/// `value` itself if it is finite, else a `Problem::NotFinite` error naming `param`.
 pub fn finite(param: &'static str, value: f32) -> Result<f32> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(Error::NotFinite { param })
+        Err(Error::Value {
+            param,
+            problem: Problem::NotFinite,
+        })
     }
 }
 
@@ -250,7 +229,10 @@ pub fn finite3(param: &'static str, v: Vec3) -> Result<Vec3> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(Error::NotFinite { param })
+        Err(Error::Value {
+            param,
+            problem: Problem::NotFinite,
+        })
     }
 }
 
@@ -273,7 +255,10 @@ pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
         (v / v.abs().max_element()).normalize_or_zero()
     };
     if n == Vec3::ZERO {
-        Err(Error::ZeroLength { param })
+        Err(Error::Value {
+            param,
+            problem: Problem::ZeroLength,
+        })
     } else {
         Ok(n)
     }
@@ -284,7 +269,10 @@ pub fn positive(param: &'static str, value: f32) -> Result<f32> {
     if finite(param, value)? > 0.0 {
         Ok(value)
     } else {
-        Err(Error::NotPositive { param, value })
+        Err(Error::Value {
+            param,
+            problem: Problem::NotPositive { value },
+        })
     }
 }
 
@@ -293,7 +281,10 @@ pub fn non_negative(param: &'static str, value: f32) -> Result<f32> {
     if finite(param, value)? >= 0.0 {
         Ok(value)
     } else {
-        Err(Error::Negative { param, value })
+        Err(Error::Value {
+            param,
+            problem: Problem::Negative { value },
+        })
     }
 }
 
@@ -322,6 +313,12 @@ mod tests {
                 );
             }
         }
-        assert_eq!(unit("v", Vec3::ZERO), Err(Error::ZeroLength { param: "v" }));
+        assert_eq!(
+            unit("v", Vec3::ZERO),
+            Err(Error::Value {
+                param: "v",
+                problem: Problem::ZeroLength
+            })
+        );
     }
 }

@@ -8,8 +8,9 @@ use std::path::Path;
 use crate::error::{Error, Result};
 
 fn io_error(path: &Path, e: impl std::fmt::Display) -> Error {
-    Error::Io {
+    Error::File {
         path: path.display().to_string(),
+        line: None,
         message: e.to_string(),
     }
 }

@@ -3,7 +3,7 @@
 //! that asks for more is refused with the estimate and the limit, instead of an
 //! abort (allocation failure) half way through or a run that never ends.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result, Shortfall};
 
 /// The largest width or height of an image, in pixels.
 pub const MAX_RESOLUTION: u32 = 16_384;
@@ -43,10 +43,12 @@ pub fn image_side(param: &'static str, value: u32) -> Result<u32> {
     if (1..=MAX_RESOLUTION).contains(&value) {
         Ok(value)
     } else {
-        Err(Error::Resolution {
+        Err(Error::Value {
             param,
-            value,
-            max: MAX_RESOLUTION,
+            problem: Problem::Resolution {
+                value,
+                max: MAX_RESOLUTION,
+            },
         })
     }
 }
@@ -77,11 +79,13 @@ pub fn memory(param: &'static str, bytes: u64) -> Result<()> {
     if bytes <= limit {
         Ok(())
     } else {
-        Err(Error::TooMuch {
+        Err(Error::Machine {
             param,
-            needed: bytes,
-            limit,
-            unit: "bytes",
+            shortfall: Shortfall::TooMuch {
+                needed: bytes,
+                limit,
+                unit: "bytes",
+            },
         })
     }
 }
@@ -99,16 +103,17 @@ pub fn images(count: u64, width: u32, height: u32, per_pixel: u64) -> u64 {
 /// [`MAX_THREADS`] are refused.
 pub fn threads(param: &'static str, threads: Option<usize>) -> Result<Option<usize>> {
     match threads {
-        Some(0) => Err(Error::TooFew {
+        Some(0) => Err(Error::Value {
             param,
-            value: 0,
-            min: 1,
+            problem: Problem::TooFew { value: 0, min: 1 },
         }),
-        Some(n) if n > MAX_THREADS => Err(Error::TooMuch {
+        Some(n) if n > MAX_THREADS => Err(Error::Machine {
             param,
-            needed: n as u64,
-            limit: MAX_THREADS as u64,
-            unit: "threads",
+            shortfall: Shortfall::TooMuch {
+                needed: n as u64,
+                limit: MAX_THREADS as u64,
+                unit: "threads",
+            },
         }),
         other => Ok(other),
     }

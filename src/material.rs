@@ -13,7 +13,7 @@ use std::f32::consts::PI;
 
 use glam::Vec3;
 
-use crate::error::{Error, Result, finite3, positive};
+use crate::error::{Error, Problem, Result, finite3, positive};
 
 /// A surface's scattering.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,9 +32,11 @@ fn fraction3(param: &'static str, v: Vec3) -> Result<Vec3> {
     if v.min_element() >= 0.0 && v.max_element() <= 1.0 {
         Ok(v)
     } else {
-        Err(Error::Invalid {
+        Err(Error::Value {
             param,
-            reason: "must lie between 0 and 1 in every channel",
+            problem: Problem::Invalid {
+                reason: "must lie between 0 and 1 in every channel",
+            },
         })
     }
 }

@@ -2,7 +2,7 @@
 
 use glam::Vec3;
 
-use crate::error::{Error, Result, finite3, unit};
+use crate::error::{Error, Problem, Result, finite3, unit};
 
 /// A ray with origin `o` and direction `d`: unit for every ray of [`Ray::new`].
 ///
@@ -67,7 +67,10 @@ impl Ray {
     pub fn new_unnormalised(origin: Vec3, direction: Vec3) -> Result<Ray> {
         let direction = finite3("direction", direction)?;
         if direction == Vec3::ZERO {
-            return Err(Error::ZeroLength { param: "direction" });
+            return Err(Error::Value {
+                param: "direction",
+                problem: Problem::ZeroLength,
+            });
         }
         Ok(Ray {
             origin: finite3("origin", origin)?,

@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 
 use crate::camera::Camera;
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shortfall};
 use crate::framebuffer::Framebuffer;
 use crate::ray::Ray;
 
@@ -61,15 +61,17 @@ pub fn with_threads<T: Send, E: Send + From<Error>>(
 
 /// A pool of `threads` worker threads, for a caller that runs many pieces of work
 /// on it (`pool.install(...)`, as [`with_threads`] does once); an error
-/// ([`Error::ThreadPool`]) if the system would not start them.
+/// ([`Shortfall::ThreadPool`](crate::error::Shortfall::ThreadPool)) if the system would not start them.
 pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
-        .map_err(|e| Error::ThreadPool {
+        .map_err(|e| Error::Machine {
             param: "threads",
-            threads,
-            message: e.to_string(),
+            shortfall: Shortfall::ThreadPool {
+                threads,
+                message: e.to_string(),
+            },
         })
 }
 

@@ -10,7 +10,7 @@
 
 use glam::Vec3;
 
-use crate::error::{Error, Result, finite3};
+use crate::error::{Error, Problem, Result, finite3};
 use crate::material::Material;
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Hit, PreparedRay, Shape, ShapesByKind};
@@ -145,9 +145,11 @@ fn check_radiance(param: &'static str, v: Vec3) -> Result<Vec3> {
     if v.min_element() >= 0.0 {
         Ok(v)
     } else {
-        Err(Error::Invalid {
+        Err(Error::Value {
             param,
-            reason: "must not be negative",
+            problem: Problem::Invalid {
+                reason: "must not be negative",
+            },
         })
     }
 }
@@ -168,9 +170,11 @@ impl Scene {
             o.material.check()?;
             if o.is_emissive() {
                 if !matches!(o.shape, Shape::Sphere(_) | Shape::Quad(_)) {
-                    return Err(Error::Invalid {
+                    return Err(Error::Value {
                         param: "emission",
-                        reason: "is only allowed on spheres and quads (the lights we can sample)",
+                        problem: Problem::Invalid {
+                            reason: "is only allowed on spheres and quads (the lights we can sample)",
+                        },
                     });
                 }
                 emitters.push(i);

@@ -11,7 +11,7 @@ use std::ops::Mul;
 
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::error::{Error, Result, finite3};
+use crate::error::{Error, Problem, Result, finite3};
 
 /// An affine transformation: one 4x4 matrix acting on homogeneous coordinates,
 /// always finite.
@@ -77,7 +77,10 @@ impl Transform {
         if matrix.is_finite() {
             Ok(Transform { matrix })
         } else {
-            Err(Error::NotFinite { param: "matrix" })
+            Err(Error::Value {
+                param: "matrix",
+                problem: Problem::NotFinite,
+            })
         }
     }
 
@@ -173,14 +176,19 @@ impl Transform {
         Transform { matrix }
     }
 
-    /// The transformation that undoes this one, or [`Error::Singular`] (e.g. a scale by 0).
+    /// The transformation that undoes this one, or [`Problem::Singular`] (e.g. a scale by 0).
     pub fn inverse(self) -> Result<Transform> {
         let det = self.matrix.determinant();
         if det == 0.0 || !det.is_finite() {
-            return Err(Error::Singular { param: "transform" });
+            return Err(Error::Value {
+                param: "transform",
+                problem: Problem::Singular,
+            });
         }
-        Transform::from_matrix(self.matrix.inverse())
-            .map_err(|_| Error::Singular { param: "transform" })
+        Transform::from_matrix(self.matrix.inverse()).map_err(|_| Error::Value {
+            param: "transform",
+            problem: Problem::Singular,
+        })
     }
 
     /// The 4x4 matrix.

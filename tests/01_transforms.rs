@@ -9,6 +9,7 @@ use std::f32::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4};
 use clap::Parser;
 use glam::{Mat4, Vec3};
 use render_lessons::Error;
+use render_lessons::error::Problem;
 use render_lessons::transform::{Transform, point, vector};
 
 fn close(a: Vec3, b: Vec3) -> bool {
@@ -129,7 +130,13 @@ fn inverse_undoes_and_singular_is_an_error() {
     let p = Vec3::new(0.3, -4.0, 9.0);
     assert!((m.inverse().unwrap().point(m.point(p)) - p).length() < 1e-5);
     let flat = Transform::scale(1.0, 0.0, 1.0);
-    assert_eq!(flat.inverse(), Err(Error::Singular { param: "transform" }));
+    assert_eq!(
+        flat.inverse(),
+        Err(Error::Value {
+            param: "transform",
+            problem: Problem::Singular
+        })
+    );
 }
 
 #[test]
@@ -177,7 +184,10 @@ fn non_finite_parameters_are_named() {
     // A matrix built by hand still comes back as an error naming it.
     assert_eq!(
         Transform::from_matrix(Mat4::NAN),
-        Err(Error::NotFinite { param: "matrix" })
+        Err(Error::Value {
+            param: "matrix",
+            problem: Problem::NotFinite
+        })
     );
 }
 

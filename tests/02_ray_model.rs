@@ -9,6 +9,7 @@ use clap::Parser;
 use glam::Vec3;
 use proptest::prelude::*;
 use render_lessons::Error;
+use render_lessons::error::Problem;
 use render_lessons::ray::Ray;
 
 /// The example's default ray: origin (1, 1, 0), direction (4, 3, 0).
@@ -40,15 +41,24 @@ fn direction_is_normalised_so_t_is_distance() {
 fn bad_rays_name_their_parameter() {
     assert_eq!(
         Ray::new(Vec3::ZERO, Vec3::ZERO),
-        Err(Error::ZeroLength { param: "direction" })
+        Err(Error::Value {
+            param: "direction",
+            problem: Problem::ZeroLength
+        })
     );
     assert_eq!(
         Ray::new(Vec3::new(f32::NAN, 0.0, 0.0), Vec3::X),
-        Err(Error::NotFinite { param: "origin" })
+        Err(Error::Value {
+            param: "origin",
+            problem: Problem::NotFinite
+        })
     );
     assert_eq!(
         Ray::new(Vec3::ZERO, Vec3::new(0.0, f32::INFINITY, 0.0)),
-        Err(Error::NotFinite { param: "direction" })
+        Err(Error::Value {
+            param: "direction",
+            problem: Problem::NotFinite
+        })
     );
 }
 
@@ -88,15 +98,24 @@ fn an_unnormalised_ray_keeps_its_direction_and_counts_t_in_its_lengths() {
     assert_eq!(ray.t_closest_to(Vec3::new(1.0, 0.0, 0.0)), 8.0);
     assert_eq!(
         Ray::new_unnormalised(Vec3::ZERO, Vec3::ZERO),
-        Err(Error::ZeroLength { param: "direction" })
+        Err(Error::Value {
+            param: "direction",
+            problem: Problem::ZeroLength
+        })
     );
     assert_eq!(
         Ray::new_unnormalised(Vec3::NAN, Vec3::X),
-        Err(Error::NotFinite { param: "origin" })
+        Err(Error::Value {
+            param: "origin",
+            problem: Problem::NotFinite
+        })
     );
     assert_eq!(
         Ray::new_unnormalised(Vec3::ZERO, Vec3::new(f32::INFINITY, 0.0, 0.0)),
-        Err(Error::NotFinite { param: "direction" })
+        Err(Error::Value {
+            param: "direction",
+            problem: Problem::NotFinite
+        })
     );
 }
 

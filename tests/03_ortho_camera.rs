@@ -10,6 +10,7 @@ use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::camera::{Film, OrthoCamera};
+use render_lessons::error::Problem;
 use render_lessons::limits::MAX_RESOLUTION;
 
 fn slide_camera() -> OrthoCamera {
@@ -82,18 +83,22 @@ fn bad_films_name_their_parameter() {
     let y = (-6.0, 6.0);
     assert_eq!(
         Film::new(0, 3, x, y),
-        Err(Error::Resolution {
+        Err(Error::Value {
             param: "width",
-            value: 0,
-            max: MAX_RESOLUTION
+            problem: Problem::Resolution {
+                value: 0,
+                max: MAX_RESOLUTION
+            }
         })
     );
     assert_eq!(
         Film::new(4, MAX_RESOLUTION + 1, x, y),
-        Err(Error::Resolution {
+        Err(Error::Value {
             param: "height",
-            value: MAX_RESOLUTION + 1,
-            max: MAX_RESOLUTION
+            problem: Problem::Resolution {
+                value: MAX_RESOLUTION + 1,
+                max: MAX_RESOLUTION
+            }
         })
     );
     assert_eq!(
@@ -106,7 +111,10 @@ fn bad_films_name_their_parameter() {
     );
     assert_eq!(
         Film::new(4, 3, (f32::NAN, 1.0), y),
-        Err(Error::NotFinite { param: "x extent" })
+        Err(Error::Value {
+            param: "x extent",
+            problem: Problem::NotFinite
+        })
     );
     assert_eq!(
         Film::new(4, 3, (-f32::MAX, f32::MAX), y)

@@ -10,6 +10,7 @@ use glam::{Quat, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::basis::Basis;
+use render_lessons::error::Problem;
 
 /// The example's defaults: the basis turned 30 degrees, b = (2, 1, 0).
 const ANGLE: f32 = 30.0;
@@ -64,7 +65,10 @@ fn not_orthonormal_is_refused() {
     );
     assert_eq!(
         Basis::new(Vec3::NAN, Vec3::Y, Vec3::Z),
-        Err(Error::NotFinite { param: "u" })
+        Err(Error::Value {
+            param: "u",
+            problem: Problem::NotFinite
+        })
     );
 }
 

@@ -11,6 +11,7 @@ use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::basis::Basis;
 use render_lessons::camera::{Film, Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide};
+use render_lessons::error::Problem;
 
 /// The example's camera, from its default flags.
 fn default_camera() -> (OrthoCamera, lesson::Args) {
@@ -82,20 +83,32 @@ proptest! {
 fn s10_up_parallel_to_direction_is_an_error_not_nan() {
     assert_eq!(
         camera_basis(Vec3::Y, Vec3::Y),
-        Err(Error::UpParallelToDirection { param: "up" })
+        Err(Error::Value {
+            param: "up",
+            problem: Problem::UpParallelToDirection
+        })
     );
     assert_eq!(
         camera_basis(Vec3::NEG_Y, Vec3::Y),
-        Err(Error::UpParallelToDirection { param: "up" })
+        Err(Error::Value {
+            param: "up",
+            problem: Problem::UpParallelToDirection
+        })
     );
     let nearly = Vec3::new(0.0, 1.0, 1e-8);
     assert_eq!(
         camera_basis(nearly, Vec3::Y),
-        Err(Error::UpParallelToDirection { param: "up" })
+        Err(Error::Value {
+            param: "up",
+            problem: Problem::UpParallelToDirection
+        })
     );
     assert_eq!(
         Frame::look(Vec3::ZERO, Vec3::Y * 3.0, Vec3::Y * 0.5),
-        Err(Error::UpParallelToDirection { param: "up" })
+        Err(Error::Value {
+            param: "up",
+            problem: Problem::UpParallelToDirection
+        })
     );
 }
 
@@ -146,19 +159,31 @@ fn s10_nearly_parallel_up_keeps_the_basis_orthonormal() {
 fn bad_camera_input_names_the_parameter() {
     assert_eq!(
         camera_basis(Vec3::ZERO, Vec3::Y),
-        Err(Error::ZeroLength { param: "direction" })
+        Err(Error::Value {
+            param: "direction",
+            problem: Problem::ZeroLength
+        })
     );
     assert_eq!(
         camera_basis(Vec3::NEG_Z, Vec3::ZERO),
-        Err(Error::ZeroLength { param: "up" })
+        Err(Error::Value {
+            param: "up",
+            problem: Problem::ZeroLength
+        })
     );
     assert_eq!(
         Frame::look(Vec3::new(f32::NAN, 0.0, 0.0), Vec3::NEG_Z, Vec3::Y),
-        Err(Error::NotFinite { param: "position" })
+        Err(Error::Value {
+            param: "position",
+            problem: Problem::NotFinite
+        })
     );
     assert_eq!(
         camera_basis(Vec3::new(0.0, 0.0, f32::INFINITY), Vec3::Y),
-        Err(Error::NotFinite { param: "direction" })
+        Err(Error::Value {
+            param: "direction",
+            problem: Problem::NotFinite
+        })
     );
 }
 

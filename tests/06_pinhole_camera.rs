@@ -10,6 +10,7 @@ use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
+use render_lessons::error::Problem;
 use render_lessons::ray::Ray;
 
 fn film() -> Film {
@@ -122,9 +123,9 @@ fn s11_right_is_right_and_up_is_up_for_both_cameras() {
 fn bad_screen_distance_is_named() {
     assert_eq!(
         PinholeCamera::at_origin(film(), 0.0),
-        Err(Error::NotPositive {
+        Err(Error::Value {
             param: "screen distance",
-            value: 0.0
+            problem: Problem::NotPositive { value: 0.0 }
         })
     );
     assert_eq!(
@@ -133,8 +134,9 @@ fn bad_screen_distance_is_named() {
     );
     assert_eq!(
         PinholeCamera::at_origin(film(), f32::NAN),
-        Err(Error::NotFinite {
-            param: "screen distance"
+        Err(Error::Value {
+            param: "screen distance",
+            problem: Problem::NotFinite
         })
     );
 }

@@ -17,6 +17,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::course::diagram::cross_section;
+use render_lessons::error::Problem;
 use render_lessons::ray::{ClosedSpan, Interval, Ray};
 use render_lessons::shapes::{Aabb, Barycentric, Plane, Shape, Sphere, Triangle};
 
@@ -597,9 +598,9 @@ fn bad_input_names_the_parameter() {
     for r in [0.0, -1.0] {
         assert_eq!(
             Sphere::new(Vec3::ZERO, r),
-            Err(Error::NotPositive {
+            Err(Error::Value {
                 param: "radius",
-                value: r
+                problem: Problem::NotPositive { value: r }
             })
         );
     }
@@ -610,7 +611,10 @@ fn bad_input_names_the_parameter() {
     assert_eq!(Sphere::new(Vec3::NAN, 1.0).unwrap_err().param(), "centre");
     assert_eq!(
         Plane::new(Vec3::ZERO, Vec3::ZERO),
-        Err(Error::ZeroLength { param: "normal" })
+        Err(Error::Value {
+            param: "normal",
+            problem: Problem::ZeroLength
+        })
     );
     assert_eq!(
         Plane::new(Vec3::INFINITY, Vec3::Y).unwrap_err().param(),
@@ -618,10 +622,9 @@ fn bad_input_names_the_parameter() {
     );
     assert_eq!(
         Aabb::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, 1.0, 1.0)),
-        Err(Error::EmptyRange {
+        Err(Error::Value {
             param: "box",
-            min: 2.0,
-            max: 1.0
+            problem: Problem::EmptyRange { min: 2.0, max: 1.0 }
         })
     );
     assert_eq!(Aabb::new(Vec3::ZERO, Vec3::NAN).unwrap_err().param(), "max");
@@ -631,9 +634,9 @@ fn bad_input_names_the_parameter() {
     let collinear = Triangle::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X);
     assert_eq!(
         collinear,
-        Err(Error::NotPositive {
+        Err(Error::Value {
             param: "area",
-            value: 0.0
+            problem: Problem::NotPositive { value: 0.0 }
         })
     );
     assert_eq!(

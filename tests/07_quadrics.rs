@@ -8,6 +8,7 @@
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
 use render_lessons::Error;
+use render_lessons::error::Problem;
 use render_lessons::ray::{Crossings, Interval, Ray};
 use render_lessons::shapes::{Instance, Quadric, Shape, Sphere};
 use render_lessons::transform::Transform;
@@ -393,7 +394,10 @@ fn bad_input_names_its_parameter() {
     let flat = Transform::scale(1.0, 0.0, 1.0);
     assert_eq!(
         Instance::new(sphere, flat).unwrap_err(),
-        Error::Singular { param: "to_world" }
+        Error::Value {
+            param: "to_world",
+            problem: Problem::Singular
+        }
     );
 }
 

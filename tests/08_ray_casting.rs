@@ -433,14 +433,16 @@ fn with_threads_runs_the_work_on_a_pool_of_that_many_threads() {
         });
         assert_eq!(seen, Ok(n));
     }
-    let error = render_lessons::Error::ThreadPool {
+    let error = render_lessons::Error::Machine {
         param: "threads",
-        threads: 2,
-        message: "no more threads".into(),
+        shortfall: render_lessons::error::Shortfall::ThreadPool {
+            threads: 2,
+            message: "no more threads".into(),
+        },
     };
     assert_eq!(error.param(), "threads");
     assert_eq!(
         error.to_string(),
-        "threads: could not start 2 worker threads (no more threads)"
+        "threads asks for 2 worker threads, which the system would not start (no more threads)"
     );
 }

@@ -21,7 +21,7 @@ use render_lessons::bvh::ListOrTree;
 use render_lessons::camera::Camera;
 use render_lessons::course::compare::reference;
 use render_lessons::course::report::num;
-use render_lessons::error::Error;
+use render_lessons::error::{Error, Shortfall};
 use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{FaceCounts, Mesh, fan, patch_point, teapot_obj};
 use render_lessons::scenes::floor_and_mesh;
@@ -181,7 +181,7 @@ fn a_bad_file_gives_an_error_naming_the_path() {
         .chain([(invalid, None, "cannot be read as text")])
     {
         let err = Mesh::from_obj(&path).unwrap_err();
-        let Error::Obj { line: got, .. } = &err else {
+        let Error::File { line: got, .. } = &err else {
             panic!("{err:?}")
         };
         let message = err.to_string();
@@ -219,7 +219,7 @@ fn obj_files() {
     let mesh = Mesh::from_obj(&write("groups.obj", groups)).unwrap().mesh;
     assert_eq!(mesh.triangles.len(), 2);
     let missing = Mesh::from_obj(&dir.path().join("missing.obj")).unwrap_err();
-    assert!(matches!(missing, Error::Obj { line: None, .. }));
+    assert!(matches!(missing, Error::File { line: None, .. }));
     assert!(missing.to_string().contains("missing.obj"), "{missing}");
 }
 
@@ -526,10 +526,9 @@ fn too_much_subdivision_is_refused_before_any_work() {
     assert!(
         matches!(
             err,
-            Error::TooMuch {
+            Error::Machine {
                 param: "subdivide",
-                unit: "bytes",
-                ..
+                shortfall: Shortfall::TooMuch { unit: "bytes", .. }
             }
         ),
         "{err:?}"

@@ -13,7 +13,7 @@ use std::path::Path;
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::course::compare::{TOLERANCE, agreement, reference};
-use render_lessons::error::Error;
+use render_lessons::error::{Error, Problem, Shortfall};
 use render_lessons::mesh::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh, Model};
 use render_lessons::raster::{
     CameraTransforms, ClipVertex, Cull, DepthRange, RasterSettings, ScreenVertex, Shading,
@@ -91,10 +91,13 @@ fn lecture_tables() {
     let err = Mesh::new(positions.clone(), triangles).unwrap_err();
     assert_eq!(
         err,
-        Error::VertexIndex {
-            triangle: 0,
-            index: 4,
-            vertices: 4
+        Error::Value {
+            param: "triangle",
+            problem: Problem::VertexIndex {
+                triangle: 0,
+                index: 4,
+                vertices: 4
+            }
         }
     );
     assert!(err.to_string().contains("triangle 0 refers to vertex 4"));
@@ -516,20 +519,23 @@ fn uv_sphere_is_closed_and_faces_out() {
     }
     assert!(matches!(
         Mesh::uv_sphere(centre, 1.0, 2, 5),
-        Err(Error::TooFew {
+        Err(Error::Value {
             param: "segments",
-            ..
+            problem: Problem::TooFew { .. }
         })
     ));
     assert!(matches!(
         Mesh::uv_sphere(centre, 1.0, 5, 1),
-        Err(Error::TooFew { param: "rings", .. })
+        Err(Error::Value {
+            param: "rings",
+            problem: Problem::TooFew { .. }
+        })
     ));
     assert!(matches!(
         Mesh::uv_sphere(centre, 0.0, 5, 5),
-        Err(Error::NotPositive {
+        Err(Error::Value {
             param: "radius",
-            ..
+            problem: Problem::NotPositive { .. }
         })
     ));
 }
@@ -545,9 +551,9 @@ fn segments_are_checked_before_tessellating() {
     assert!(
         matches!(
             too_many,
-            Error::TooMuch {
+            Error::Machine {
                 param: "segments",
-                ..
+                shortfall: Shortfall::TooMuch { .. }
             }
         ),
         "{too_many:?}"

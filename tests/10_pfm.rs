@@ -76,10 +76,14 @@ fn big_endian_grey_and_scaled_files_are_read_as_other_programs_write_them() {
     );
 }
 
-/// The message of `read_pfm(bytes)`'s error, which must be an [`Error::Pfm`].
+/// The message of `read_pfm(bytes)`'s error, which must be an `Error::File`.
 fn message(bytes: &[u8]) -> String {
     match read_pfm(bytes) {
-        Err(Error::Pfm { path, message }) => {
+        Err(Error::File {
+            path,
+            line: None,
+            message,
+        }) => {
             assert_eq!(path, "PFM data");
             message
         }
@@ -140,6 +144,6 @@ fn a_file_s_errors_name_the_file() {
     );
     let missing = dir.path().join("missing.pfm");
     let err = load_pfm(&missing).unwrap_err();
-    assert!(matches!(err, Error::Io { .. }), "{err:?}");
+    assert!(matches!(err, Error::File { .. }), "{err:?}");
     assert_eq!(err.param(), missing.display().to_string());
 }

@@ -4,7 +4,7 @@
 
 use glam::Vec2;
 
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Problem, Result, finite};
 use crate::limits::Resolution;
 
 /// A rectangle [x_min, x_max] x [y_min, y_max] of the camera plane, cut into
@@ -26,7 +26,10 @@ fn range(param: &'static str, (min, max): (f32, f32)) -> Result<(f32, f32)> {
     if min < max && (max - min).is_finite() {
         Ok((min, max))
     } else {
-        Err(Error::EmptyRange { param, min, max })
+        Err(Error::Value {
+            param,
+            problem: Problem::EmptyRange { min, max },
+        })
     }
 }
 

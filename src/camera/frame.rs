@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use crate::basis::Basis;
-use crate::error::{Error, Result, finite3, unit};
+use crate::error::{Error, Problem, Result, finite3, unit};
 use crate::ray::Ray;
 use crate::transform::{Transform, from_rows};
 
@@ -29,7 +29,10 @@ pub fn camera_basis(d: Vec3, k: Vec3) -> Result<Basis> {
     let k = unit("up", k)?;
     let k_cross_w = k.cross(w);
     if k_cross_w.length() < MIN_UP_SINE {
-        return Err(Error::UpParallelToDirection { param: "up" });
+        return Err(Error::Value {
+            param: "up",
+            problem: Problem::UpParallelToDirection,
+        });
     }
     let u = k_cross_w.normalize();
     let u = (u - u.dot(w) * w).normalize();
@@ -46,7 +49,10 @@ pub fn camera_basis_as_on_slide(d: Vec3, k: Vec3) -> Result<Basis> {
     let w = unit("direction", d)?;
     let u = unit("up", k)?.cross(w);
     if u == Vec3::ZERO {
-        return Err(Error::UpParallelToDirection { param: "up" });
+        return Err(Error::Value {
+            param: "up",
+            problem: Problem::UpParallelToDirection,
+        });
     }
     let u = u.normalize();
     let v = w.cross(u).normalize();
@@ -88,12 +94,17 @@ impl Frame {
         let target = finite3("target", target)?;
         let direction = target - eye;
         if !direction.is_finite() {
-            return Err(Error::NotFinite { param: "target" });
+            return Err(Error::Value {
+                param: "target",
+                problem: Problem::NotFinite,
+            });
         }
         if direction.normalize_or_zero() == Vec3::ZERO {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "target",
-                reason: "must differ from eye (no view direction)",
+                problem: Problem::Invalid {
+                    reason: "must differ from eye (no view direction)",
+                },
             });
         }
         Frame::look(eye, direction, up)
@@ -176,7 +187,10 @@ impl Frame {
             [w.x, w.y, w.z, -w.dot(p)],
             [0.0, 0.0, 0.0, 1.0],
         ]))
-        .map_err(|_| Error::NotFinite { param: "position" })
+        .map_err(|_| Error::Value {
+            param: "position",
+            problem: Problem::NotFinite,
+        })
     }
     // ANCHOR_END: world_to_camera
 

@@ -22,7 +22,7 @@ pub use thin_lens::ThinLensCamera;
 use glam::Vec2;
 use glam::Vec3;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::ray::Ray;
 
 /// One of the course's cameras. An enum, not a trait: there are few, and a `match`
@@ -82,9 +82,11 @@ impl Camera {
     /// An orthographic camera has none to give: an error naming `aperture`.
     pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<Camera> {
         match self {
-            Camera::Ortho(_) => Err(Error::Invalid {
+            Camera::Ortho(_) => Err(Error::Value {
                 param: "aperture",
-                reason: "needs a pinhole camera: an orthographic camera has no lens",
+                problem: Problem::Invalid {
+                    reason: "needs a pinhole camera: an orthographic camera has no lens",
+                },
             }),
             Camera::Pinhole(c) => Ok(ThinLensCamera::new(*c, aperture, focus_distance)?.into()),
             Camera::ThinLens(c) => Ok(c.with_lens(aperture, focus_distance)?.into()),

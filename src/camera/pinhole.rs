@@ -4,7 +4,7 @@
 use glam::{Vec2, Vec3};
 
 use super::{Film, Frame};
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Problem, Result, finite, positive};
 use crate::ray::Ray;
 
 /// A pinhole camera: eye at the camera origin, screen on the plane z = -s, its
@@ -46,9 +46,11 @@ impl PinholeCamera {
             .iter()
             .any(|&corner| !camera.screen_point(corner).length_squared().is_finite())
         {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "screen distance",
-                reason: "is too large for the film: a ray's length |s - e| overflows f32",
+                problem: Problem::Invalid {
+                    reason: "is too large for the film: a ray's length |s - e| overflows f32",
+                },
             });
         }
         Ok(camera)
@@ -83,9 +85,11 @@ impl PinholeCamera {
         // tan in f64, rounded once: below 180 degrees the half angle stays below pi/2.
         let half_height = (f64::from(vfov).to_radians() / 2.0).tan() as f32;
         if vfov >= 180.0 || !(half_height.is_finite() && half_height > 0.0) {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "vfov_degrees",
-                reason: "must be below 180 degrees",
+                problem: Problem::Invalid {
+                    reason: "must be below 180 degrees",
+                },
             });
         }
         let film = Film::centred(width, height, half_height)?;

@@ -9,7 +9,7 @@
 use glam::{Vec2, Vec3};
 
 use super::{Film, Frame, PinholeCamera};
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Problem, Result, finite, positive};
 use crate::ray::Ray;
 use crate::sampling::uniform_disc;
 
@@ -31,9 +31,11 @@ impl ThinLensCamera {
         focus_distance: f32,
     ) -> Result<ThinLensCamera> {
         if finite("aperture", aperture)? < 0.0 {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "aperture",
-                reason: "must be >= 0 (0 is a pinhole)",
+                problem: Problem::Invalid {
+                    reason: "must be >= 0 (0 is a pinhole)",
+                },
             });
         }
         let camera = ThinLensCamera {
@@ -63,9 +65,11 @@ impl ThinLensCamera {
         ] {
             let focus = self.pinhole.screen_point(corner) * scale;
             if focus.normalize_or_zero() == Vec3::ZERO {
-                return Err(Error::Invalid {
+                return Err(Error::Value {
                     param: "focus",
-                    reason: "puts the plane in focus out of f32's reach",
+                    problem: Problem::Invalid {
+                        reason: "puts the plane in focus out of f32's reach",
+                    },
                 });
             }
             for rim in [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y] {
@@ -73,9 +77,11 @@ impl ThinLensCamera {
                 let direction = (focus - lens).normalize_or_zero();
                 let origin = frame.point_to_world(lens);
                 if direction == Vec3::ZERO || !origin.is_finite() {
-                    return Err(Error::Invalid {
+                    return Err(Error::Value {
                         param: "aperture",
-                        reason: "is too large for f32 rays with this focus distance",
+                        problem: Problem::Invalid {
+                            reason: "is too large for f32 rays with this focus distance",
+                        },
                     });
                 }
             }

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use plotters::prelude::*;
 
 use crate::course::chart::{HEIGHT, LABEL_SIZE, WIDTH, save_svg_and_csv, titled};
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 
 /// Horizontal bars, one per name, the first at the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -58,15 +58,18 @@ impl Bars {
     pub fn svg(&self) -> Result<String> {
         let longest = self.bars.iter().map(|b| b.1).fold(0.0, f64::max);
         if self.bars.is_empty() || self.bars.iter().any(|b| !(b.1 >= 0.0 && b.1.is_finite())) {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "bars",
-                reason: "must be at least one, each finite and 0 or more",
+                problem: Problem::Invalid {
+                    reason: "must be at least one, each finite and 0 or more",
+                },
             });
         }
         let mut svg = String::new();
         self.draw(&mut svg, longest.max(f64::MIN_POSITIVE))
-            .map_err(|e| Error::Io {
+            .map_err(|e| Error::File {
                 path: format!("chart \"{}\"", self.title),
+                line: None,
                 message: e.to_string(),
             })?;
         Ok(svg)

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use plotters::prelude::*;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::files::write_atomically;
 
 /// How an axis maps values to positions.
@@ -136,10 +136,9 @@ impl Chart {
             (lo.min(v), hi.max(v))
         });
         if !(lo.is_finite() && hi.is_finite()) {
-            return Err(Error::TooFew {
+            return Err(Error::Value {
                 param: "chart points that can be drawn",
-                value: 0,
-                min: 1,
+                problem: Problem::TooFew { value: 0, min: 1 },
             });
         }
         Ok(match scale {
@@ -179,8 +178,9 @@ impl Chart {
                 &drawn,
             ),
         };
-        result.map_err(|e| Error::Io {
+        result.map_err(|e| Error::File {
             path: format!("chart \"{}\"", self.title),
+            line: None,
             message: e.to_string(),
         })?;
         Ok(svg)

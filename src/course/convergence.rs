@@ -3,7 +3,7 @@
 //! many more samples to measure their errors against.
 
 use crate::camera::Camera;
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result, Shortfall};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::{Pass, Passes, PixelSampling, render_progressive};
 use crate::pathtrace::settings::{Sampling, Settings};
@@ -71,9 +71,11 @@ impl Study {
             let root = f64::from(n).sqrt().round() as u32;
             root * root == n
         };
-        let not_square = |param| Error::Invalid {
+        let not_square = |param| Error::Value {
             param,
-            reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
+            problem: Problem::Invalid {
+                reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
+            },
         };
         if !self.ladder.iter().all(|&n| square(n)) {
             return Err(not_square("spp"));
@@ -103,10 +105,9 @@ impl Study {
     ) -> std::result::Result<Renders, E> {
         let reference_stops = stops_of_16(self.reference_spp, "reference-spp")?;
         self.check_jittered(&reference_stops)?;
-        let top = *self.ladder.last().ok_or(Error::TooFew {
+        let top = *self.ladder.last().ok_or(Error::Value {
             param: "spp",
-            value: 0,
-            min: 1,
+            problem: Problem::TooFew { value: 0, min: 1 },
         })?;
         let mut non_finite = 0;
         let mut render = |part, settings: Settings, passes, stops: &[u32]| {
@@ -154,10 +155,9 @@ impl Study {
         Ok(Renders {
             ladder,
             strategies,
-            reference: reference.ok_or(Error::TooFew {
+            reference: reference.ok_or(Error::Value {
                 param: "reference-spp",
-                value: 0,
-                min: 1,
+                problem: Problem::TooFew { value: 0, min: 1 },
             })?,
             non_finite,
         })
@@ -185,18 +185,19 @@ pub const MAX_SPP: u32 = 1 << 20;
 /// `Ok` if `spp` lies in 1..=[`MAX_SPP`]; an error naming `param` otherwise.
 fn spp_in_range(param: &'static str, spp: u32) -> Result<()> {
     if spp == 0 {
-        return Err(Error::TooFew {
+        return Err(Error::Value {
             param,
-            value: 0,
-            min: 1,
+            problem: Problem::TooFew { value: 0, min: 1 },
         });
     }
     if spp > MAX_SPP {
-        return Err(Error::TooMuch {
+        return Err(Error::Machine {
             param,
-            needed: u64::from(spp),
-            limit: u64::from(MAX_SPP),
-            unit: "samples per pixel",
+            shortfall: Shortfall::TooMuch {
+                needed: u64::from(spp),
+                limit: u64::from(MAX_SPP),
+                unit: "samples per pixel",
+            },
         });
     }
     Ok(())

@@ -5,7 +5,7 @@
 
 use glam::Vec3;
 
-use crate::error::{self, Error};
+use crate::error::{self, Error, Problem};
 
 /// The largest angle a lesson takes, in degrees: a hundred turns. Beyond it f32
 /// degrees are too coarse to mean anything (at 1e7 two neighbouring values lie a
@@ -22,9 +22,18 @@ fn checked(s: &str, check: fn(&'static str, f32) -> crate::Result<f32>) -> Resul
         .parse::<f32>()
         .map_err(|_| format!("'{s}' is not a number"))?;
     check("value", value).map_err(|e| match e {
-        Error::NotFinite { .. } => format!("'{s}' is not a finite number"),
-        Error::NotPositive { .. } => format!("'{s}' must be greater than 0"),
-        Error::Negative { .. } => format!("'{s}' is negative: it must be 0 or more"),
+        Error::Value {
+            problem: Problem::NotFinite,
+            ..
+        } => format!("'{s}' is not a finite number"),
+        Error::Value {
+            problem: Problem::NotPositive { .. },
+            ..
+        } => format!("'{s}' must be greater than 0"),
+        Error::Value {
+            problem: Problem::Negative { .. },
+            ..
+        } => format!("'{s}' is negative: it must be 0 or more"),
         other => other.to_string(),
     })
 }

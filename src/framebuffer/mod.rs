@@ -8,7 +8,7 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::files::write_png_rgba;
 use crate::limits::{MAX_RESOLUTION, Resolution};
 
@@ -45,10 +45,12 @@ impl Framebuffer {
     pub fn from_pixels(width: u32, height: u32, pixels: Vec<Vec3>) -> Result<Self> {
         Resolution::new(width, height)?;
         if pixels.len() != width as usize * height as usize {
-            return Err(Error::Resolution {
+            return Err(Error::Value {
                 param: "pixel count",
-                value: pixels.len().min(u32::MAX as usize) as u32,
-                max: MAX_RESOLUTION,
+                problem: Problem::Resolution {
+                    value: pixels.len().min(u32::MAX as usize) as u32,
+                    max: MAX_RESOLUTION,
+                },
             });
         }
         Ok(Framebuffer {
@@ -115,9 +117,12 @@ impl Framebuffer {
         for (i, c) in self.pixels.iter().enumerate() {
             if !c.is_finite() {
                 let i = i as u32;
-                return Err(Error::NonFinitePixel {
-                    x: i % self.width,
-                    y: i / self.width,
+                return Err(Error::Value {
+                    param: "pixel",
+                    problem: Problem::NonFinitePixel {
+                        x: i % self.width,
+                        y: i / self.width,
+                    },
                 });
             }
             bytes.extend(c.to_array().map(to_srgb8));

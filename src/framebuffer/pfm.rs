@@ -14,7 +14,7 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::files::write_atomically;
 use crate::framebuffer::Framebuffer;
 
@@ -28,7 +28,10 @@ pub fn pfm_bytes(image: &Framebuffer) -> Result<Vec<u8>> {
         for x in 0..w {
             let c = image.get(x, y).unwrap_or_default();
             if !c.is_finite() {
-                return Err(Error::NonFinitePixel { x, y });
+                return Err(Error::Value {
+                    param: "pixel",
+                    problem: Problem::NonFinitePixel { x, y },
+                });
             }
             for channel in c.to_array() {
                 bytes.extend_from_slice(&channel.to_le_bytes());
@@ -47,7 +50,7 @@ pub fn save_pfm(path: &Path, image: &Framebuffer) -> Result<()> {
 /// The image held by the PFM `bytes`, [`pfm_bytes`] read back: every value
 /// bit for bit, rows turned back so that row 0 is the top.
 ///
-/// Errors ([`Error::Pfm`], its path "PFM data") say what is wrong: the header
+/// Errors (an [`Error::File`] whose path is "PFM data") say what is wrong: the header
 /// (not `PF` or `Pf`, a size that is not two whole numbers, a scale that is 0 or not
 /// a number), the size (width x height pixels and the bytes that follow disagree, or
 /// the image is larger than [`crate::limits::MAX_RESOLUTION`] a side), or a pixel that
@@ -66,8 +69,9 @@ pub fn save_pfm(path: &Path, image: &Framebuffer) -> Result<()> {
 /// # Ok::<(), render_lessons::Error>(())
 /// ```
 pub fn read_pfm(bytes: &[u8]) -> Result<Framebuffer> {
-    parse(bytes).map_err(|message| Error::Pfm {
+    parse(bytes).map_err(|message| Error::File {
         path: "PFM data".to_string(),
+        line: None,
         message,
     })
 }
@@ -75,12 +79,14 @@ pub fn read_pfm(bytes: &[u8]) -> Result<Framebuffer> {
 /// The image in the PFM file at `path` ([`read_pfm`]); errors name the file.
 pub fn load_pfm(path: &Path) -> Result<Framebuffer> {
     let name = || path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| Error::Io {
+    let bytes = std::fs::read(path).map_err(|e| Error::File {
         path: name(),
+        line: None,
         message: e.to_string(),
     })?;
-    parse(&bytes).map_err(|message| Error::Pfm {
+    parse(&bytes).map_err(|message| Error::File {
         path: name(),
+        line: None,
         message,
     })
 }

@@ -6,7 +6,7 @@ use std::f32::consts::PI;
 
 use glam::Vec3;
 
-use crate::error::{Error, Result, finite3, positive};
+use crate::error::{Error, Problem, Result, finite3, positive};
 use crate::scene::Object;
 use crate::shapes::{Shape, Triangle};
 
@@ -57,10 +57,12 @@ impl Mesh {
     ) -> Result<Mesh> {
         check(&positions, &triangles)?;
         if normals.len() != positions.len() {
-            return Err(Error::TooFew {
+            return Err(Error::Value {
                 param: "normals (one per vertex)",
-                value: normals.len().min(u32::MAX as usize) as u32,
-                min: positions.len().min(u32::MAX as usize) as u32,
+                problem: Problem::TooFew {
+                    value: normals.len().min(u32::MAX as usize) as u32,
+                    min: positions.len().min(u32::MAX as usize) as u32,
+                },
             });
         }
         for n in &normals {
@@ -179,9 +181,11 @@ impl Mesh {
             .map(|t| Object::diffuse(Shape::Triangle(t), colour))
             .collect();
         if objects.is_empty() && !self.triangles.is_empty() {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "mesh",
-                reason: "has no triangle with an area: every one is degenerate",
+                problem: Problem::Invalid {
+                    reason: "has no triangle with an area: every one is degenerate",
+                },
             });
         }
         Ok(objects)
@@ -234,7 +238,10 @@ fn at_least(param: &'static str, value: u32, min: u32) -> Result<u32> {
     if value >= min {
         Ok(value)
     } else {
-        Err(Error::TooFew { param, value, min })
+        Err(Error::Value {
+            param,
+            problem: Problem::TooFew { value, min },
+        })
     }
 }
 
@@ -264,10 +271,13 @@ fn check(positions: &[Vec3], triangles: &[[u32; 3]]) -> Result<()> {
     }
     for (triangle, t) in triangles.iter().enumerate() {
         if let Some(&index) = t.iter().find(|&&i| i as usize >= positions.len()) {
-            return Err(Error::VertexIndex {
-                triangle,
-                index,
-                vertices: positions.len(),
+            return Err(Error::Value {
+                param: "triangle",
+                problem: Problem::VertexIndex {
+                    triangle,
+                    index,
+                    vertices: positions.len(),
+                },
             });
         }
     }

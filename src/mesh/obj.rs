@@ -206,7 +206,7 @@ fn too_big(path: &Path) -> Error {
 }
 
 fn obj_error(path: &Path, line: Option<usize>, message: String) -> Error {
-    Error::Obj {
+    Error::File {
         path: path.display().to_string(),
         line,
         message,

@@ -6,7 +6,7 @@
 use std::collections::HashMap;
 
 use super::Mesh;
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shortfall};
 
 /// The most levels [`Mesh::subdivided`] takes: 4^10, about a million times the
 /// triangles.
@@ -17,11 +17,13 @@ pub fn check_subdivisions(param: &'static str, levels: u32) -> Result<u32> {
     if levels <= MAX_SUBDIVISIONS {
         Ok(levels)
     } else {
-        Err(Error::TooMuch {
+        Err(Error::Machine {
             param,
-            needed: u64::from(levels),
-            limit: u64::from(MAX_SUBDIVISIONS),
-            unit: "levels",
+            shortfall: Shortfall::TooMuch {
+                needed: u64::from(levels),
+                limit: u64::from(MAX_SUBDIVISIONS),
+                unit: "levels",
+            },
         })
     }
 }
@@ -45,11 +47,13 @@ impl Mesh {
         let count = subdivided_count(self.triangles.len(), levels);
         // Every edge adds at most one vertex: at most 3 x the triangles in all.
         if count.saturating_mul(3) > u64::from(u32::MAX) {
-            return Err(Error::TooMuch {
+            return Err(Error::Machine {
                 param: "subdivide",
-                needed: count,
-                limit: u64::from(u32::MAX) / 3,
-                unit: "triangles",
+                shortfall: Shortfall::TooMuch {
+                    needed: count,
+                    limit: u64::from(u32::MAX) / 3,
+                    unit: "triangles",
+                },
             });
         }
         let mut mesh = self.clone();

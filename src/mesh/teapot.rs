@@ -17,7 +17,7 @@ use std::fmt::Write;
 
 use glam::DVec3;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 
 /// The most quads a patch side may be cut into: 32 x 1024^2 quads is 64 million
 /// triangles, more than any lesson needs.
@@ -219,9 +219,11 @@ pub fn patch_point(patch: usize, i: u32, j: u32, grid: u32) -> DVec3 {
 /// the loader skips and counts.
 pub fn teapot_obj(grid: u32) -> Result<String> {
     if !(1..=MAX_TEAPOT_GRID).contains(&grid) {
-        return Err(Error::Invalid {
+        return Err(Error::Value {
             param: "grid",
-            reason: "must be between 1 and 1024 quads a side",
+            problem: Problem::Invalid {
+                reason: "must be between 1 and 1024 quads a side",
+            },
         });
     }
     let mut vertices: HashMap<String, usize> = HashMap::new();

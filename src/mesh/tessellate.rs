@@ -3,7 +3,7 @@
 //! [`crate::raster::floor_settings`]).
 
 use super::{Mesh, Model};
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::scene::Scene;
 use crate::shapes::Shape;
 
@@ -24,9 +24,11 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
             Shape::Plane(p) => Mesh::floor(p.point(), FLOOR_SIZE)?,
             Shape::Triangle(t) => Mesh::new(t.vertices().to_vec(), vec![[0, 1, 2]])?,
             _ => {
-                return Err(Error::Invalid {
+                return Err(Error::Value {
                     param: "scene",
-                    reason: "may hold only spheres, boxes, planes and triangles to be tessellated",
+                    problem: Problem::Invalid {
+                        reason: "may hold only spheres, boxes, planes and triangles to be tessellated",
+                    },
                 });
             }
         };
@@ -42,10 +44,12 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
 /// rasterizer's copies).
 pub fn check_segments(scene: &Scene, segments: u32) -> Result<()> {
     if segments < 4 {
-        return Err(Error::TooFew {
+        return Err(Error::Value {
             param: "segments",
-            value: segments,
-            min: 4,
+            problem: Problem::TooFew {
+                value: segments,
+                min: 4,
+            },
         });
     }
     let spheres = scene

@@ -13,7 +13,7 @@ use glam::{DVec3, Vec2, Vec3};
 use rayon::prelude::*;
 
 use crate::camera::Camera;
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::estimator::radiance;
 use crate::pathtrace::settings::Settings;
@@ -142,28 +142,33 @@ fn check_pass(
 ) -> Result<()> {
     settings.check()?;
     if spp == 0 {
-        return Err(Error::TooFew {
+        return Err(Error::Value {
             param: "spp",
-            value: spp,
-            min: 1,
+            problem: Problem::TooFew { value: spp, min: 1 },
         });
     }
     if pixels == PixelSampling::Jittered && !strata(spp).is_square() {
-        return Err(Error::Invalid {
+        return Err(Error::Value {
             param: "spp",
-            reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
+            problem: Problem::Invalid {
+                reason: "must be a square number (1, 4, 9, 16, ...) for jittered sampling",
+            },
         });
     }
     if (camera.film().width(), camera.film().height()) != (acc.width, acc.height) {
-        return Err(Error::Invalid {
+        return Err(Error::Value {
             param: "camera",
-            reason: "must have the film size the accumulator was made for",
+            problem: Problem::Invalid {
+                reason: "must have the film size the accumulator was made for",
+            },
         });
     }
     if acc.samples.checked_add(spp).is_none() {
-        return Err(Error::Invalid {
+        return Err(Error::Value {
             param: "spp",
-            reason: "would overflow the sample count",
+            problem: Problem::Invalid {
+                reason: "would overflow the sample count",
+            },
         });
     }
     Ok(())
@@ -232,9 +237,11 @@ pub fn render_progressive<E: From<Error>>(
     let mut acc = Accumulator::new(camera, passes.seed);
     for &stop in stops {
         let Some(added) = stop.checked_sub(acc.samples()) else {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "stops",
-                reason: "must increase",
+                problem: Problem::Invalid {
+                    reason: "must increase",
+                },
             }
             .into());
         };
@@ -243,9 +250,11 @@ pub fn render_progressive<E: From<Error>>(
         let taken = u64::from(acc.samples()) * u64::from(film.width()) * u64::from(film.height());
         if acc.non_finite() == taken {
             // Not one usable sample: the image would be black. Say so instead.
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "scene",
-                reason: "gave NaN or infinity in every sample: there is no image to show",
+                problem: Problem::Invalid {
+                    reason: "gave NaN or infinity in every sample: there is no image to show",
+                },
             }
             .into());
         }

@@ -1,7 +1,7 @@
 //! What the path tracer's estimator can be asked to do: the sampling strategy, the
 //! path length, Russian roulette, and how rays leave surfaces.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::pathtrace::light::SphereSampling;
 use crate::spawn::Offset;
 
@@ -83,17 +83,21 @@ impl Settings {
     /// `Ok` if paths are certain to end and the offset is a usable number.
     pub fn check(&self) -> Result<()> {
         if self.max_depth.is_none() && !self.russian_roulette {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "max_depth",
-                reason: "must be set when Russian roulette is off (paths would never end)",
+                problem: Problem::Invalid {
+                    reason: "must be set when Russian roulette is off (paths would never end)",
+                },
             });
         }
         if let Offset::Fixed(e) = self.offset
             && !(e.is_finite() && e >= 0.0)
         {
-            return Err(Error::Invalid {
+            return Err(Error::Value {
                 param: "offset",
-                reason: "must be a finite distance >= 0",
+                problem: Problem::Invalid {
+                    reason: "must be a finite distance >= 0",
+                },
             });
         }
         Ok(())

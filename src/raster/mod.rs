@@ -25,7 +25,7 @@ pub use vertex::{ClipVertex, Varyings};
 
 use glam::Vec3;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::scene::{PointLight, Scene};
 
 /// Everything about a rasterization that is not the scene or the camera.
@@ -90,8 +90,10 @@ pub fn floor_settings(scene: &Scene) -> RasterSettings {
 
 /// The scene's point light: the one light a rasterizer shades with.
 pub fn point_light(scene: &Scene) -> Result<PointLight> {
-    scene.point_light().ok_or(Error::Invalid {
+    scene.point_light().ok_or(Error::Value {
         param: "scene",
-        reason: "needs a point light to be rasterized",
+        problem: Problem::Invalid {
+            reason: "needs a point light to be rasterized",
+        },
     })
 }

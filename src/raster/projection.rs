@@ -13,7 +13,7 @@
 use glam::{Vec3, Vec4};
 
 use crate::camera::{Camera, Film, Frame};
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Problem, Result, finite, positive};
 use crate::transform::{Transform, from_rows};
 
 /// Where the depth range starts and ends, as distances in front of the camera.
@@ -116,18 +116,20 @@ fn depth_range(depth: DepthRange, near_min_exclusive: bool) -> Result<(f32, f32)
     if near_min_exclusive {
         positive("near", near)?;
     } else if near < 0.0 {
-        return Err(Error::NotPositive {
+        return Err(Error::Value {
             param: "near",
-            value: near,
+            problem: Problem::NotPositive { value: near },
         });
     }
     if far > near && (far - near).is_finite() {
         Ok((near, far))
     } else {
-        Err(Error::EmptyRange {
+        Err(Error::Value {
             param: "near .. far",
-            min: near,
-            max: far,
+            problem: Problem::EmptyRange {
+                min: near,
+                max: far,
+            },
         })
     }
 }

@@ -14,7 +14,7 @@ use glam::Vec3;
 
 use super::{CameraTransforms, Cull, DepthRange, RasterSettings, rasterize_triangle};
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
-use crate::error::{Error, Result, finite3, non_negative, positive};
+use crate::error::{Error, Problem, Result, finite3, non_negative, positive};
 use crate::limits::image_side;
 use crate::mesh::Model;
 use crate::scene::PointLight;
@@ -157,9 +157,11 @@ fn light_camera(light: Vec3, shadows: &Shadows) -> Result<Camera> {
     let direction = finite3("shadow centre", shadows.centre)? - light;
     let distance = direction.length();
     if distance <= radius {
-        return Err(Error::NotPositive {
+        return Err(Error::Value {
             param: "distance from the light to the shadow centre, minus the shadow radius",
-            value: distance - radius,
+            problem: Problem::NotPositive {
+                value: distance - radius,
+            },
         });
     }
     let up = if direction.normalize().y.abs() > 0.9 {

@@ -6,7 +6,7 @@ use std::path::Path;
 use glam::Vec3;
 
 use super::asset_path;
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Problem, Result, finite};
 use crate::mesh::{FaceCounts, LoadedMesh, Mesh, Model};
 use crate::mesh::{check_subdivisions, subdivided_count};
 use crate::scene::Scene;
@@ -65,9 +65,11 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
     };
     let mesh = mesh.flat_shaded()?;
     if mesh.degenerate() == mesh.triangles.len() {
-        return Err(Error::Invalid {
+        return Err(Error::Value {
             param: "mesh",
-            reason: "has no triangle with an area: every one is degenerate",
+            problem: Problem::Invalid {
+                reason: "has no triangle with an area: every one is degenerate",
+            },
         });
     }
     let placed = Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));

@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use crate::error::{Error, Result, finite3};
+use crate::error::{Error, Problem, Result, finite3};
 use crate::float::gamma;
 use crate::ray::{ClosedSpan, Crossings, Interval, Ray};
 use crate::shapes::{Hit, PreparedRay};
@@ -41,16 +41,18 @@ impl Aabb {
     /// The box from `min` to `max`.
     ///
     /// Rejects non-finite corners, and `min > max` on any axis with
-    /// [`Error::EmptyRange`] naming `box`; `min == max` is allowed (a box of zero
+    /// [`Problem::EmptyRange`] naming `box`; `min == max` is allowed (a box of zero
     /// thickness, such as a flat quad's bounds).
     pub fn new(min: Vec3, max: Vec3) -> Result<Aabb> {
         let (min, max) = (finite3("min", min)?, finite3("max", max)?);
         for i in 0..3 {
             if min[i] > max[i] {
-                return Err(Error::EmptyRange {
+                return Err(Error::Value {
                     param: "box",
-                    min: min[i],
-                    max: max[i],
+                    problem: Problem::EmptyRange {
+                        min: min[i],
+                        max: max[i],
+                    },
                 });
             }
         }

@@ -12,7 +12,7 @@
 
 use glam::{Vec2, Vec3};
 
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Problem, Result, finite, positive};
 use crate::float::gamma;
 use crate::quadratic;
 use crate::ray::{Crossings, Interval, Ray};
@@ -84,10 +84,12 @@ impl Cylinder {
         positive("radius", positive("radius", radius)? * radius)?;
         let (z_min, z_max) = (finite("z_min", z_min)?, finite("z_max", z_max)?);
         if z_min >= z_max {
-            return Err(Error::EmptyRange {
+            return Err(Error::Value {
                 param: "z range",
-                min: z_min,
-                max: z_max,
+                problem: Problem::EmptyRange {
+                    min: z_min,
+                    max: z_max,
+                },
             });
         }
         Ok(Cylinder {

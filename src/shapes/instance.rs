@@ -9,7 +9,7 @@
 
 use glam::{Mat3, Mat4, Vec3};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::float::gamma;
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Aabb, Crossings, Hit, Shape};
@@ -32,11 +32,12 @@ impl Instance {
     /// `shape` placed by the object-to-world transform `to_world`.
     ///
     /// The inverse is computed here, once; a singular `to_world` (e.g. a scale by 0)
-    /// has none and is rejected with [`Error::Singular`] naming `to_world`.
+    /// has none and is rejected with [`Problem::Singular`] naming `to_world`.
     pub fn new(shape: Shape, to_world: Transform) -> Result<Instance> {
-        let to_object = to_world
-            .inverse()
-            .map_err(|_| Error::Singular { param: "to_world" })?;
+        let to_object = to_world.inverse().map_err(|_| Error::Value {
+            param: "to_world",
+            problem: Problem::Singular,
+        })?;
         Ok(Instance {
             shape,
             to_world,

@@ -14,7 +14,7 @@
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
 
-use crate::error::{Error, Result, positive, unit};
+use crate::error::{Error, Problem, Result, positive, unit};
 use crate::float::{difference_of_products, gamma};
 use crate::quadratic;
 use crate::ray::{Crossings, Interval, Ray};
@@ -36,15 +36,18 @@ pub struct Quadric {
 impl Quadric {
     /// The quadric x^T Q x = 0.
     ///
-    /// Rejects, naming `Q`: a non-finite entry ([`Error::NotFinite`]); an asymmetry
+    /// Rejects, naming `Q`: a non-finite entry ([`Problem::NotFinite`]); an asymmetry
     /// max |Q_ij - Q_ji| above [`SYMMETRY_TOLERANCE`] times max |Q_ij| (reported as
-    /// [`Error::NotSymmetric`] with that relative asymmetry as its `error`); and a matrix whose
+    /// [`Problem::NotSymmetric`] with that relative asymmetry as its `error`); and a matrix whose
     /// quadratic part (upper-left 3x3) and linear part (Q_i3, i < 3) are both zero
-    /// ([`Error::ZeroLength`]): x^T Q x is then the constant Q_33, and its zero set
+    /// ([`Problem::ZeroLength`]): x^T Q x is then the constant Q_33, and its zero set
     /// is empty or all of space. That includes Q = 0.
     pub fn new(q: Mat4) -> Result<Quadric> {
         if !q.is_finite() {
-            return Err(Error::NotFinite { param: "Q" });
+            return Err(Error::Value {
+                param: "Q",
+                problem: Problem::NotFinite,
+            });
         }
         let m = q.to_cols_array_2d();
         let mut scale = 0.0_f32;
@@ -60,14 +63,17 @@ impl Quadric {
             }
         }
         if xyz_part == 0.0 {
-            return Err(Error::ZeroLength { param: "Q" });
+            return Err(Error::Value {
+                param: "Q",
+                problem: Problem::ZeroLength,
+            });
         }
         // scale > 0 here, since xyz_part > 0.
         let relative = asym / scale;
         if relative > SYMMETRY_TOLERANCE {
-            return Err(Error::NotSymmetric {
+            return Err(Error::Value {
                 param: "Q",
-                error: relative,
+                problem: Problem::NotSymmetric { error: relative },
             });
         }
         Ok(Quadric { q })

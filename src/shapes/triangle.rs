@@ -3,7 +3,7 @@
 
 use glam::{DVec3, Vec3};
 
-use crate::error::{Error, Result, finite3};
+use crate::error::{Error, Problem, Result, finite3};
 use crate::float::gamma;
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Aabb, Crossings, Hit, PreparedRay};
@@ -35,7 +35,7 @@ impl Triangle {
     ///
     /// Rejects non-finite corners, and a degenerate triangle (zero area: the cross
     /// product of two edges is zero, or too small to normalise) with
-    /// [`Error::NotPositive`] naming `area`.
+    /// [`Problem::NotPositive`] naming `area`.
     pub fn new(v0: Vec3, v1: Vec3, v2: Vec3) -> Result<Triangle> {
         let tri = Triangle {
             v0: finite3("v0", v0)?,
@@ -46,9 +46,9 @@ impl Triangle {
         if cross.normalize_or_zero() == Vec3::ZERO {
             let area = 0.5 * cross.length();
             let value = if area.is_finite() { area } else { 0.0 };
-            return Err(Error::NotPositive {
+            return Err(Error::Value {
                 param: "area",
-                value,
+                problem: Problem::NotPositive { value },
             });
         }
         Ok(tri)

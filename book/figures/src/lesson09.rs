@@ -9,6 +9,7 @@ use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::compare::reference;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
+use render_lessons::error::Problem;
 use render_lessons::framebuffer::{Framebuffer, to_srgb8};
 use render_lessons::mesh::{Model, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
@@ -128,9 +129,9 @@ pub fn stages() -> Result<Diagram> {
     };
     let screen = [0, 1, 2].map(|i| ScreenVertex::from_clip(&pipeline, &vertex(i)));
     let [Some(a), Some(b), Some(c)] = screen else {
-        return Err(Error::NotPositive {
+        return Err(Error::Value {
             param: "w of a stage-figure vertex",
-            value: 0.0,
+            problem: Problem::NotPositive { value: 0.0 },
         });
     };
     let mut fragments = Vec::new();

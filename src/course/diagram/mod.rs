@@ -33,7 +33,7 @@ pub use place::{Place, PxBox};
 use glam::Vec2;
 use tiny_skia::Pixmap;
 
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Problem, Result, finite};
 
 /// An opaque colour.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -95,20 +95,21 @@ impl Diagram {
     /// A white `width` x `height` pixel canvas showing at least [x.0, x.1] x [y.0, y.1],
     /// centred, with a margin of 50 px.
     pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Diagram> {
-        let pixmap = Pixmap::new(width, height).ok_or(Error::Resolution {
+        let pixmap = Pixmap::new(width, height).ok_or(Error::Value {
             param: "diagram size",
-            value: width.min(height),
-            max: u32::MAX,
+            problem: Problem::Resolution {
+                value: width.min(height),
+                max: u32::MAX,
+            },
         })?;
         let span = |param, (a, b): (f32, f32)| -> Result<f32> {
             let s = finite(param, b)? - finite(param, a)?;
             if s > 0.0 {
                 Ok(s)
             } else {
-                Err(Error::EmptyRange {
+                Err(Error::Value {
                     param,
-                    min: a,
-                    max: b,
+                    problem: Problem::EmptyRange { min: a, max: b },
                 })
             }
         };

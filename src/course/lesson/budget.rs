@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use super::{Output, run};
 use crate::course::failure::LessonResult;
 use crate::course::mine;
-use crate::error::Result;
+use crate::error::{Problem, Result};
 use crate::limits::image_side;
 use crate::render::with_threads;
 
@@ -126,17 +126,18 @@ pub fn budget(
 /// error names `flags`, the two flags that set them (`"--x-min/--x-max"`).
 pub fn extent(flags: &'static str, min: f32, max: f32) -> Result<(f32, f32)> {
     if min.partial_cmp(&max) != Some(std::cmp::Ordering::Less) {
-        return Err(crate::error::Error::EmptyRange {
+        return Err(crate::error::Error::Value {
             param: flags,
-            min,
-            max,
+            problem: Problem::EmptyRange { min, max },
         });
     }
     // Twice the span must be finite too: the figures leave a margin around it.
     if !(2.0 * (max - min)).is_finite() {
-        return Err(crate::error::Error::Invalid {
+        return Err(crate::error::Error::Value {
             param: flags,
-            reason: "span more than f32 can draw (1.7e38)",
+            problem: Problem::Invalid {
+                reason: "span more than f32 can draw (1.7e38)",
+            },
         });
     }
     Ok((min, max))

@@ -7,7 +7,7 @@ use std::time::Instant;
 use super::Measured;
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 
 /// The best of `repeats` wall times of `work`, in milliseconds, and its last result.
 pub fn best_ms<T>(repeats: u32, mut work: impl FnMut() -> Result<T>) -> Result<(f64, T)> {
@@ -18,10 +18,9 @@ pub fn best_ms<T>(repeats: u32, mut work: impl FnMut() -> Result<T>) -> Result<(
         result = Some(work()?);
         best = best.min(start.elapsed().as_secs_f64() * 1e3);
     }
-    let result = result.ok_or(Error::TooFew {
+    let result = result.ok_or(Error::Value {
         param: "repeats",
-        value: 0,
-        min: 1,
+        problem: Problem::TooFew { value: 0, min: 1 },
     })?;
     Ok((best, result))
 }

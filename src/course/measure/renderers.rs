@@ -14,7 +14,7 @@ use super::{Measured, Quality};
 use crate::camera::Camera;
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::framebuffer::Framebuffer;
 use crate::pathtrace::progressive::rmse;
 use crate::pathtrace::{Accumulator, PixelSampling, Sampling, Settings};
@@ -136,10 +136,9 @@ pub fn time_to_reach(curve: &[(f64, f64)], target: f64) -> Option<(f64, bool)> {
 /// The chart and its findings for `plan`.
 pub fn chart(plan: &Plan) -> Result<Measured> {
     if plan.passes.is_empty() {
-        return Err(Error::TooFew {
+        return Err(Error::Value {
             param: "passes",
-            value: 0,
-            min: 1,
+            problem: Problem::TooFew { value: 0, min: 1 },
         });
     }
     let Staged { scene, camera } = cornell(plan.width, plan.height)?;
@@ -163,10 +162,9 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
         curves.push((name, curve));
     }
     let cosine = &curves[1].1;
-    let &(cosine_time, target) = cosine.last().ok_or(Error::TooFew {
+    let &(cosine_time, target) = cosine.last().ok_or(Error::Value {
         param: "passes",
-        value: 0,
-        min: 1,
+        problem: Problem::TooFew { value: 0, min: 1 },
     })?;
     let mut times = Vec::new();
     let mut rmse_table = Quoted::new(

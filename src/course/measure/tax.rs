@@ -16,7 +16,7 @@ use super::plain::PlainScene;
 use super::{Measured, Quality};
 use crate::course::chart::{Chart, Scale, log_log_slope};
 use crate::course::report::{BookNumbers, Quoted};
-use crate::error::{Error, Result};
+use crate::error::{Error, Problem, Result};
 use crate::ray::Ray;
 use crate::raycast::shadowless;
 use crate::scene::{Object, Scene};
@@ -62,9 +62,11 @@ pub fn measure(quality: Quality) -> Result<Measured> {
     let (mut robust, mut plain) = (Vec::new(), Vec::new());
     for k in [1, 2, 4, 8, 16] {
         let scene = copies(k)?;
-        let textbook = PlainScene::new(&scene).ok_or(Error::Invalid {
+        let textbook = PlainScene::new(&scene).ok_or(Error::Value {
             param: "scene",
-            reason: "has a shape the plain caster does not know",
+            problem: Problem::Invalid {
+                reason: "has a shape the plain caster does not know",
+            },
         })?;
         let n = scene.objects().len() as f64;
         let [r, p] = ns_per_ray(&rays, rounds, &scene, &textbook);

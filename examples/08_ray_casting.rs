@@ -21,6 +21,7 @@ use render_lessons::course::parsers;
 use render_lessons::course::report::vec3;
 use render_lessons::error::Problem;
 use render_lessons::framebuffer::Framebuffer;
+use render_lessons::lesson_images;
 use render_lessons::ray::Interval;
 use render_lessons::raycast::{lit, shadowless};
 use render_lessons::render::render;
@@ -63,28 +64,14 @@ pub fn images((width, height): (u32, u32), epsilon: f32, far: Vec3) -> Result<Im
 }
 // ANCHOR_END: images
 
-/// The lesson's images, one field per file ([`Images::named`]).
-pub struct Images {
-    pub shadowless_ortho: Framebuffer,
-    pub shadowless_pinhole: Framebuffer,
-    pub lambert: Framebuffer,
-    pub far_fixed_epsilon: Framebuffer,
-    pub far_scaled_offset: Framebuffer,
-}
-
-impl Images {
-    /// How many images the lesson holds at once.
-    pub const COUNT: u64 = 5;
-
-    /// Each image with the name of the file it is saved as.
-    pub fn named(&self) -> [(&'static str, &Framebuffer); Self::COUNT as usize] {
-        [
-            ("08_shadowless_ortho.png", &self.shadowless_ortho),
-            ("08_shadowless_pinhole.png", &self.shadowless_pinhole),
-            ("08_lambert.png", &self.lambert),
-            ("08_far_fixed_epsilon.png", &self.far_fixed_epsilon),
-            ("08_far_scaled_offset.png", &self.far_scaled_offset),
-        ]
+lesson_images! {
+    /// The lesson's images, each beside the file it is saved as.
+    Images {
+        shadowless_ortho: "08_shadowless_ortho.png",
+        shadowless_pinhole: "08_shadowless_pinhole.png",
+        lambert: "08_lambert.png",
+        far_fixed_epsilon: "08_far_fixed_epsilon.png",
+        far_scaled_offset: "08_far_scaled_offset.png",
     }
 }
 

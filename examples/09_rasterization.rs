@@ -28,7 +28,7 @@ use render_lessons::scenes::{PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_an
 use render_lessons::scenes::{
     mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };
-use render_lessons::{Result, camera::Camera, framebuffer::Framebuffer, render::render};
+use render_lessons::{Result, camera::Camera, lesson_images, render::render};
 use render_lessons::{raycast::lit, scene::Scene, spawn::Offset};
 
 fn main() -> ExitCode {
@@ -126,53 +126,33 @@ pub fn images(
     };
     Ok(Lesson {
         images,
-        agreements: agreements.to_vec(),
+        agreements,
         times: t,
     })
 }
 // ANCHOR_END: images
 
-/// What the lesson produces: its images; each rasterized image against its ray-cast
-/// reference away from silhouettes (label, reference, agreement); and how long each
-/// renderer took, in seconds.
+/// The lesson's images; each rasterized one against its ray-cast reference away
+/// from silhouettes (label, reference, agreement); each renderer's time in seconds.
 pub struct Lesson {
     pub images: Images,
-    pub agreements: Vec<(&'static str, &'static str, Agreement)>,
+    pub agreements: [(&'static str, &'static str, Agreement); 6],
     pub times: Timings,
 }
 
-/// The lesson's images, one field per file ([`Images::named`]).
-pub struct Images {
-    pub ray_cast: Framebuffer,
-    pub per_pixel: Framebuffer,
-    pub per_vertex: Framebuffer,
-    pub difference: Framebuffer,
-    pub shadow_ray: Framebuffer,
-    pub shadow_map: Framebuffer,
-    pub shadow_map_acne: Framebuffer,
-    pub shadow_map_peter_pan: Framebuffer,
-    pub mesh_ray_cast: Framebuffer,
-    pub mesh_raster: Framebuffer,
-}
-
-impl Images {
-    /// How many images the lesson keeps.
-    pub const COUNT: u64 = 10;
-
-    /// Each image with the name of the file it is saved as.
-    pub fn named(&self) -> [(&'static str, &Framebuffer); Self::COUNT as usize] {
-        [
-            ("09_ray_cast.png", &self.ray_cast),
-            ("09_per_pixel.png", &self.per_pixel),
-            ("09_per_vertex.png", &self.per_vertex),
-            ("09_difference.png", &self.difference),
-            ("09_shadow_ray.png", &self.shadow_ray),
-            ("09_shadow_map.png", &self.shadow_map),
-            ("09_shadow_map_acne.png", &self.shadow_map_acne),
-            ("09_shadow_map_peter_pan.png", &self.shadow_map_peter_pan),
-            ("09_mesh_ray_cast.png", &self.mesh_ray_cast),
-            ("09_mesh_raster.png", &self.mesh_raster),
-        ]
+lesson_images! {
+    /// The lesson's images, each beside the file it is saved as.
+    Images {
+        ray_cast: "09_ray_cast.png",
+        per_pixel: "09_per_pixel.png",
+        per_vertex: "09_per_vertex.png",
+        difference: "09_difference.png",
+        shadow_ray: "09_shadow_ray.png",
+        shadow_map: "09_shadow_map.png",
+        shadow_map_acne: "09_shadow_map_acne.png",
+        shadow_map_peter_pan: "09_shadow_map_peter_pan.png",
+        mesh_ray_cast: "09_mesh_ray_cast.png",
+        mesh_raster: "09_mesh_raster.png",
     }
 }
 

@@ -59,3 +59,41 @@ pub fn print(text: &str) {
 pub fn wrote(path: &Path) {
     print(&format!("wrote {}\n", path.display()));
 }
+
+/// Declares a lesson's images, one field per file, each field beside the name of the
+/// file it is saved as:
+///
+/// ```
+/// render_lessons::lesson_images! {
+///     /// The lesson's images.
+///     Images {
+///         ray_cast: "09_ray_cast.png",
+///         per_pixel: "09_per_pixel.png",
+///     }
+/// }
+/// assert_eq!(Images::COUNT, 2);
+/// ```
+///
+/// The struct gets `COUNT`, the number of images (for the lesson's memory budget),
+/// and `named()`, each image with its file name, for [`Output::images`].
+#[macro_export]
+macro_rules! lesson_images {
+    ($(#[$doc:meta])* $name:ident { $($field:ident: $file:literal),+ $(,)? }) => {
+        $(#[$doc])*
+        pub struct $name {
+            $(#[doc = $file] pub $field: $crate::framebuffer::Framebuffer,)+
+        }
+
+        impl $name {
+            /// How many images the lesson keeps.
+            pub const COUNT: u64 = [$($file),+].len() as u64;
+
+            /// Each image with the name of the file it is saved as.
+            pub fn named(
+                &self,
+            ) -> [(&'static str, &$crate::framebuffer::Framebuffer); Self::COUNT as usize] {
+                [$(($file, &self.$field)),+]
+            }
+        }
+    };
+}

@@ -1646,10 +1646,39 @@ fn the_monte_carlo_chart_is_the_committed_figure() {
 
 #[test]
 fn each_step_figure_is_what_its_command_writes() {
-    for step in &figures::STEPS {
+    for (i, step) in figures::STEPS.iter().enumerate() {
+        // Step i + 2's page prints the command whose flags these are.
+        let command = ["cargo run --release --example 10_path_tracing", "--"]
+            .into_iter()
+            .chain(step.flags.iter().copied())
+            .take(if step.flags.is_empty() { 1 } else { usize::MAX })
+            .collect::<Vec<_>>()
+            .join(" ");
+        let page = std::fs::read_dir("chapters")
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .find(|name| name.starts_with(&format!("10_{}_", i + 2)))
+            .unwrap();
+        let printed = self::page(&page);
+        assert!(printed.lines().any(|l| l == command), "{page}: {command}");
+        // The figure's size is the flags' (or the default): its own image is large,
+        // so the test renders a small one with every other flag the same.
+        let as_written = lesson::Args::parse_from([&["10_path_tracing"], step.flags].concat());
+        assert_eq!(
+            (as_written.width, as_written.height),
+            step.size,
+            "{}",
+            step.file
+        );
+        let sized = |flag: &&str| ["--width", "--height"].contains(flag);
+        let skip = |i: usize| sized(&step.flags[i]) || (i > 0 && sized(&step.flags[i - 1]));
         let mut argv = vec!["10_path_tracing", "--width", "32", "--height", "24"];
         argv.extend(["--out", "target/test-out/10"]);
-        argv.extend(step.flags);
+        argv.extend(
+            (0..step.flags.len())
+                .filter(|&i| !skip(i))
+                .map(|i| step.flags[i]),
+        );
         let args = lesson::Args::parse_from(argv);
         let (study, renders) = render(&args).unwrap();
         assert_eq!(

@@ -26,7 +26,7 @@ pub fn figures(out: &Output) -> Result<()> {
     out.diagram("10_path.png", &path_figure()?)?;
     out.diagram("10_hemisphere.png", &hemisphere_figure()?)?;
     for step in &STEPS {
-        out.image(step.file, &step.render(STEP_WIDTH, STEP_HEIGHT)?)?;
+        out.image(step.file, &step.render(step.size.0, step.size.1)?)?;
     }
     Ok(())
 }
@@ -53,12 +53,13 @@ pub struct Step {
     pub aperture: f32,
     /// `--spp`: the top of the ladder, the count of the images shown.
     pub spp: u32,
+    /// `--width` and `--height`: the example's default 160 x 120, larger where the
+    /// figure shows several images side by side.
+    pub size: (u32, u32),
 }
 
-/// The steps' images are the example's default size.
-pub const STEP_WIDTH: u32 = 160;
-/// See [`STEP_WIDTH`].
-pub const STEP_HEIGHT: u32 = 120;
+/// The example's default image size.
+const DEFAULT: (u32, u32) = (160, 120);
 
 /// Steps 2 to 8 of the chapter, in order.
 pub const STEPS: [Step; 7] = [
@@ -78,6 +79,7 @@ pub const STEPS: [Step; 7] = [
         roulette: false,
         aperture: 0.0,
         spp: 16,
+        size: DEFAULT,
     },
     Step {
         file: "10_step_cosine.png",
@@ -95,6 +97,7 @@ pub const STEPS: [Step; 7] = [
         roulette: false,
         aperture: 0.0,
         spp: 16,
+        size: DEFAULT,
     },
     Step {
         file: "10_step_roulette.png",
@@ -111,6 +114,7 @@ pub const STEPS: [Step; 7] = [
         roulette: true,
         aperture: 0.0,
         spp: 16,
+        size: DEFAULT,
     },
     Step {
         file: "10_step_nee.png",
@@ -120,6 +124,7 @@ pub const STEPS: [Step; 7] = [
         roulette: true,
         aperture: 0.0,
         spp: 16,
+        size: DEFAULT,
     },
     Step {
         file: "10_step_mis.png",
@@ -130,12 +135,17 @@ pub const STEPS: [Step; 7] = [
             "16",
             "--reference-spp",
             "16",
+            "--width",
+            "320",
+            "--height",
+            "240",
         ],
         scene: SceneName::TwoLights,
         shown: &[Sampling::Cosine, Sampling::NextEvent, Sampling::Mis],
         roulette: true,
         aperture: 0.0,
         spp: 16,
+        size: (320, 240),
     },
     Step {
         file: "10_step_specular.png",
@@ -145,6 +155,7 @@ pub const STEPS: [Step; 7] = [
         roulette: true,
         aperture: 0.0,
         spp: 64,
+        size: DEFAULT,
     },
     Step {
         file: "10_step_lens.png",
@@ -154,6 +165,7 @@ pub const STEPS: [Step; 7] = [
         roulette: true,
         aperture: 8.0,
         spp: 16,
+        size: DEFAULT,
     },
 ];
 

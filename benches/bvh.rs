@@ -10,7 +10,7 @@
 //!
 //! The anchor is `obvhs` (crates.io): its binary BVH (`Bvh2`) and its compressed
 //! 8-wide BVH (`CwBvh`, SIMD traversal), both built with its "medium" preset, both
-//! intersecting triangles with its own Moller-Trumbore test (not watertight). The
+//! intersecting triangles with its own Möller-Trumbore test (not watertight). The
 //! comparison is fair: each side starts from the same `Ray`s and makes its own
 //! per-ray data inside the timed loop (obvhs's ray with 1/d; this crate's 1/d,
 //! and the watertight test's shear for a ray that meets the root box), and each

@@ -8,7 +8,7 @@
 //!     target/release/bvh-frame TREE [WIDTH HEIGHT [FRAMES]]
 //!
 //! TREE is `ours` (`BvhScene::closest_object`) or `obvhs` (`Bvh2::ray_traverse` with
-//! its Moller-Trumbore test), the same question as in `benches/bvh.rs`.
+//! its Möller-Trumbore test), the same question as in `benches/bvh.rs`.
 
 use std::process::ExitCode;
 

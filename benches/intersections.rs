@@ -70,7 +70,7 @@ fn bench(c: &mut Criterion) {
     case!("box hit", |r: &Ray| aabb
         .hit(r, Interval::new(0.0, n))
         .is_some());
-    case!("triangle Moller-Trumbore", |r: &Ray| triangle
+    case!("triangle Möller-Trumbore", |r: &Ray| triangle
         .moller_trumbore(r, Interval::new(0.0, n))
         .is_some());
     case!("triangle watertight", |r: &Ray| triangle

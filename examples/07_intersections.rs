@@ -75,7 +75,7 @@ pub fn methods(shape: &Shape, ray: &Ray) -> [(&'static str, Vec<f32>); 2] {
         ],
         Shape::Triangle(t) => [
             (
-                "Moller-Trumbore",
+                "Möller-Trumbore",
                 one(t.moller_trumbore(ray, line).map(|c| c.t)),
             ),
             ("watertight", one(t.watertight(ray, line).map(|c| c.t))),

@@ -378,7 +378,7 @@ fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
 }
 
 /// How many of the rays from the origin towards `targets` hit no triangle at all, for
-/// Moller-Trumbore and for the watertight test.
+/// Möller-Trumbore and for the watertight test.
 fn leaks(tris: &[Triangle], targets: &[Vec3]) -> (usize, usize) {
     let (mut mt, mut wt) = (0, 0);
     for &target in targets {
@@ -449,12 +449,12 @@ fn s4_s5_watertight_never_leaks_moller_trumbore_does() {
     let (mt_e, wt_e) = leaks(&tris, &midpoints);
     let pct = |k: usize, n: usize| 100.0 * k as f64 / n as f64;
     eprintln!(
-        "S4 vertices: {} rays, Moller-Trumbore leaks {mt_v} ({:.1}%), watertight {wt_v}",
+        "S4 vertices: {} rays, Möller-Trumbore leaks {mt_v} ({:.1}%), watertight {wt_v}",
         vertices.len(),
         pct(mt_v, vertices.len())
     );
     eprintln!(
-        "S5 edge midpoints: {} rays, Moller-Trumbore leaks {mt_e} ({:.1}%), watertight {wt_e}",
+        "S5 edge midpoints: {} rays, Möller-Trumbore leaks {mt_e} ({:.1}%), watertight {wt_e}",
         midpoints.len(),
         pct(mt_e, midpoints.len())
     );
@@ -462,11 +462,11 @@ fn s4_s5_watertight_never_leaks_moller_trumbore_does() {
     assert_eq!(wt_e, 0);
     assert!(
         pct(mt_v, vertices.len()) > 1.0,
-        "Moller-Trumbore should leak at vertices"
+        "Möller-Trumbore should leak at vertices"
     );
     assert!(
         pct(mt_e, midpoints.len()) > 1.0,
-        "Moller-Trumbore should leak at edges"
+        "Möller-Trumbore should leak at edges"
     );
 }
 
@@ -1018,7 +1018,7 @@ fn lesson_07_worked_numbers() {
         (x_slab.as_str(), y_slab.as_str()),
         ("2.236 4.472", "-1.118 3.354")
     );
-    // The triangle, Moller and Trumbore's steps: v0 = (1, -1, -1), v1 = (1, 1.5, 0),
+    // The triangle, Möller and Trumbore's steps: v0 = (1, -1, -1), v1 = (1, 1.5, 0),
     // v2 = (1, -1, 1), o = (-2, 0.2, 0), d = (1, 0.1, 0)/sqrt 1.01.
     let (v0, v1, v2) = (
         DVec3::new(1.0, -1.0, -1.0),

@@ -55,10 +55,10 @@ fn sphere_textbook_f32_fails_far_away_stable_holds() {
 #[test]
 fn triangle_moller_trumbore_leaks_watertight_does_not() {
     let [mt, _, watertight] = triangle::leak_rates(Quality::Quick).unwrap();
-    eprintln!("leaks: Moller-Trumbore {mt}, watertight {watertight}");
+    eprintln!("leaks: Möller-Trumbore {mt}, watertight {watertight}");
     assert!(
         mt > 0.01,
-        "Moller-Trumbore leaks at shared edges and vertices"
+        "Möller-Trumbore leaks at shared edges and vertices"
     );
     assert_eq!(watertight, 0.0);
     // On the mesh of slivers the epsilon patch is not enough; watertight still holds.

@@ -97,7 +97,7 @@ const CH11_1: &str = "11_1_bvh.md";
 
 const TB: &str = "textbook f32";
 const TB_WRONG: &str = "% wrong, textbook f32";
-const MT: &str = "Moller-Trumbore";
+const MT: &str = "Möller-Trumbore";
 const AT_V: &str = "vertices (S4)";
 const AT_E: &str = "edge midpoints (S5)";
 const FIXED: &str = "fixed t > 1e-4 (%)";

@@ -678,7 +678,7 @@ mod checks {
         );
     }
 
-    /// Moller-Trumbore written out, with switches for the typical mistakes.
+    /// Möller-Trumbore written out, with switches for the typical mistakes.
     #[derive(Clone, Copy, Default)]
     struct MtMistakes {
         cull_back_faces: bool,

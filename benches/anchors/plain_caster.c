@@ -20,7 +20,7 @@
  *   plane    t = (p0 - o).n / (d.n).
  *   box      the slab test: t on each pair of planes from 1/d, the largest entry,
  *            the smallest exit.
- *   triangle Moller-Trumbore: p = d x e2, 1/det = 1/(e1.p), u = (o - v0).p/det,
+ *   triangle Möller-Trumbore: p = d x e2, 1/det = 1/(e1.p), u = (o - v0).p/det,
  *            q = (o - v0) x e1, v = d.q/det, t = e2.q/det.
  *
  * The order of every sum is the one the Rust code uses (glam's dot is

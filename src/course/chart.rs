@@ -9,6 +9,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::error::{Error, Problem, Result};
 use crate::files::write_atomically;
@@ -220,7 +221,33 @@ impl Chart {
                 ))?
                 .label(series.name.as_str())
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
-            chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+            if let [point] = points[..] {
+                // A series of one point (a method's cost and its error) is a large
+                // dot named where it is, not a line the eye has to look for.
+                let right_half = chart.backend_coord(&point).0 > WIDTH as i32 / 2;
+                let (dx, h) = if right_half {
+                    (-10, HPos::Right)
+                } else {
+                    (10, HPos::Left)
+                };
+                let style = ("sans-serif", LABEL_SIZE)
+                    .into_text_style(&root)
+                    .color(&colour)
+                    .pos(Pos::new(h, VPos::Bottom));
+                let name = series.name.clone();
+                chart.draw_series(std::iter::once(
+                    EmptyElement::at(point)
+                        + Circle::new((0, 0), 6, colour.filled())
+                        + Text::new(name, (dx, -6), style),
+                ))?;
+            } else {
+                chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+            }
+        }
+        if drawn.iter().all(|points| points.len() == 1) {
+            // Every series is named beside its dot: no legend.
+            root.present()?;
+            return Ok(());
         }
         chart
             .configure_series_labels()

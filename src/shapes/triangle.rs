@@ -1,4 +1,4 @@
-//! Ray / triangle: Moller-Trumbore (JGT 1997) and the watertight test of Woop,
+//! Ray / triangle: Möller-Trumbore (JGT 1997) and the watertight test of Woop,
 //! Benthin and Wald (JCGT 2013).
 
 use glam::{DVec3, Vec3};
@@ -74,7 +74,7 @@ impl Triangle {
     }
 
     // ANCHOR: moller_trumbore
-    /// Moller and Trumbore (JGT 1997): solve o + t d = (1 - b1 - b2) v0 + b1 v1 + b2 v2
+    /// Möller and Trumbore (JGT 1997): solve o + t d = (1 - b1 - b2) v0 + b1 v1 + b2 v2
     /// by Cramer's rule. With e1 = v1 - v0, e2 = v2 - v0, p = d x e2, T = o - v0 and
     /// q = T x e1: det = e1 . p, b1 = T . p / det, b2 = d . q / det, t = e2 . q / det
     /// (the paper's names: `tvec` is T).

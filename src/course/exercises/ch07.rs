@@ -27,7 +27,7 @@ pub fn ray_sphere_roots(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f32)>
     )
 }
 
-/// Coding exercise 7.3: the Moller-Trumbore test. Where the ray o + t d (`d` of
+/// Coding exercise 7.3: the Möller-Trumbore test. Where the ray o + t d (`d` of
 /// length 1) hits the triangle `v0, v1, v2`, as `(t, b1, b2)`: the distance `t` and
 /// the barycentric weights of `v1` and `v2`, so that the point is
 /// (1 - b1 - b2) v0 + b1 v1 + b2 v2.
@@ -41,6 +41,6 @@ pub fn ray_sphere_roots(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f32)>
 /// share hits both.
 pub fn moller_trumbore(o: Vec3, d: Vec3, v0: Vec3, v1: Vec3, v2: Vec3) -> Option<(f32, f32, f32)> {
     todo!(
-        "Coding exercise 7.3 (chapter 07, Ray/primitive intersections): the Moller-Trumbore ray/triangle test"
+        "Coding exercise 7.3 (chapter 07, Ray/primitive intersections): the Möller-Trumbore ray/triangle test"
     )
 }

@@ -210,7 +210,7 @@ fn ray_sphere_roots_checked(
 
 type TriangleArgs = (Vec3, Vec3, Vec3, Vec3, Vec3);
 
-/// det, b1 and b2 of Moller-Trumbore for these arguments, in f64 (to recognise
+/// det, b1 and b2 of Möller-Trumbore for these arguments, in f64 (to recognise
 /// mistakes, not to grade): det = e1 . (d x e2), b1 and b2 by Cramer's rule.
 fn cramer(&(o, d, v0, v1, v2): &TriangleArgs) -> (f64, f64, f64) {
     let [o, d, v0, v1, v2] = [o, d, v0, v1, v2].map(Vec3::as_dvec3);
@@ -228,7 +228,7 @@ fn cramer(&(o, d, v0, v1, v2): &TriangleArgs) -> (f64, f64, f64) {
 /// triangles of a square share and through the vertex four triangles of a fan share.
 /// Their coordinates are small integers, so every step is exact in `f32`: each
 /// triangle finds a barycentric weight of exactly 0 or 1, and an inclusive test hits
-/// every one of them, as the crate's does. (With rounding, Moller-Trumbore can still
+/// every one of them, as the crate's does. (With rounding, Möller-Trumbore can still
 /// let such a ray through: STABILITY S4, S5, which the watertight test fixes.)
 pub fn check_moller_trumbore(
     f: impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)> + Send + Sync + 'static,

@@ -5,7 +5,7 @@
 //! measured rather than guessed (lesson 11, BENCHMARKS.md).
 //!
 //! - sphere: the school formula (-b +- sqrt(b^2 - 4ac)) / 2a (STABILITY S1 fails);
-//! - triangle: Moller-Trumbore (S4, S5 leak);
+//! - triangle: Möller-Trumbore (S4, S5 leak);
 //! - box: the slab test with 1/d from the ray, not NaN-safe for rays in a face plane;
 //! - plane: (p0 - o) . n / (d . n).
 //!

@@ -9,8 +9,8 @@
 //! Every ray is tested against every triangle, so the time per test is the time of
 //! that brute-force loop divided by the number of tests.
 //!
-//! The methods are Moller-Trumbore, the watertight test of Woop, Benthin and Wald,
-//! and, as a comparison written here, Moller-Trumbore with its edge tests widened by
+//! The methods are Möller-Trumbore, the watertight test of Woop, Benthin and Wald,
+//! and, as a comparison written here, Möller-Trumbore with its edge tests widened by
 //! a small epsilon (the usual patch for its leaks).
 //!
 //! This file measures the chart; `boxes.rs` measures the S6 finding below it, and
@@ -37,13 +37,13 @@ use tables::quoted_times;
 pub enum TriangleMethod {
     /// [`Triangle::moller_trumbore`].
     MollerTrumbore,
-    /// Moller-Trumbore with each barycentric test widened by [`EPSILON`].
+    /// Möller-Trumbore with each barycentric test widened by [`EPSILON`].
     MollerTrumboreEpsilon,
     /// [`Triangle::watertight`].
     Watertight,
 }
 
-/// How far the epsilon variant of Moller-Trumbore widens its barycentric tests:
+/// How far the epsilon variant of Möller-Trumbore widens its barycentric tests:
 /// b1 >= -EPSILON, b2 >= -EPSILON, b1 + b2 <= 1 + EPSILON.
 pub const EPSILON: f32 = 1e-6;
 
@@ -58,8 +58,8 @@ impl TriangleMethod {
     /// The legend's name.
     pub fn name(self) -> &'static str {
         match self {
-            TriangleMethod::MollerTrumbore => "Moller-Trumbore",
-            TriangleMethod::MollerTrumboreEpsilon => "Moller-Trumbore, edges widened by 1e-6",
+            TriangleMethod::MollerTrumbore => "Möller-Trumbore",
+            TriangleMethod::MollerTrumboreEpsilon => "Möller-Trumbore, edges widened by 1e-6",
             TriangleMethod::Watertight => "watertight (Woop et al.)",
         }
     }
@@ -299,7 +299,7 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         ),
         format!(
             "the epsilon is a guess, not a bound: on a closed mesh of slivers ({} x {} \
-             segments, {} rays) the widened Moller-Trumbore leaks {:.2}%, watertight {:.2}%",
+             segments, {} rays) the widened Möller-Trumbore leaks {:.2}%, watertight {:.2}%",
             SLIVERS.0,
             SLIVERS.1,
             sliver_rays.len(),

@@ -31,7 +31,7 @@ pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
         &[
             "rays aimed at",
             "rays",
-            "Moller-Trumbore",
+            "Möller-Trumbore",
             "widened by 1e-6",
             "watertight",
         ],
@@ -100,7 +100,7 @@ pub(super) fn quoted_times(ns: [f64; 3], plain_ns: f64, conservative_ns: f64) ->
     )
     .row(vec![
         "S4, S5".into(),
-        "Moller-Trumbore / watertight".into(),
+        "Möller-Trumbore / watertight".into(),
         format!("{:.1} / {:.1}", ns[0], ns[2]),
         format!("{:.2}x", ns[2] / ns[0]),
     ])

@@ -42,11 +42,12 @@ impl Diagram {
         self.drawing_axes = false;
     }
 
-    /// A tick's value next to `p`, smaller than a label; left out when the diagram is
-    /// saved if it would cover another label.
+    /// A tick's value next to `p`, a little smaller than a label (its digits about
+    /// 10 px high); left out when the diagram is saved if it would cover another
+    /// label or a dot.
     fn small_text(&mut self, p: Vec2, s: &str, place: Place) {
         let px = self.to_px(p);
-        let size = LABEL_SIZE * 0.8;
+        let size = LABEL_SIZE * 0.93;
         self.label(px, s, size, palette::INK, place, LabelKind::Tick);
     }
 }

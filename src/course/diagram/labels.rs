@@ -5,7 +5,7 @@
 
 use glam::Vec2;
 
-use super::place::{Place, PxBox, ink_box, offset};
+use super::place::{GAP, Place, PxBox, ink_box, offset};
 use super::{Diagram, Rgb, Segment, palette};
 
 /// What a label is, which decides what gives way when two collide.
@@ -187,7 +187,7 @@ impl Diagram {
     }
 
     /// Every label the saved diagram shows, in the order drawn: tick values that
-    /// would cover another label are left out.
+    /// would cover another label or a dot are left out.
     pub fn labels(&self) -> Vec<&Label> {
         let mut shown: Vec<&Label> = Vec::new();
         let others: Vec<&Label> = self
@@ -195,9 +195,17 @@ impl Diagram {
             .iter()
             .filter(|l| l.kind != LabelKind::Tick)
             .collect();
+        // A marker dot (a hit, an origin: 3 px or more; not the small dots that
+        // trace a surface) hides a tick value within a gap of it, as a label does.
+        let on_dot = |l: &Label| {
+            self.segments.iter().any(|g| {
+                g.a == g.b && g.half_width >= 3.0 && l.bounds.touches(g.a, g.b, g.half_width + GAP)
+            })
+        };
         for l in &self.labels {
             let hides = |o: &&Label| o.bounds.overlaps(&l.bounds);
-            if l.kind == LabelKind::Tick && (others.iter().any(hides) || shown.iter().any(hides)) {
+            let covered = others.iter().any(hides) || shown.iter().any(hides) || on_dot(l);
+            if l.kind == LabelKind::Tick && covered {
                 continue;
             }
             shown.push(l);

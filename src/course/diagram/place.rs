@@ -100,7 +100,7 @@ impl PxBox {
 }
 
 /// The gap between a point and its label, in pixels.
-const GAP: f32 = 6.0;
+pub(super) const GAP: f32 = 6.0;
 
 /// Where the text's layout box starts (top-left) relative to its point.
 pub(super) fn offset(s: &str, size: f32, place: Place) -> Vec2 {

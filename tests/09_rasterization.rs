@@ -21,6 +21,7 @@ use render_lessons::raster::{
 };
 use render_lessons::render::with_threads;
 use render_lessons::scene::{PointLight, Scene};
+use render_lessons::scenes::squares::{Squares, squares};
 use render_lessons::scenes::{
     PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };
@@ -324,13 +325,12 @@ fn quad(z: f32, half: f32) -> Mesh {
 
 #[test]
 fn z_buffer_order_does_not_matter() {
-    let camera: Camera = PinholeCamera::at_origin(film(), 1.0).unwrap().into();
-    let near = Model::new(quad(-3.0, 1.0), Vec3::new(1.0, 0.2, 0.2));
-    let far = Model::new(quad(-5.0, 6.0), Vec3::new(0.2, 0.2, 1.0));
-    let light = PointLight {
-        position: Vec3::new(0.0, 0.0, 2.0),
-        intensity: Vec3::splat(20.0),
-    };
+    let Squares {
+        near,
+        far,
+        camera,
+        light,
+    } = squares().unwrap();
     for shading in [Shading::PerVertex, Shading::PerPixel] {
         let settings = RasterSettings {
             shading,

@@ -2,10 +2,11 @@
 //!
 //! Lesson 08's still life (which lessons 09 and 11 render too), a mesh from a file
 //! standing in it (lesson 09), and the scenes of lesson 10's path tracer (the
-//! Cornell box, the furnaces, two lights).
+//! Cornell box, the furnaces, two lights), and the z-buffer's two squares (lesson 09).
 
 pub mod meshes;
 pub mod path_tracing;
+pub mod squares;
 pub mod still_life;
 
 use std::path::{Path, PathBuf};

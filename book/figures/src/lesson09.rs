@@ -15,9 +15,10 @@ use render_lessons::mesh::{Model, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{CameraTransforms, Shadows, floor_settings, point_light};
 use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
-use render_lessons::raster::{rasterize, rasterize_triangle};
+use render_lessons::raster::{RasterSettings, rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
+use render_lessons::scenes::squares::{Squares, squares};
 use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
 use render_lessons::scenes::{
     mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
@@ -27,7 +28,7 @@ use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
 /// Writes `09_side_by_side.png`, `09_shadows.png`, `09_shadow_bias.png`,
-/// `09_mesh.png`, `09_teapot.png` and `09_pipeline_stages.png`: lesson 09 at its
+/// `09_mesh.png`, `09_teapot.png`, `09_z_buffer.png` and `09_pipeline_stages.png`: lesson 09 at its
 /// defaults (480 x 270, spheres of 64 segments, a 1024^2 shadow map, a bias of one
 /// texel footprint), and with `--mesh assets/meshes/teapot.obj`.
 pub fn figures(output: &Output) -> Result<()> {
@@ -64,7 +65,32 @@ pub fn figures(output: &Output) -> Result<()> {
     for (name, images) in panels {
         output.image(name, &Framebuffer::beside(&images, 8)?)?;
     }
+    output.image("09_z_buffer.png", &z_buffer()?)?;
     output.diagram("09_pipeline_stages.png", &stages()?)
+}
+
+/// The z-buffer's two squares (`scenes::squares`), rasterized with the red one first
+/// and with the blue one first, each pixel drawn as a 24 x 24 block so the 16 x 9
+/// image can be seen: the two images are the same.
+pub fn z_buffer() -> Result<Framebuffer> {
+    let Squares {
+        near,
+        far,
+        camera,
+        light,
+    } = squares()?;
+    let settings = RasterSettings::default();
+    let orders = [[near.clone(), far.clone()], [far, near]];
+    let mut images = Vec::new();
+    for models in &orders {
+        let image = rasterize(models, &camera, &light, &settings)?;
+        let block = 24;
+        let big = Framebuffer::from_fn(image.width() * block, image.height() * block, |x, y| {
+            image.get(x / block, y / block).unwrap_or(Vec3::ZERO)
+        })?;
+        images.push(big);
+    }
+    Framebuffer::beside(&images.iter().collect::<Vec<_>>(), 8)
 }
 
 /// The captions of `09_side_by_side.png`, left to right.

@@ -61,7 +61,7 @@ pub fn with_threads<T: Send, E: Send + From<Error>>(
 
 /// A pool of `threads` worker threads, for a caller that runs many pieces of work
 /// on it (`pool.install(...)`, as [`with_threads`] does once); an error
-/// ([`Shortfall::ThreadPool`](crate::error::Shortfall::ThreadPool)) if the system would not start them.
+/// ([`crate::error::Shortfall::ThreadPool`]) if the system would not start them.
 pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)

@@ -10,7 +10,7 @@
 //! - [`traverse`]: an iterative walk with a small fixed stack; at each interior node
 //!   both children's boxes are tested and the nearer one visited first, with the
 //!   conservative slab test of Ize 2013 on the node boxes (STABILITY S6) and the
-//!   ray's 1/d computed once ([`PreparedRay`](crate::shapes::PreparedRay)).
+//!   ray's 1/d computed once ([`crate::shapes::PreparedRay`]).
 //!
 //! - [`list_or_tree`]: the choice between a scene's plain list and the tree, by the
 //!   number of ray-primitive tests a render would make.
@@ -193,7 +193,7 @@ impl LeafShapes {
     }
 }
 
-/// A BVH over a slice of [`Object`]s. It answers with indices into that slice, so it
+/// A BVH over a slice of [`Object`](crate::scene::Object)s. It answers with indices into that slice, so it
 /// must be used with the slice it was built from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bvh {

@@ -22,7 +22,7 @@ use crate::scene::{Object, SceneHit};
 use crate::shapes::{Candidate, PreparedRay};
 
 /// The relative margin added to the far end of the box tests: 4 gamma(3), about
-/// 7e-7 (a few ulps of `t`). See [`Nearest::box_limit`].
+/// 7e-7 (a few ulps of `t`). See `Nearest::box_limit`.
 pub const TIE_MARGIN: f32 = 4.0 * gamma(3);
 
 /// What the walk does after a leaf.

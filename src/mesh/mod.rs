@@ -10,7 +10,7 @@
 //! - [`obj`]: reading a Wavefront OBJ file, faces split into triangles;
 //! - [`teapot`]: the Newell teapot's patches, cut into quads and written as OBJ;
 //! - [`subdivide`]: every triangle split in four, for meshes of a million triangles;
-//! - [`tessellate`]: a scene of analytic primitives as meshes, object by object.
+//! - [`tessellate`](mod@tessellate): a scene of analytic primitives as meshes, object by object.
 
 pub mod modeling;
 pub mod obj;

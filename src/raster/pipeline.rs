@@ -1,7 +1,7 @@
 //! The pipeline of Lecture 2 ("Rasterization Pipeline"), stage after stage: modeling
 //! (a vertex list and a triangle list) -> transform -> lighting -> primitive
 //! rasterization with a z-buffer -> per-pixel shading. Each stage has its own file
-//! ([`super::projection`], [`super::shade`], [`super::clip`], [`super::rasterize`]);
+//! ([`super::projection`], [`super::shade`](mod@super::shade), [`super::clip`], [`super::rasterize`](mod@super::rasterize));
 //! this one runs them in order.
 //!
 //! The work runs in two parallel stages: vertices and triangles (transform, light,

@@ -25,7 +25,7 @@ impl Varyings {
         }
     }
 
-    /// The weighted sum sum_k weights[k] v[k].
+    /// The weighted sum sum_k weights\[k\] v\[k\].
     pub fn weighted(v: &[Varyings; 3], weights: [f32; 3]) -> Varyings {
         let sum = |f: fn(&Varyings) -> Vec3| {
             f(&v[0]) * weights[0] + f(&v[1]) * weights[1] + f(&v[2]) * weights[2]

@@ -143,7 +143,7 @@ impl Aabb {
     // ANCHOR_END: slab
 
     // ANCHOR: slab_conservative
-    /// [`Aabb::slab`] with each axis' t_far moved out by [`moved_out`] (pbrt-v4,
+    /// [`Aabb::slab`] with each axis' t_far moved out by `moved_out` (pbrt-v4,
     /// `Bounds3::IntersectP`: t_far *= 1 + 2 gamma(3)), so that rounding in the three
     /// operations behind it cannot make the box miss a point that lies on it, such as
     /// a vertex of a triangle it bounds (STABILITY S6). The BVH's node test applies

@@ -7,7 +7,7 @@ use crate::error::{Error, Problem};
 /// The renderer's error `e` as the user typed it: where the parameter it names is
 /// one of the lesson's flags (`screen distance` for `--screen-distance`), the flag
 /// in its place, so that "screen distance must ..." reads "--screen-distance must
-/// ...". See [`typed`].
+/// ...". See `typed`.
 pub fn as_typed(e: &Error) -> String {
     typed(e, typed_flag)
 }

@@ -18,7 +18,7 @@ pub fn stop_on_ctrl_c() {
 }
 
 /// `Err(Failure::Interrupted)` once Ctrl-C was pressed (see [`stop_on_ctrl_c`]);
-/// [`run`] then exits with code 130, the shell's code for an interrupt.
+/// [`run`](super::run) then exits with code 130, the shell's code for an interrupt.
 pub fn check_interrupt() -> LessonResult<()> {
     if INTERRUPTED.load(std::sync::atomic::Ordering::SeqCst) {
         Err(Failure::Interrupted)

@@ -4,7 +4,7 @@
 //! one sample there (lesson 10, step 1). The image's mean squared error is the mean
 //! of sigma^2 / N over the pixels, so the pixels with the largest sigma^2 are where
 //! the time goes. This measures sigma^2 in every pixel from `spp` samples,
-//! sigma^2 = E[x^2] - E[x]^2 of the grey value (the mean of the three channels), and
+//! sigma^2 = E\[x^2\] - E\[x\]^2 of the grey value (the mean of the three channels), and
 //! sorts it by what the pixel's centre ray meets first: the pixels a strategy cannot
 //! improve (seen through glass or in a mirror, where only the specular bounce finds
 //! the light) set a ceiling on what any light sampling can gain. So do the

@@ -86,7 +86,7 @@ pub fn render(
             Part::Ladder => out.image(&format!("10_{spp}spp.png"), image)?,
             Part::Strategy(s) => out.image(&format!("10_{}.png", s.flag()), image)?,
             Part::Reference => {
-                image.save_png(&out.file("10_reference.png"))?;
+                image.save_png(out.file("10_reference.png"))?;
                 reference_spp = spp;
             }
         }

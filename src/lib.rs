@@ -26,7 +26,9 @@
 //!    one Lambert formula, one ray per pixel in parallel, triangle meshes (read,
 //!    made from shapes, placed);
 //! 7. `raycast`, `raster`, `pathtrace`: the three renderers;
-//! 8. `scenes`: the lessons' scenes, shared by several lessons.
+//! 8. `scenes`: the lessons' scenes, shared by several lessons;
+//! 9. `prelude`: the renderer's front door, one `use` for a program of your own
+//!    (`examples/library.rs`).
 //!
 //! ## The course's tools
 //!
@@ -46,6 +48,7 @@ pub mod limits;
 pub mod material;
 pub mod mesh;
 pub mod pathtrace;
+pub mod prelude;
 pub mod progress;
 pub mod quadratic;
 pub mod raster;
@@ -61,3 +64,4 @@ pub mod spawn;
 pub mod transform;
 
 pub use error::{Error, Result};
+pub use glam;

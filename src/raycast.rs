@@ -2,10 +2,21 @@
 
 use glam::Vec3;
 
+use crate::camera::Camera;
+use crate::error::Result;
+use crate::framebuffer::Framebuffer;
 use crate::lighting;
 use crate::ray::{Interval, Ray};
+use crate::render::render;
 use crate::scene::Intersect;
 use crate::spawn::{Offset, Start};
+
+/// The whole image in one call: every pixel [`lit`] by the scene's point light,
+/// with shadow rays offset as the renderers' default ([`Offset::default`]). The
+/// lessons write the same thing as `render(camera, |r| lit(scene, r, offset))`.
+pub fn ray_cast(scene: &impl Intersect, camera: &Camera) -> Result<Framebuffer> {
+    render(camera, |ray| lit(scene, ray, Offset::default()))
+}
 
 // ANCHOR: shadowless
 /// The lecture's shadowless ray casting for one ray: the colour of the primitive

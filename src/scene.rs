@@ -35,9 +35,9 @@ pub struct Object {
 
 impl Object {
     /// A surface that does not emit.
-    pub fn new(shape: Shape, material: Material) -> Object {
+    pub fn new(shape: impl Into<Shape>, material: Material) -> Object {
         Object {
-            shape,
+            shape: shape.into(),
             material,
             emission: Vec3::ZERO,
             front_only: false,
@@ -46,14 +46,14 @@ impl Object {
 
     /// A Lambertian surface of colour `albedo` (linear RGB, each channel in [0, 1]):
     /// what the ray caster and the rasterizer paint.
-    pub fn diffuse(shape: Shape, albedo: Vec3) -> Object {
+    pub fn diffuse(shape: impl Into<Shape>, albedo: Vec3) -> Object {
         Object::new(shape, Material::Diffuse { albedo })
     }
 
     /// A surface that emits `emission` from both sides.
-    pub fn emitting(shape: Shape, material: Material, emission: Vec3) -> Object {
+    pub fn emitting(shape: impl Into<Shape>, material: Material, emission: Vec3) -> Object {
         Object {
-            shape,
+            shape: shape.into(),
             material,
             emission,
             front_only: false,
@@ -62,9 +62,9 @@ impl Object {
 
     /// A lamp: a black surface that emits `emission` from its front side only, the
     /// side its outward normal points to.
-    pub fn lamp(shape: Shape, emission: Vec3) -> Object {
+    pub fn lamp(shape: impl Into<Shape>, emission: Vec3) -> Object {
         Object {
-            shape,
+            shape: shape.into(),
             material: Material::BLACK,
             emission,
             front_only: true,
@@ -124,6 +124,16 @@ pub struct PointLight {
     pub position: Vec3,
     /// Its colour and strength, linear RGB.
     pub intensity: Vec3,
+}
+
+impl PointLight {
+    /// A light at `position` of `intensity`; [`Scene::with_light`] checks both.
+    pub fn new(position: Vec3, intensity: Vec3) -> PointLight {
+        PointLight {
+            position,
+            intensity,
+        }
+    }
 }
 
 /// Objects, the emitting ones among them, what escaping rays see, and an optional

@@ -37,6 +37,13 @@ pub enum Offset {
     ErrorBound,
 }
 
+/// [`Offset::ErrorBound`], the renderers' choice.
+impl Default for Offset {
+    fn default() -> Offset {
+        Offset::ErrorBound
+    }
+}
+
 impl Offset {
     /// Where a ray leaving `p` (whose coordinates are off the surface by at most
     /// `error`, see [`crate::shapes::Hit::error`]) on the side of `n` (a unit normal

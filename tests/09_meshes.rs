@@ -66,7 +66,7 @@ fn a_quad_becomes_two_triangles_and_a_pentagon_three() {
     assert_eq!(fan(&[7, 8]).count(), 0);
 
     let (_dir, write) = scratch();
-    let loaded = Mesh::from_obj(&write("faces.obj", SQUARE_AND_PENTAGON)).unwrap();
+    let loaded = Mesh::from_obj(write("faces.obj", SQUARE_AND_PENTAGON)).unwrap();
     let counts = FaceCounts {
         faces: 2,
         faces_triangulated: 2,
@@ -102,7 +102,7 @@ fn a_face_with_a_repeated_vertex_is_skipped_and_counted() {
     let (_dir, write) = scratch();
     // A quad with a repeated corner (a pole), a triangle with one, and a good one.
     let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 1 2 3\nf 2 2 3\nf 1 2 4\n";
-    let loaded = Mesh::from_obj(&write("poles.obj", text)).unwrap();
+    let loaded = Mesh::from_obj(write("poles.obj", text)).unwrap();
     let counts = FaceCounts {
         faces: 3,
         faces_triangulated: 1,
@@ -210,15 +210,15 @@ fn obj_files() {
     assert_eq!(loaded.counts.to_string(), "");
     // Normals from the file, one per vertex, are kept (normalised).
     let with_normals = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n";
-    let mesh = Mesh::from_obj(&write("normals.obj", with_normals))
+    let mesh = Mesh::from_obj(write("normals.obj", with_normals))
         .unwrap()
         .mesh;
     assert_eq!(mesh.normals, vec![Vec3::Z; 3]);
     // Two groups are merged into one mesh, the second's indices shifted.
     let groups = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\ng a\nf 1 2 3\ng b\nf 2 4 3\n";
-    let mesh = Mesh::from_obj(&write("groups.obj", groups)).unwrap().mesh;
+    let mesh = Mesh::from_obj(write("groups.obj", groups)).unwrap().mesh;
     assert_eq!(mesh.triangles.len(), 2);
-    let missing = Mesh::from_obj(&dir.path().join("missing.obj")).unwrap_err();
+    let missing = Mesh::from_obj(dir.path().join("missing.obj")).unwrap_err();
     assert!(matches!(missing, Error::File { line: None, .. }));
     assert!(missing.to_string().contains("missing.obj"), "{missing}");
 }
@@ -229,7 +229,7 @@ fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted()
     // One triangle with area, one whose corners lie on a line: the mesh keeps the
     // first only, and the count says so.
     let text = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n";
-    let loaded = Mesh::from_obj(&write("flat.obj", text)).unwrap();
+    let loaded = Mesh::from_obj(write("flat.obj", text)).unwrap();
     assert_eq!(loaded.counts.skipped_degenerate, 1);
     assert_eq!(loaded.mesh.triangles.len(), 1);
     assert_eq!(loaded.mesh.objects(Vec3::ONE).unwrap().len(), 1);
@@ -362,7 +362,7 @@ fn the_teapot_patches_join_without_cracks() {
     // Welded, the quads leave open only the teapot's real openings: the rim's inner
     // edge and the lid's outer edge (4 patches each), the handle's and the spout's
     // two ends (2 patches each): 16 x 8 edges at 8 quads a side.
-    let mesh = Mesh::from_obj(&asset_path(Path::new(TEAPOT_OBJ)))
+    let mesh = Mesh::from_obj(asset_path(Path::new(TEAPOT_OBJ)))
         .unwrap()
         .mesh;
     let directed: HashSet<(u32, u32)> = mesh
@@ -380,7 +380,7 @@ fn the_teapot_patches_join_without_cracks() {
 
 #[test]
 fn teapot_load_statistics() {
-    let loaded = Mesh::from_obj(&asset_path(Path::new(TEAPOT_OBJ))).unwrap();
+    let loaded = Mesh::from_obj(asset_path(Path::new(TEAPOT_OBJ))).unwrap();
     let mesh = &loaded.mesh;
     let (lo, hi) = mesh
         .positions

@@ -28,6 +28,7 @@ const LAYERS: &[&[&str]] = &[
     &["bvh", "lighting", "render", "mesh"],
     &["raycast", "raster", "pathtrace"],
     &["scenes"],
+    &["prelude"],
     &["course"],
 ];
 
@@ -221,4 +222,15 @@ fn the_checker_sees_a_known_import() {
     assert!(graph["scene"].contains("shapes"), "{:?}", graph["scene"]);
     assert!(graph["raycast"].contains("scene"));
     assert!(graph["pathtrace::estimator"].contains("pathtrace::next_event"));
+}
+
+/// The front door (issue 32): `examples/library.rs`, a whole program, is at most 40
+/// lines and needs one `use` of the crate, the prelude.
+#[test]
+fn the_library_example_is_short_and_needs_one_use() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("examples/library.rs")).unwrap();
+    assert!(text.lines().count() <= 40, "{} lines", text.lines().count());
+    let uses: Vec<&str> = text.lines().filter(|l| l.starts_with("use ")).collect();
+    assert_eq!(uses, ["use render_lessons::prelude::*;"]);
 }

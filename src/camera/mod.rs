@@ -38,6 +38,20 @@ pub enum Camera {
 }
 
 impl Camera {
+    /// A pinhole camera at `eye` looking at `target`, `up` the image's up, with a
+    /// vertical field of view of `vfov_degrees`, `width` x `height` pixels: the
+    /// [`PinholeCamera::look_at`] most programs want, as a [`Camera`].
+    pub fn look_at(
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        vfov_degrees: f32,
+        width: u32,
+        height: u32,
+    ) -> Result<Camera> {
+        Ok(PinholeCamera::look_at(eye, target, up, vfov_degrees, width, height)?.into())
+    }
+
     // ANCHOR: ray_through
     /// The ray through the continuous pixel position `pixel` (column, row from the
     /// top), `lens` in the unit square choosing the point of the lens it leaves from

@@ -132,8 +132,8 @@ impl Framebuffer {
     }
 
     /// Writes the image as an 8-bit sRGB PNG, atomically; refuses NaN pixels.
-    pub fn save_png(&self, path: &Path) -> Result<()> {
-        write_png_rgba(path, self.width, self.height, &self.to_srgb8()?)
+    pub fn save_png(&self, path: impl AsRef<Path>) -> Result<()> {
+        write_png_rgba(path.as_ref(), self.width, self.height, &self.to_srgb8()?)
     }
 }
 

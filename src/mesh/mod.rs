@@ -51,6 +51,11 @@ impl Model {
         }
     }
 
+    /// The same model placed in the world by `model` (model space to world space).
+    pub fn placed(self, model: Transform) -> Model {
+        Model { model, ..self }
+    }
+
     /// The mesh as the ray caster sees it, placed in the world: one triangle
     /// primitive per triangle, coloured [`Model::colour`].
     pub fn objects(&self) -> Result<Vec<Object>> {

@@ -86,7 +86,8 @@ impl Mesh {
     /// Errors name the file and, where they can, the line: a missing file, a line
     /// tobj cannot parse, a corner that names no vertex, a NaN or infinite
     /// coordinate, no face at all, or no triangle with an area.
-    pub fn from_obj(path: &Path) -> Result<LoadedMesh> {
+    pub fn from_obj(path: impl AsRef<Path>) -> Result<LoadedMesh> {
+        let path = path.as_ref();
         let models = parse(path)?;
         let mut positions: Vec<Vec3> = Vec::new();
         let mut normals = Vec::new();

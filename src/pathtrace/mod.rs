@@ -25,3 +25,22 @@ pub use estimator::{At, Path, Vertex, radiance};
 pub use light::{LightShape, SphereSampling};
 pub use progressive::{Accumulator, Passes, PixelSampling};
 pub use settings::{Sampling, Settings};
+
+use crate::camera::Camera;
+use crate::error::Result;
+use crate::framebuffer::Framebuffer;
+use crate::scene::Intersect;
+
+/// The whole image in one call: `spp` samples per pixel with the default
+/// [`Settings`] (MIS, depth 8, Russian roulette), independent pixel samples and seed
+/// 1. The lessons write the steps out: an [`Accumulator`] and its passes.
+pub fn path_trace(scene: &impl Intersect, camera: &Camera, spp: u32) -> Result<Framebuffer> {
+    let mut sums = Accumulator::new(camera, 1);
+    sums.render_pass(
+        scene,
+        camera,
+        &Settings::default(),
+        PixelSampling::Independent,
+        spp,
+    )
+}

@@ -22,7 +22,8 @@ pub use still_life::{
 /// path under the repository this program was built from, if the file is there. So a
 /// default such as [`TORUS_OBJ`] reads as `assets/...` in `--help` and still works
 /// from another folder, while a path the user gives is read where they say.
-pub fn asset_path(path: &Path) -> PathBuf {
+pub fn asset_path(path: impl AsRef<Path>) -> PathBuf {
+    let path = path.as_ref();
     let built = Path::new(env!("CARGO_MANIFEST_DIR")).join(path);
     if path.is_relative() && !path.exists() && built.exists() {
         built

@@ -160,7 +160,7 @@ pub fn cornell_teapot(width: u32, height: u32) -> Result<Staged> {
         scene: box_scene,
         camera,
     } = cornell(width, height)?;
-    let teapot = Mesh::from_obj(&asset_path(Path::new(TEAPOT_OBJ)))?.mesh;
+    let teapot = Mesh::from_obj(asset_path(Path::new(TEAPOT_OBJ)))?.mesh;
     // The teapot's y starts at 0, so it stands on the floor (y = 0); seven times its
     // size is about as wide as the ball was.
     let placed = Transform::scale(7.0, 7.0, 7.0).then(Transform::translation(30.0, 0.0, 50.0));

@@ -57,11 +57,6 @@ fn cosine_sample_rejects_mistakes() {
         }),
         "uniform hemisphere",
     );
-    // The pdf without its 1/pi.
-    fails_with(
-        check_cosine_sample(move |u| malley(u, sqrt, lift, |w| w.z)),
-        "misses 1/pi",
-    );
     // The uniform density for cosine directions.
     fails_with(
         check_cosine_sample(move |u| malley(u, sqrt, lift, |_| 1.0 / TAU)),
@@ -163,7 +158,6 @@ fn bounce_weight_rejects_mistakes() {
             },
             "below the surface",
         ),
-        (BounceMistakes { no_pi: true, ..no }, "albedo / pi"),
         (BounceMistakes { no_cos: true, ..no }, "cosine is missing"),
         (
             BounceMistakes {
@@ -194,8 +188,6 @@ enum Order {
     None,
     /// With f32::min and f32::max.
     MinMax,
-    /// Swapped when t_near > t_far.
-    Comparing,
     /// By the sign of inv_d_i, as lesson 07 does.
     Sign,
 }
@@ -216,8 +208,6 @@ fn slab_with(
             let (near, far) = match order {
                 Order::None => (a, b),
                 Order::MinMax => (a.min(b), a.max(b)),
-                Order::Comparing if a > b => (b, a),
-                Order::Comparing => (a, b),
                 Order::Sign if inv_d[i] < 0.0 => (b, a),
                 Order::Sign => (a, b),
             };
@@ -256,12 +246,6 @@ fn slab_rejects_mistakes() {
     fails_with(
         check_slab(slab_with(Order::None, true, true)),
         "swap t_near and t_far",
-    );
-    // The exercise's old text and solution: sorted by comparing the ends. It
-    // passes every case but the -0 component in a face's plane.
-    fails_with(
-        check_slab(slab_with(Order::Comparing, true, true)),
-        "Decide by the sign of inv_d_i",
     );
     fails_with(
         check_slab(slab_with(Order::Sign, true, false)),
@@ -357,4 +341,158 @@ fn sah_cost_rejects_mistakes() {
         "number of primitives",
     );
     assert_eq!(check_sah_cost(|_, _, _, _, _| todo!()), Outcome::NotStarted);
+}
+
+// The chapters' warnings, as a student writes them: each a plain function in the
+// exercise's shape, which its check must fail with a hint naming the mistake.
+
+/// Lesson 10, step 3's "dropping the square root": r = u.x crowds the disc's centre.
+fn cosine_sample_without_the_square_root(u: Vec2) -> (Vec3, f32) {
+    let (s, c) = (std::f32::consts::TAU * u.y).sin_cos();
+    let r = u.x;
+    let w = Vec3::new(r * c, r * s, (1.0 - r * r).max(0.0).sqrt());
+    (w, w.z / std::f32::consts::PI)
+}
+
+/// Lesson 10, step 3: a pdf that does not match the directions, 1/pi missing.
+fn cosine_sample_pdf_without_pi(u: Vec2) -> (Vec3, f32) {
+    let (s, c) = (std::f32::consts::TAU * u.y).sin_cos();
+    let r = u.x.sqrt();
+    let w = Vec3::new(r * c, r * s, (1.0 - u.x).max(0.0).sqrt());
+    (w, w.z)
+}
+
+/// Lesson 10, step 2's "forgetting the 1/pi of Lambert".
+fn bounce_weight_without_pi(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
+    let cos = n.dot(wi);
+    if cos <= 0.0 || pdf <= 0.0 {
+        return Vec3::ZERO;
+    }
+    albedo * cos / pdf
+}
+
+/// Lesson 10, step 3's "dividing by a zero density": only the cosine guarded.
+fn bounce_weight_dividing_by_zero(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
+    let cos = n.dot(wi);
+    if cos <= 0.0 {
+        return Vec3::ZERO;
+    }
+    albedo / std::f32::consts::PI * cos / pdf
+}
+
+/// The exercise's old text and solution, which lesson 07 warns about: the ends
+/// sorted by comparing them, which a NaN end defeats for d_i = -0 in a face's plane.
+fn slab_ordered_by_comparing(
+    o: Vec3,
+    inv_d: Vec3,
+    min: Vec3,
+    max: Vec3,
+    range: Interval,
+) -> Option<ClosedSpan> {
+    let (mut t0, mut t1) = (range.min, range.max);
+    for i in 0..3 {
+        let mut t_near = (min[i] - o[i]) * inv_d[i];
+        let mut t_far = (max[i] - o[i]) * inv_d[i];
+        if t_near > t_far {
+            std::mem::swap(&mut t_near, &mut t_far);
+        }
+        if t_near > t0 {
+            t0 = t_near;
+        }
+        if t_far < t1 {
+            t1 = t_far;
+        }
+        if t0 > t1 {
+            return None;
+        }
+    }
+    Some(ClosedSpan { t0, t1 })
+}
+
+/// Ordered by the sign of d_i = 1 / inv_d_i, which is -0 for d_i = -0: -0 < 0 is false.
+fn slab_ordered_by_the_sign_of_d(
+    o: Vec3,
+    inv_d: Vec3,
+    min: Vec3,
+    max: Vec3,
+    range: Interval,
+) -> Option<ClosedSpan> {
+    let (mut t0, mut t1) = (range.min, range.max);
+    for i in 0..3 {
+        let (to_min, to_max) = ((min[i] - o[i]) * inv_d[i], (max[i] - o[i]) * inv_d[i]);
+        let (t_near, t_far) = if 1.0 / inv_d[i] < 0.0 {
+            (to_max, to_min)
+        } else {
+            (to_min, to_max)
+        };
+        t0 = t0.max(t_near);
+        t1 = t1.min(t_far);
+        if t0 > t1 {
+            return None;
+        }
+    }
+    Some(ClosedSpan { t0, t1 })
+}
+
+/// Lesson 07's "comparing with NaN": `t0 = if t0 > t_near { t0 } else { t_near }`.
+fn slab_letting_nan_in(
+    o: Vec3,
+    inv_d: Vec3,
+    min: Vec3,
+    max: Vec3,
+    range: Interval,
+) -> Option<ClosedSpan> {
+    let (mut t0, mut t1) = (range.min, range.max);
+    for i in 0..3 {
+        let (to_min, to_max) = ((min[i] - o[i]) * inv_d[i], (max[i] - o[i]) * inv_d[i]);
+        let (t_near, t_far) = if inv_d[i] < 0.0 {
+            (to_max, to_min)
+        } else {
+            (to_min, to_max)
+        };
+        t0 = if t0 > t_near { t0 } else { t_near };
+        t1 = if t1 < t_far { t1 } else { t_far };
+        if t0 > t1 {
+            return None;
+        }
+    }
+    Some(ClosedSpan { t0, t1 })
+}
+
+/// Lesson 11's heuristic weighed by volume, which a flat box does not have.
+fn sah_cost_by_volume(node: &Aabb, left: &Aabb, nl: usize, right: &Aabb, nr: usize) -> f32 {
+    let volume = |b: &Aabb| (b.max() - b.min()).element_product();
+    let weighted = volume(left) * nl as f32 + volume(right) * nr as f32;
+    render_lessons::bvh::build::TRAVERSAL_COST + weighted / volume(node)
+}
+
+#[test]
+fn every_exercise_of_lessons_10_and_11_fails_what_its_chapter_warns_about() {
+    for (outcome, hint) in [
+        (
+            check_cosine_sample(cosine_sample_without_the_square_root),
+            "r = sqrt(u.x)",
+        ),
+        (
+            check_cosine_sample(cosine_sample_pdf_without_pi),
+            "misses 1/pi",
+        ),
+        (check_bounce_weight(bounce_weight_without_pi), "albedo / pi"),
+        (
+            check_bounce_weight(bounce_weight_dividing_by_zero),
+            "density of 0",
+        ),
+        (
+            check_slab(slab_ordered_by_comparing),
+            "Decide by the sign of inv_d_i",
+        ),
+        (check_slab(slab_ordered_by_the_sign_of_d), "-0 < 0 is false"),
+        (
+            check_slab(slab_letting_nan_in),
+            "takes t_near when it is NaN",
+        ),
+        (check_sah_cost(sah_cost_by_volume), "not their volume"),
+    ] {
+        fails_with(outcome, hint);
+    }
 }

@@ -134,6 +134,15 @@ fn compose_checked(f: Box<dyn Fn(&Transform, &Transform) -> Mat4 + Send + Sync>)
                        second.matrix() * first.matrix()",
             },
             Mistake {
+                looks_like: &gives(&|&(first, second): &ComposeArgs| {
+                    Some((second.matrix() * first.matrix()).transpose())
+                }),
+                hint: "that is the transpose of the right matrix (its translation sits in the \
+                       bottom row): glam's Mat4 is stored column by column, so rows written as \
+                       they are printed, or an entry [i][j] filled as [j][i], transpose it. \
+                       Multiply the matrices with glam's *, second.matrix() * first.matrix()",
+            },
+            Mistake {
                 looks_like: &|&(first, second): &ComposeArgs, got: &Mat4| {
                     got.close(&first.matrix()) || got.close(&second.matrix())
                 },

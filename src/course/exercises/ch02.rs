@@ -11,7 +11,9 @@ use crate::ray::Ray;
 /// Coding exercise 2.1: the point r(t) of the ray from `o` along `d` at parameter `t`.
 ///
 /// `d` need not have length 1, but `t` must be the signed distance from `o`
-/// (negative behind it), as for the crate's `Ray`.
+/// (negative behind it), as for the crate's `Ray`. Mind the chapter's last pitfall:
+/// for a direction such as (1e30, 1e30, 0) |d|^2 overflows `f32`, and for
+/// (1e-30, 1e-30, 0) it underflows to 0; `Ray::new` accepts both, and so must you.
 pub fn point_at(o: Vec3, d: Vec3, t: f32) -> Vec3 {
     todo!("Coding exercise 2.1 (chapter 02, The ray): the point at distance t along the ray")
 }

@@ -118,6 +118,21 @@ fn pixel_to_plane_checked(f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>)
                        not height - py",
             },
             Mistake {
+                looks_like: &|&(film, px, py): &PixelArgs, got: &Vec2| {
+                    // Square pixels of the columns' size, counted from the top or from
+                    // the bottom edge.
+                    let ((x_min, x_max), (y_min, y_max)) = (film.x_extent(), film.y_extent());
+                    let size = (x_max - x_min) / film.width() as f32;
+                    let x = (px as f32 + 0.5) * size + x_min;
+                    let from_top = y_max - (py as f32 + 0.5) * size;
+                    let from_bottom = ((film.height() - 1 - py) as f32 + 0.5) * size + y_min;
+                    got.close(&Vec2::new(x, from_top)) || got.close(&Vec2::new(x, from_bottom))
+                },
+                hint: "the rows used the columns' pixel size: a pixel is (x_max - x_min) / width \
+                       wide but (y_max - y_min) / height high, and the two differ when the pixels \
+                       are not square (this film's are not)",
+            },
+            Mistake {
                 looks_like: &gives(&|a: &PixelArgs| {
                     Some(plane_point(a, (a.0.height() - 1 - a.2) as f32, 0.0))
                 }),

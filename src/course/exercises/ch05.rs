@@ -12,9 +12,10 @@ use crate::camera::{Film, Frame};
 /// with up vector `k`.
 ///
 /// Neither `d` nor `k` need have length 1, and `k` need not be perpendicular to `d`
-/// (it is never parallel to it here). The camera looks down its local -Z: the local
-/// direction (0, 0, -1) must become d/|d| in the world. The result must be
-/// orthonormal and right-handed, with v on the same side as k.
+/// (it is never parallel to it here, but once only 1e-5 rad from it: STABILITY S10,
+/// the chapter's step 3). The camera looks down its local -Z: the local direction
+/// (0, 0, -1) must become d/|d| in the world. The result must be orthonormal and
+/// right-handed, with v on the same side as k.
 pub fn camera_basis(d: Vec3, k: Vec3) -> (Vec3, Vec3, Vec3) {
     todo!(
         "Coding exercise 5.1 (chapter 05, An arbitrary orthographic camera): build u, v, w from d and k"

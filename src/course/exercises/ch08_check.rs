@@ -122,6 +122,16 @@ fn closest_checked(
         move |(ray, shapes, range)| f(&ray, &shapes, range),
         &[
             Mistake {
+                looks_like: &|(_, _, range): &ClosestArgs, got: &Option<SceneHit>| {
+                    got.as_ref()
+                        .is_some_and(|found| !(found.hit.t > range.min && found.hit.t < range.max))
+                },
+                hint: "that hit lies outside range: count only range.min < t < range.max. Pass \
+                       range itself to shape.hit (not Interval::AHEAD or a range of your own), \
+                       and shrink its max as you go; a hit at t <= 0 is behind the ray's \
+                       origin, where the camera cannot see",
+            },
+            Mistake {
                 looks_like: &gives(&|(ray, shapes, range): &ClosestArgs| {
                     Some(each_hit(ray, shapes, *range).next())
                 }),

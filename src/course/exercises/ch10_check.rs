@@ -272,6 +272,13 @@ fn bounce_weight_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + S
             v(1.0, 0.0, 0.0),
             0.0,
         ),
+        (
+            "a direction above the surface that the sampler cannot draw: density 0",
+            red,
+            up,
+            slanted,
+            0.0,
+        ),
     ]
     .into_iter()
     .map(|(what, albedo, n, wi, pdf)| {

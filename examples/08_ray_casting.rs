@@ -126,11 +126,15 @@ fn my_pictures(mine: bool) -> LessonResult<Vec<Picture>> {
     }
     if let Some(closest) = mine::if_passing(mine::my_closest())? {
         let draw = move |size| my_shadowless_image(closest, size);
-        pictures.push(Picture::new("08_shadowless_mine.png", draw));
+        pictures.push(Picture::new(
+            "08_shadowless_mine.png",
+            "08_shadowless_pinhole.png",
+            draw,
+        ));
     }
     if let Some(lambert) = mine::if_passing(mine::my_lambert())? {
         let draw = move |size| my_lambert_image(lambert, size);
-        pictures.push(Picture::new("08_lambert_mine.png", draw));
+        pictures.push(Picture::new("08_lambert_mine.png", "08_lambert.png", draw));
     }
     Ok(pictures)
 }

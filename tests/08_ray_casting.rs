@@ -309,6 +309,64 @@ fn mine_draws_the_lambert_image_with_the_given_lambert() {
     assert_eq!(mine, images.lambert);
 }
 
+#[test]
+fn mine_says_a_lambert_that_rounds_otherwise_draws_the_book_but_for_rounding() {
+    // A right formula as students write it, the cosine from `normalize` and d^2 from
+    // `length_squared`: at the book's size it differed from the lesson's image in one
+    // pixel by one level, and `cmp` said the files differ (issue 30).
+    fn normalised(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+        let to_light = light.position - p;
+        let cos = n.dot(to_light.normalize());
+        let direct = if visible && cos > 0.0 {
+            light.intensity * cos / to_light.length_squared()
+        } else {
+            Vec3::ZERO
+        };
+        albedo * (render_lessons::lighting::AMBIENT + direct)
+    }
+    fn no_falloff(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+        normalised(p, n, albedo, light, visible) * (light.position - p).length_squared()
+    }
+    use render_lessons::course::mine::Comparison;
+    let images = lesson::images(BOOK, EPSILON, FAR).unwrap();
+    let book = images.lambert.to_srgb8().unwrap();
+    let compare = |lambert: render_lessons::course::mine::Lambert| {
+        let mine = lesson::my_lambert_image(lambert, BOOK).unwrap();
+        Comparison::of(&mine.to_srgb8().unwrap(), &book)
+    };
+    let right = compare(normalised);
+    assert!(
+        right.levels <= 1 && right.differing * 1000 <= right.pixels,
+        "{right:?}"
+    );
+    let line = right.verdict("08_lambert_mine.png", "08_lambert.png");
+    assert!(
+        line.contains("byte for byte") || line.contains("but for rounding"),
+        "{line}"
+    );
+    let wrong = compare(no_falloff);
+    let line = wrong.verdict("08_lambert_mine.png", "08_lambert.png");
+    assert!(
+        line.starts_with("08_lambert_mine.png is not 08_lambert.png"),
+        "{line}"
+    );
+    // The three verdicts, on made-up bytes: 1000 pixels, one or two of them changed.
+    let same = vec![100u8; 4000];
+    let mut one = same.clone();
+    one[1] = 101;
+    let mut two = one.clone();
+    two[6] = 103;
+    let verdict = |mine: &[u8]| Comparison::of(mine, &same).verdict("m.png", "l.png");
+    assert_eq!(verdict(&same), "m.png is l.png, byte for byte");
+    assert!(
+        verdict(&one)
+            .starts_with("m.png is l.png but for rounding: 1 pixel of 1000 differs by 1 level")
+    );
+    assert!(
+        verdict(&two).starts_with("m.png is not l.png: 2 pixels of 1000 differ, by up to 3 levels")
+    );
+}
+
 #[cfg(not(feature = "exercises"))]
 #[test]
 fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {

@@ -140,7 +140,7 @@ fn my_pictures(mine: bool) -> LessonResult<Vec<Picture>> {
 }
 
 /// The shadowless pinhole image drawn with `closest`, the student's own once it
-/// passes its check (coding exercise 8.1, `src/course/exercises/ch08.rs`).
+/// passes its check (coding exercise 8.3, `src/course/exercises/ch08.rs`).
 pub fn my_shadowless_image(
     closest: mine::Closest,
     (width, height): (u32, u32),
@@ -155,7 +155,7 @@ pub fn my_shadowless_image(
 }
 
 /// The Lambert image drawn with `lambert`, the student's own once it passes its
-/// check (coding exercise 8.2, `src/course/exercises/ch08.rs`).
+/// check (coding exercise 8.7, `src/course/exercises/ch08.rs`).
 pub fn my_lambert_image(
     lambert: mine::Lambert,
     (width, height): (u32, u32),

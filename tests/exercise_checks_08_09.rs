@@ -315,7 +315,7 @@ fn perspective_weights_accepts_the_reference() {
         over.map(|o| (o / sum) as f32)
     };
     assert_eq!(check_perspective_weights(with_w), Outcome::Pass);
-    // The chapter's exercise 4: halfway from w = 1 to w = 4 on the screen, the far
+    // Exercise 9.4: halfway from w = 1 to w = 4 on the screen, the far
     // end weighs 0.2, not 0.5.
     let weights = perspective_weights([0.5, 0.5, 0.0], [1.0, 0.25, 1.0]);
     assert!(weights.close(&[0.8, 0.2, 0.0]), "{weights:?}");

@@ -23,7 +23,7 @@ fn panics_with_its_line(o: Vec3, _: Vec3, _: f32) -> Vec3 {
 #[test]
 fn a_todo_is_not_started_and_a_panic_fails_with_its_message_and_place() {
     assert_eq!(
-        check_pixel_to_plane(|_, _, _| todo!("Coding exercise 3.1")),
+        check_pixel_to_plane(|_, _, _| todo!("Coding exercise 3.5")),
         Outcome::NotStarted
     );
     assert_eq!(check_closest(|_, _, _| todo!()), Outcome::NotStarted);
@@ -206,23 +206,118 @@ fn an_unwrap_of_none_an_index_out_of_bounds_and_a_panic_in_rayon_fail() {
     assert!(start.elapsed() < CASE_TIME_LIMIT, "{:?}", start.elapsed());
 }
 
-#[test]
-fn every_lesson_has_two_exercises_or_more_numbered_in_book_order() {
-    for chapter in 1..=11 {
-        let chapter = format!("{chapter:02}");
-        let numbers: Vec<&str> = ALL
-            .iter()
-            .filter(|e| e.chapter == chapter)
-            .map(|e| e.number)
-            .collect();
-        assert!(numbers.len() >= 2, "chapter {chapter}: {numbers:?}");
-        let first = chapter.trim_start_matches('0');
-        let expected: Vec<String> = (1..=numbers.len())
-            .map(|i| format!("{first}.{i}"))
-            .collect();
-        assert_eq!(numbers, expected, "chapter {chapter}");
+/// One exercise as the book labels it: its page, its number ("7.16", "W.2"), and the
+/// text from its label to the next label or heading.
+struct BookExercise {
+    page: String,
+    number: String,
+    text: String,
+}
+
+/// Every exercise of the book's pages, in the order `SUMMARY.md` lists them: the
+/// labels `**Exercise N.k.**`, `**Exercises N.a and N.b.**` and `## Exercise N.k: ...`.
+fn book_exercises() -> Vec<BookExercise> {
+    let summary = std::fs::read_to_string("chapters/SUMMARY.md").unwrap();
+    let pages = summary
+        .split("](")
+        .skip(1)
+        .filter_map(|rest| rest.split(')').next());
+    let mut found = Vec::new();
+    for page in pages {
+        let text = std::fs::read_to_string(format!("chapters/{page}")).unwrap();
+        let mut open: Vec<usize> = Vec::new();
+        for line in text.lines() {
+            let label = line
+                .strip_prefix("**Exercises ")
+                .or_else(|| line.strip_prefix("**Exercise "))
+                .and_then(|rest| rest.split_once(".**"))
+                .map(|(numbers, _)| numbers)
+                .or_else(|| {
+                    let rest = line.strip_prefix("## Exercise ")?;
+                    Some(rest.split_once(':')?.0)
+                });
+            if let Some(numbers) = label {
+                open.clear();
+                for number in numbers.split(" and ") {
+                    open.push(found.len());
+                    found.push(BookExercise {
+                        page: page.to_string(),
+                        number: number.to_string(),
+                        text: String::new(),
+                    });
+                }
+            } else if line.starts_with('#') {
+                open.clear();
+            }
+            for &i in &open {
+                let exercise: &mut BookExercise = &mut found[i];
+                exercise.text.push_str(line);
+                exercise.text.push('\n');
+            }
+        }
     }
-    assert!(ALL.len() >= 22);
+    found
+}
+
+#[test]
+fn every_exercise_is_numbered_n_k_in_book_order_across_its_lessons_pages() {
+    // One scheme for the whole book: lesson N's exercises, written and coding alike,
+    // are N.1, N.2, ... in the order of its pages, and the pages of "Where methods
+    // fail" number theirs W.1, W.2, ...
+    let exercises = book_exercises();
+    let mut next: std::collections::BTreeMap<String, u32> = Default::default();
+    for e in &exercises {
+        let lesson = match e.page.split_once('_') {
+            Some((n, _)) if n.len() == 2 && n.chars().all(|c| c.is_ascii_digit()) => {
+                n.trim_start_matches('0').to_string()
+            }
+            _ if e.page.starts_with("where_methods_fail") => "W".to_string(),
+            _ => panic!("{}: an exercise outside the lessons: {}", e.page, e.number),
+        };
+        let k = next.entry(lesson.clone()).or_insert(0);
+        *k += 1;
+        assert_eq!(e.number, format!("{lesson}.{k}"), "{}", e.page);
+    }
+    assert!(next.len() >= 12, "{next:?}");
+}
+
+#[test]
+fn every_coding_exercise_has_the_books_number_in_its_check_stub_and_test() {
+    let exercises = book_exercises();
+    let students = std::fs::read_to_string("tests/exercises.rs").unwrap();
+    for e in ALL {
+        // The book: one exercise with the check's number, on the lesson's pages, and
+        // its text asks for the function.
+        let mut holding = exercises.iter().filter(|b| b.number == e.number);
+        let book = holding
+            .next()
+            .unwrap_or_else(|| panic!("{} not in the book", e.number));
+        assert!(holding.next().is_none(), "{} twice in the book", e.number);
+        assert!(
+            book.page.starts_with(e.chapter),
+            "{} on {}",
+            e.number,
+            book.page
+        );
+        assert!(
+            book.text.contains(&format!("`{}(", e.function)),
+            "exercise {} of {} does not ask for `{}`:\n{}",
+            e.number,
+            book.page,
+            e.function,
+            book.text
+        );
+        // The stub's doc comment and the student's test, named after the number.
+        let stub = std::fs::read_to_string(e.file).unwrap();
+        let number = format!("Coding exercise {}:", e.number);
+        assert!(stub.contains(&number), "{number} not in {}", e.file);
+        let test = format!("exercise_{}_{}:", e.number.replace('.', "_"), e.function);
+        let module = format!("ch{} {{", e.chapter);
+        let in_module = students
+            .split_once(&module)
+            .is_some_and(|(_, rest)| rest.split('}').next().unwrap().contains(&test));
+        assert!(in_module, "no test {test} in module ch{}", e.chapter);
+    }
 }
 
 #[test]

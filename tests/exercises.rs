@@ -3,13 +3,13 @@
 //! One test per exercise runs its check on your function in
 //! `src/course/exercises/chNN.rs` and fails, printing the exercise's number, the case,
 //! the expected and the received answer and a hint, unless every case passes. The
-//! tests are named after the lesson and the exercise, `ch03::exercise_3_1_pixel_to_plane`,
+//! tests are named after the lesson and the exercise, `ch03::exercise_3_5_pixel_to_plane`,
 //! so that either selects them:
 //!
 //! ```text
 //! cargo test --features exercises --test exercises                 # all your exercises
 //! cargo test --features exercises --test exercises ch03            # lesson 03's
-//! cargo test --features exercises --test exercises exercise_3_1_   # one exercise
+//! cargo test --features exercises --test exercises exercise_3_5_   # one exercise
 //! cargo test --features exercises --test exercises summary -- --nocapture   # the table
 //! ```
 //!
@@ -43,49 +43,49 @@ macro_rules! exercises {
 
 exercises! {
     ch01 {
-        exercise_1_1_rotation_y: ROTATION_Y, check_rotation_y, rotation_y;
-        exercise_1_2_compose: COMPOSE, check_compose, compose;
+        exercise_1_5_rotation_y: ROTATION_Y, check_rotation_y, rotation_y;
+        exercise_1_6_compose: COMPOSE, check_compose, compose;
     }
     ch02 {
-        exercise_2_1_point_at: POINT_AT, check_point_at, point_at;
-        exercise_2_2_t_closest: T_CLOSEST, check_t_closest, t_closest;
+        exercise_2_5_point_at: POINT_AT, check_point_at, point_at;
+        exercise_2_6_t_closest: T_CLOSEST, check_t_closest, t_closest;
     }
     ch03 {
-        exercise_3_1_pixel_to_plane: PIXEL_TO_PLANE, check_pixel_to_plane, pixel_to_plane;
-        exercise_3_2_plane_to_pixel: PLANE_TO_PIXEL, check_plane_to_pixel, plane_to_pixel;
+        exercise_3_5_pixel_to_plane: PIXEL_TO_PLANE, check_pixel_to_plane, pixel_to_plane;
+        exercise_3_6_plane_to_pixel: PLANE_TO_PIXEL, check_plane_to_pixel, plane_to_pixel;
     }
     ch04 {
-        exercise_4_1_to_world: TO_WORLD, check_to_world, to_world;
-        exercise_4_2_to_local: TO_LOCAL, check_to_local, to_local;
+        exercise_4_5_to_world: TO_WORLD, check_to_world, to_world;
+        exercise_4_6_to_local: TO_LOCAL, check_to_local, to_local;
     }
     ch05 {
-        exercise_5_1_camera_basis: CAMERA_BASIS, check_camera_basis, camera_basis;
-        exercise_5_2_ortho_ray: ORTHO_RAY, check_ortho_ray, ortho_ray;
+        exercise_5_4_camera_basis: CAMERA_BASIS, check_camera_basis, camera_basis;
+        exercise_5_5_ortho_ray: ORTHO_RAY, check_ortho_ray, ortho_ray;
     }
     ch06 {
-        exercise_6_1_pinhole_ray: PINHOLE_RAY, check_pinhole_ray, pinhole_ray;
-        exercise_6_2_project: PROJECT, check_project, project;
+        exercise_6_3_pinhole_ray: PINHOLE_RAY, check_pinhole_ray, pinhole_ray;
+        exercise_6_4_project: PROJECT, check_project, project;
     }
     ch07 {
-        exercise_7_1_ray_plane_t: RAY_PLANE_T, check_ray_plane_t, ray_plane_t;
-        exercise_7_2_ray_sphere_roots: RAY_SPHERE_ROOTS, check_ray_sphere_roots, ray_sphere_roots;
-        exercise_7_3_moller_trumbore: MOLLER_TRUMBORE, check_moller_trumbore, moller_trumbore;
+        exercise_7_16_ray_plane_t: RAY_PLANE_T, check_ray_plane_t, ray_plane_t;
+        exercise_7_17_ray_sphere_roots: RAY_SPHERE_ROOTS, check_ray_sphere_roots, ray_sphere_roots;
+        exercise_7_18_moller_trumbore: MOLLER_TRUMBORE, check_moller_trumbore, moller_trumbore;
     }
     ch08 {
-        exercise_8_1_closest: CLOSEST, check_closest, closest;
-        exercise_8_2_lambert: LAMBERT, check_lambert, lambert;
+        exercise_8_3_closest: CLOSEST, check_closest, closest;
+        exercise_8_7_lambert: LAMBERT, check_lambert, lambert;
     }
     ch09 {
-        exercise_9_1_covers: COVERS, check_covers, covers;
-        exercise_9_2_perspective_weights: PERSPECTIVE_WEIGHTS, check_perspective_weights, perspective_weights;
+        exercise_9_6_covers: COVERS, check_covers, covers;
+        exercise_9_7_perspective_weights: PERSPECTIVE_WEIGHTS, check_perspective_weights, perspective_weights;
     }
     ch10 {
-        exercise_10_1_cosine_sample: COSINE_SAMPLE, check_cosine_sample, cosine_sample;
-        exercise_10_2_bounce_weight: BOUNCE_WEIGHT, check_bounce_weight, bounce_weight;
+        exercise_10_11_cosine_sample: COSINE_SAMPLE, check_cosine_sample, cosine_sample;
+        exercise_10_12_bounce_weight: BOUNCE_WEIGHT, check_bounce_weight, bounce_weight;
     }
     ch11 {
-        exercise_11_1_slab: SLAB, check_slab, slab;
-        exercise_11_2_sah_cost: SAH_COST, check_sah_cost, sah_cost;
+        exercise_11_4_slab: SLAB, check_slab, slab;
+        exercise_11_6_sah_cost: SAH_COST, check_sah_cost, sah_cost;
     }
 }
 

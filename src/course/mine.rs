@@ -23,22 +23,22 @@ use crate::shapes::Shape;
 use crate::spawn::{Offset, Start};
 use crate::transform::Transform;
 
-/// The signature of coding exercise 1.2, `compose(first, second)`.
+/// The signature of coding exercise 1.6, `compose(first, second)`.
 pub type Compose = fn(&Transform, &Transform) -> Mat4;
 
-/// The signature of coding exercise 3.1, `pixel_to_plane(film, px, py)`.
+/// The signature of coding exercise 3.5, `pixel_to_plane(film, px, py)`.
 pub type PixelToPlane = fn(&Film, u32, u32) -> Vec2;
 
-/// The signature of coding exercise 6.1, `pinhole_ray(film, s, frame, px, py)`.
+/// The signature of coding exercise 6.3, `pinhole_ray(film, s, frame, px, py)`.
 pub type PinholeRay = fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3);
 
-/// The signature of coding exercise 8.1, `closest(ray, shapes, range)`.
+/// The signature of coding exercise 8.3, `closest(ray, shapes, range)`.
 pub type Closest = fn(&Ray, &[Shape], Interval) -> Option<SceneHit>;
 
-/// The signature of coding exercise 8.2, `lambert(p, n, albedo, light, visible)`.
+/// The signature of coding exercise 8.7, `lambert(p, n, albedo, light, visible)`.
 pub type Lambert = fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3;
 
-/// The student's `compose` for lesson 01's `--mine` (coding exercise 1.2).
+/// The student's `compose` for lesson 01's `--mine` (coding exercise 1.6).
 pub fn my_compose() -> LessonResult<Compose> {
     #[cfg(feature = "exercises")]
     {
@@ -55,7 +55,7 @@ pub fn my_compose() -> LessonResult<Compose> {
     ))
 }
 
-/// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.1).
+/// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.5).
 pub fn my_pixel_to_plane() -> LessonResult<PixelToPlane> {
     #[cfg(feature = "exercises")]
     {
@@ -72,7 +72,7 @@ pub fn my_pixel_to_plane() -> LessonResult<PixelToPlane> {
     ))
 }
 
-/// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.1).
+/// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.3).
 pub fn my_pinhole_ray() -> LessonResult<PinholeRay> {
     #[cfg(feature = "exercises")]
     {
@@ -89,7 +89,7 @@ pub fn my_pinhole_ray() -> LessonResult<PinholeRay> {
     ))
 }
 
-/// The student's `closest` for lesson 08's `--mine` (coding exercise 8.1).
+/// The student's `closest` for lesson 08's `--mine` (coding exercise 8.3).
 pub fn my_closest() -> LessonResult<Closest> {
     #[cfg(feature = "exercises")]
     {
@@ -106,7 +106,7 @@ pub fn my_closest() -> LessonResult<Closest> {
     ))
 }
 
-/// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.2).
+/// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.7).
 pub fn my_lambert() -> LessonResult<Lambert> {
     #[cfg(feature = "exercises")]
     {

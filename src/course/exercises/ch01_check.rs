@@ -7,17 +7,17 @@ use glam::Mat4;
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 use crate::transform::Transform;
 
-/// Coding exercise 1.1.
+/// Coding exercise 1.5.
 pub const ROTATION_Y: Exercise = Exercise {
-    number: "1.1",
+    number: "1.5",
     chapter: "01",
     chapter_title: "Geometric transformations",
     function: "rotation_y",
     file: "src/course/exercises/ch01.rs",
 };
-/// Coding exercise 1.2.
+/// Coding exercise 1.6.
 pub const COMPOSE: Exercise = Exercise {
-    number: "1.2",
+    number: "1.6",
     chapter: "01",
     chapter_title: "Geometric transformations",
     function: "compose",
@@ -58,7 +58,7 @@ fn rotation_y_checked(f: Box<dyn Fn(f32) -> Mat4 + Send + Sync>) -> Outcome {
 }
 
 // ANCHOR: compose
-/// A worked solution of exercise 1.2: the first transformation stands on the right,
+/// A worked solution of exercise 1.6: the first transformation stands on the right,
 /// next to the point it acts on first.
 pub fn compose_solution(first: &Transform, second: &Transform) -> Mat4 {
     second.matrix() * first.matrix()

@@ -7,17 +7,17 @@ use glam::Vec3;
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::ray::Ray;
 
-/// Coding exercise 2.1.
+/// Coding exercise 2.5.
 pub const POINT_AT: Exercise = Exercise {
-    number: "2.1",
+    number: "2.5",
     chapter: "02",
     chapter_title: "The ray",
     function: "point_at",
     file: "src/course/exercises/ch02.rs",
 };
-/// Coding exercise 2.2.
+/// Coding exercise 2.6.
 pub const T_CLOSEST: Exercise = Exercise {
-    number: "2.2",
+    number: "2.6",
     chapter: "02",
     chapter_title: "The ray",
     function: "t_closest",

@@ -7,17 +7,17 @@ use glam::Vec3;
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, run_compared, v};
 use crate::camera::{Film, Frame, OrthoCamera, camera_basis};
 
-/// Coding exercise 5.1.
+/// Coding exercise 5.4.
 pub const CAMERA_BASIS: Exercise = Exercise {
-    number: "5.1",
+    number: "5.4",
     chapter: "05",
     chapter_title: "An arbitrary orthographic camera",
     function: "camera_basis",
     file: "src/course/exercises/ch05.rs",
 };
-/// Coding exercise 5.2.
+/// Coding exercise 5.5.
 pub const ORTHO_RAY: Exercise = Exercise {
-    number: "5.2",
+    number: "5.5",
     chapter: "05",
     chapter_title: "An arbitrary orthographic camera",
     function: "ortho_ray",
@@ -157,7 +157,7 @@ fn camera_basis_checked(f: Box<dyn Fn(Vec3, Vec3) -> Uvw + Send + Sync>) -> Outc
 }
 
 // ANCHOR: ortho_ray
-/// A worked solution of exercise 5.2: the origin is a point, turned by B and moved
+/// A worked solution of exercise 5.5: the origin is a point, turned by B and moved
 /// to p; the direction is an arrow, only turned.
 pub fn ortho_ray_solution(film: &Film, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
     let origin = film.pixel_to_plane(px, py).extend(0.0);

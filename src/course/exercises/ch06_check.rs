@@ -7,17 +7,17 @@ use glam::{Vec2, Vec3};
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::camera::{Film, Frame, PinholeCamera};
 
-/// Coding exercise 6.1.
+/// Coding exercise 6.3.
 pub const PINHOLE_RAY: Exercise = Exercise {
-    number: "6.1",
+    number: "6.3",
     chapter: "06",
     chapter_title: "The pinhole camera",
     function: "pinhole_ray",
     file: "src/course/exercises/ch06.rs",
 };
-/// Coding exercise 6.2.
+/// Coding exercise 6.4.
 pub const PROJECT: Exercise = Exercise {
-    number: "6.2",
+    number: "6.4",
     chapter: "06",
     chapter_title: "The pinhole camera",
     function: "project",

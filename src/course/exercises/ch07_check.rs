@@ -8,25 +8,25 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Plane, Sphere, Triangle};
 
-/// Coding exercise 7.1.
+/// Coding exercise 7.16.
 pub const RAY_PLANE_T: Exercise = Exercise {
-    number: "7.1",
+    number: "7.16",
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_plane_t",
     file: "src/course/exercises/ch07.rs",
 };
-/// Coding exercise 7.2.
+/// Coding exercise 7.17.
 pub const RAY_SPHERE_ROOTS: Exercise = Exercise {
-    number: "7.2",
+    number: "7.17",
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_sphere_roots",
     file: "src/course/exercises/ch07.rs",
 };
-/// Coding exercise 7.3.
+/// Coding exercise 7.18.
 pub const MOLLER_TRUMBORE: Exercise = Exercise {
-    number: "7.3",
+    number: "7.18",
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "moller_trumbore",

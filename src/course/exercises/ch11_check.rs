@@ -9,9 +9,9 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, run, v};
 use crate::ray::{ClosedSpan, Interval, Ray};
 use crate::shapes::Aabb;
 
-/// Coding exercise 11.1.
+/// Coding exercise 11.4.
 pub const SLAB: Exercise = Exercise {
-    number: "11.1",
+    number: "11.4",
     chapter: "11",
     chapter_title: "Speed against accuracy",
     function: "slab",
@@ -33,7 +33,7 @@ struct SlabArgs {
 type SlabAnswer = Option<ClosedSpan>;
 
 // ANCHOR: solution
-/// A worked solution of exercise 11.1, written as the exercise asks (the book shows
+/// A worked solution of exercise 11.4, written as the exercise asks (the book shows
 /// it). The crate's own [`Aabb::slab`] computes `1 / d` itself, once per call.
 pub fn slab_solution(
     o: Vec3,

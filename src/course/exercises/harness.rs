@@ -139,7 +139,9 @@ impl fmt::Display for Outcome {
 /// One coding exercise: where the student writes it and what it is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Exercise {
-    /// "3.1": chapter 3, first coding exercise.
+    /// "3.5": lesson 03's fifth exercise. Every exercise of a lesson, written or
+    /// coding, is numbered N.k in book order across the lesson's pages, and the check's
+    /// number is the book's (`tests/exercise_harness.rs` holds them to it).
     pub number: &'static str,
     /// The chapter's number, "03".
     pub chapter: &'static str,

@@ -115,7 +115,7 @@ pub fn order_figure(degrees: f32) -> Result<Diagram> {
 }
 
 /// The figure drawn with `compose`, the student's own once it passes its check
-/// (coding exercise 1.2, `src/course/exercises/ch01.rs`): the same two orders, each
+/// (coding exercise 1.6, `src/course/exercises/ch01.rs`): the same two orders, each
 /// composed by it.
 pub fn my_order_figure(degrees: f32, compose: mine::Compose) -> Result<Diagram> {
     let rotate = Transform::rotation_z(degrees.to_radians());
@@ -167,7 +167,7 @@ pub struct Args {
     /// The point (and vector) to transform, as x,y,z.
     #[arg(long, default_value = "1,2,3", value_parser = parsers::vec3)]
     pub point: Vec3,
-    /// Also draw the figure with your own `compose` (coding exercise 1.2):
+    /// Also draw the figure with your own `compose` (coding exercise 1.6):
     /// `cargo run --features exercises --example 01_transforms -- --mine`.
     #[arg(long)]
     pub mine: bool,

@@ -129,7 +129,7 @@ pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Resul
 // ANCHOR_END: origin_image
 
 /// The origin image drawn with `pixel_to_plane`, the student's own once it passes
-/// its check (coding exercise 3.1, `src/course/exercises/ch03.rs`).
+/// its check (coding exercise 3.5, `src/course/exercises/ch03.rs`).
 pub fn my_origin_image(film: &Film, pixel_to_plane: mine::PixelToPlane) -> Result<Framebuffer> {
     colour_by_origin(film, |x, y| pixel_to_plane(film, x, y))
 }
@@ -157,7 +157,7 @@ pub struct Args {
     /// Top edge of the projection plane.
     #[arg(long, default_value = "6", value_parser = parsers::finite)]
     pub y_max: f32,
-    /// Also draw the origin image with your own `pixel_to_plane` (coding exercise 3.1):
+    /// Also draw the origin image with your own `pixel_to_plane` (coding exercise 3.5):
     /// `cargo run --features exercises --example 03_ortho_camera -- --mine`.
     #[arg(long)]
     pub mine: bool,

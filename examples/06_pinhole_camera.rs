@@ -150,7 +150,7 @@ pub fn side_by_side(cameras: &[Camera; 2]) -> Result<Framebuffer> {
 // ANCHOR_END: side_by_side
 
 /// The pinhole half of the comparison drawn with `pinhole_ray`, the student's own
-/// once it passes its check (coding exercise 6.1, `src/course/exercises/ch06.rs`).
+/// once it passes its check (coding exercise 6.3, `src/course/exercises/ch06.rs`).
 pub fn my_pinhole_view(
     frame: Frame,
     width: u32,
@@ -184,7 +184,7 @@ pub struct Args {
     /// Width in pixels of each of the two views of the floor grid.
     #[arg(long, default_value_t = 320, value_parser = parsers::pixels(MAX_RESOLUTION / 2))]
     pub view_width: u32,
-    /// Also draw the pinhole view with your own `pinhole_ray` (coding exercise 6.1):
+    /// Also draw the pinhole view with your own `pinhole_ray` (coding exercise 6.3):
     /// `cargo run --features exercises --example 06_pinhole_camera -- --mine`.
     #[arg(long)]
     pub mine: bool,

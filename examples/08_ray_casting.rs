@@ -126,17 +126,21 @@ fn my_pictures(mine: bool) -> LessonResult<Vec<Picture>> {
     }
     if let Some(closest) = mine::if_passing(mine::my_closest())? {
         let draw = move |size| my_shadowless_image(closest, size);
-        pictures.push(Picture::new("08_shadowless_mine.png", draw));
+        pictures.push(Picture::new(
+            "08_shadowless_mine.png",
+            "08_shadowless_pinhole.png",
+            draw,
+        ));
     }
     if let Some(lambert) = mine::if_passing(mine::my_lambert())? {
         let draw = move |size| my_lambert_image(lambert, size);
-        pictures.push(Picture::new("08_lambert_mine.png", draw));
+        pictures.push(Picture::new("08_lambert_mine.png", "08_lambert.png", draw));
     }
     Ok(pictures)
 }
 
 /// The shadowless pinhole image drawn with `closest`, the student's own once it
-/// passes its check (coding exercise 8.1, `src/course/exercises/ch08.rs`).
+/// passes its check (coding exercise 8.3, `src/course/exercises/ch08.rs`).
 pub fn my_shadowless_image(
     closest: mine::Closest,
     (width, height): (u32, u32),
@@ -151,7 +155,7 @@ pub fn my_shadowless_image(
 }
 
 /// The Lambert image drawn with `lambert`, the student's own once it passes its
-/// check (coding exercise 8.2, `src/course/exercises/ch08.rs`).
+/// check (coding exercise 8.7, `src/course/exercises/ch08.rs`).
 pub fn my_lambert_image(
     lambert: mine::Lambert,
     (width, height): (u32, u32),

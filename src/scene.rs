@@ -103,7 +103,7 @@ impl Object {
 /// use render_lessons::shapes::Sphere;
 ///
 /// let ball = Sphere::new(Vec3::new(0.0, 0.0, -5.0), 1.0)?;
-/// let scene = Scene::new(vec![Object::diffuse(ball.into(), Vec3::ONE)], Vec3::ZERO)?;
+/// let scene = Scene::new(vec![Object::diffuse(ball, Vec3::ONE)], Vec3::ZERO)?;
 /// let ray = Ray::new(Vec3::ZERO, Vec3::NEG_Z)?;
 /// let found = scene.closest(&ray, Interval::AHEAD).expect("the ray meets the ball");
 /// assert_eq!((found.object, found.hit.t), (0, 4.0));

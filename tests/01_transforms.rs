@@ -221,7 +221,7 @@ fn lesson_01_worked_numbers() {
 
 #[test]
 fn mine_draws_the_order_figure_with_the_given_compose() {
-    // The crate's composition, in the shape of exercise 1.2, draws the lesson's figure.
+    // The crate's composition, in the shape of exercise 1.6, draws the lesson's figure.
     fn reference(first: &Transform, second: &Transform) -> Mat4 {
         first.then(*second).matrix()
     }

@@ -175,7 +175,7 @@ fn lesson_03_worked_numbers() {
 
 #[test]
 fn mine_draws_the_origin_image_with_the_given_pixel_to_plane() {
-    // The crate's formula, in the shape of exercise 3.1, draws the lesson's image.
+    // The crate's formula, in the shape of exercise 3.5, draws the lesson's image.
     fn reference(film: &Film, px: u32, py: u32) -> Vec2 {
         film.pixel_to_plane(px, py)
     }

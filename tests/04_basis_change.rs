@@ -179,7 +179,7 @@ fn lesson_04_worked_numbers() {
         show(basis.to_world(Vec3::new(2.0, 1.0, 0.0)), 4),
         "1.2321 1.8660"
     );
-    // Exercise 2: a = (3, 4, 0) has b = (4.598, 1.964, 0), of length 5.
+    // Exercise 4.6: a = (3, 4, 0) has b = (4.598, 1.964, 0), of length 5.
     let b = basis.to_local(Vec3::new(3.0, 4.0, 0.0));
     assert_eq!(show(b, 3), "4.598 1.964");
     assert!((b.length() - 5.0).abs() < 1e-5);
@@ -187,7 +187,7 @@ fn lesson_04_worked_numbers() {
     // three decimals, not the basis, lose the last digit.
     let typed = basis.to_world(Vec3::new(4.598, 1.964, 0.0));
     assert_eq!(show(typed, 4), "3.0000 3.9999");
-    // Exercise 3: the 45° basis, b = (1, 1, 0) gives a = (0, 1.4142, 0).
+    // Exercise 4.3: the 45° basis, b = (1, 1, 0) gives a = (0, 1.4142, 0).
     let q = 45f32.to_radians();
     let turned = Basis::new(
         Vec3::new(q.cos(), q.sin(), 0.0),
@@ -199,12 +199,12 @@ fn lesson_04_worked_numbers() {
         show(turned.to_world(Vec3::new(1.0, 1.0, 0.0)), 4),
         "0.0000 1.4142"
     );
-    // Exercise 4: the lesson at `--angle 45 --b 1,1,0` prints |B^T a - b|, "about
+    // Exercise 4.4: the lesson at `--angle 45 --b 1,1,0` prints |B^T a - b|, "about
     // 8e-8" on the page, from the same basis the lesson makes.
     let b = Vec3::new(1.0, 1.0, 0.0);
     let basis = lesson::turned_basis(45.0).unwrap();
     let error = (basis.to_local(basis.to_world(b)) - b).length();
-    eprintln!("exercise 4: |B^T a - b| = {error:e}");
+    eprintln!("exercise 4.4: |B^T a - b| = {error:e}");
     assert_eq!(format!("{error:.0e}"), "8e-8");
     let numbers = lesson::numbers(45.0, b).unwrap();
     assert!(numbers.contains(&format!("{error:.1e}")), "{numbers}");

@@ -214,7 +214,7 @@ fn lesson_06_worked_numbers() {
 
 #[test]
 fn mine_draws_the_pinhole_view_with_the_given_pinhole_ray() {
-    // The crate's pinhole ray, in the shape of exercise 6.1, draws the right half of
+    // The crate's pinhole ray, in the shape of exercise 6.3, draws the right half of
     // the lesson's comparison, bit for bit.
     fn reference(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
         let ray = PinholeCamera::new(*film, s, *frame).unwrap().ray(px, py);

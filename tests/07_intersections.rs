@@ -1050,7 +1050,7 @@ fn lesson_07_worked_numbers() {
         format!("{b1:.4} {b2:.4} {t:.3} {:.3}", 3.0 / d.x),
         "0.6000 0.2000 3.015 3.015"
     );
-    // Triangle exercise 2: b1 = 0.75 and b2 = 0.5 sum to 1.25.
+    // Exercise 7.10, on the triangle: b1 = 0.75 and b2 = 0.5 sum to 1.25.
     assert_eq!(0.75 + 0.5, 1.25);
     // The paraboloid's gradient (2x, 2y, -1) at x = -1.618.
     let x = -(1.0 + 5f64.sqrt()) / 2.0;
@@ -1081,7 +1081,7 @@ fn lesson_07_worked_numbers() {
     // ... and the hit distance inherits about eps R = 2^-24 1e5, sixty times 1e-4.
     let eps_r = f64::from(f32::EPSILON) / 2.0 * 1e5;
     assert_eq!(format!("{eps_r:.0e} {:.0}", eps_r / 1e-4), "6e-3 60");
-    // Exercise 7.2's far case, as its check builds it: a unit sphere 1e4 away along
+    // Exercise 7.17's far case, as its check builds it: a unit sphere 1e4 away along
     // (0.3, 0.2, -1), the ray aimed at its centre. The roots are 9999 and 10001; the
     // school formula in f32 rounds b^2 - 4ac to 0 and gives a double root at 10000.001.
     let aim = Vec3::new(0.3, 0.2, -1.0).normalize();

@@ -282,7 +282,7 @@ fn a_point_in_shadow_gets_only_the_ambient_share() {
 
 #[test]
 fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
-    // The crate's own closest-hit loop, in the shape of exercise 8.1, must draw
+    // The crate's own closest-hit loop, in the shape of exercise 8.3, must draw
     // exactly the lesson's shadowless pinhole image.
     fn reference(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
         let objects = shapes
@@ -299,7 +299,7 @@ fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
 
 #[test]
 fn mine_draws_the_lambert_image_with_the_given_lambert() {
-    // The crate's Lambert formula, in the shape of exercise 8.2, must draw exactly the
+    // The crate's Lambert formula, in the shape of exercise 8.7, must draw exactly the
     // lesson's Lambert image (shadow rays and all).
     fn reference(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
         render_lessons::lighting::lambert(p, n, albedo, light, || visible)
@@ -307,6 +307,64 @@ fn mine_draws_the_lambert_image_with_the_given_lambert() {
     let mine = lesson::my_lambert_image(reference, SMALL).unwrap();
     let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
     assert_eq!(mine, images.lambert);
+}
+
+#[test]
+fn mine_says_a_lambert_that_rounds_otherwise_draws_the_book_but_for_rounding() {
+    // A right formula as students write it, the cosine from `normalize` and d^2 from
+    // `length_squared`: at the book's size it differed from the lesson's image in one
+    // pixel by one level, and `cmp` said the files differ (issue 30).
+    fn normalised(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+        let to_light = light.position - p;
+        let cos = n.dot(to_light.normalize());
+        let direct = if visible && cos > 0.0 {
+            light.intensity * cos / to_light.length_squared()
+        } else {
+            Vec3::ZERO
+        };
+        albedo * (render_lessons::lighting::AMBIENT + direct)
+    }
+    fn no_falloff(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+        normalised(p, n, albedo, light, visible) * (light.position - p).length_squared()
+    }
+    use render_lessons::course::mine::Comparison;
+    let images = lesson::images(BOOK, EPSILON, FAR).unwrap();
+    let book = images.lambert.to_srgb8().unwrap();
+    let compare = |lambert: render_lessons::course::mine::Lambert| {
+        let mine = lesson::my_lambert_image(lambert, BOOK).unwrap();
+        Comparison::of(&mine.to_srgb8().unwrap(), &book)
+    };
+    let right = compare(normalised);
+    assert!(
+        right.levels <= 1 && right.differing * 1000 <= right.pixels,
+        "{right:?}"
+    );
+    let line = right.verdict("08_lambert_mine.png", "08_lambert.png");
+    assert!(
+        line.contains("byte for byte") || line.contains("but for rounding"),
+        "{line}"
+    );
+    let wrong = compare(no_falloff);
+    let line = wrong.verdict("08_lambert_mine.png", "08_lambert.png");
+    assert!(
+        line.starts_with("08_lambert_mine.png is not 08_lambert.png"),
+        "{line}"
+    );
+    // The three verdicts, on made-up bytes: 1000 pixels, one or two of them changed.
+    let same = vec![100u8; 4000];
+    let mut one = same.clone();
+    one[1] = 101;
+    let mut two = one.clone();
+    two[6] = 103;
+    let verdict = |mine: &[u8]| Comparison::of(mine, &same).verdict("m.png", "l.png");
+    assert_eq!(verdict(&same), "m.png is l.png, byte for byte");
+    assert!(
+        verdict(&one)
+            .starts_with("m.png is l.png but for rounding: 1 pixel of 1000 differs by 1 level")
+    );
+    assert!(
+        verdict(&two).starts_with("m.png is not l.png: 2 pixels of 1000 differ, by up to 3 levels")
+    );
 }
 
 #[cfg(not(feature = "exercises"))]
@@ -334,11 +392,11 @@ fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
 
 /// The numbers `08_ray_casting.md` and `08_1_light_and_shadows.md` work out by hand,
 /// and the acne counts the second quotes from runs with other flags.
-/// Exercise 2 of the page on light and shadows: the far comparison at `--far
+/// Exercise 8.5, on the page on light and shadows: the far comparison at `--far
 /// 1000,0,0` and at `--far 0,0,0`, pixels of the lit image that differ by more than
 /// two levels from the image at the origin, fixed epsilon and scaled offset.
 #[test]
-fn exercise_2_far_comparisons_count_the_pages_pixels() {
+fn exercise_8_5_far_comparisons_count_the_pages_pixels() {
     let page = std::fs::read_to_string("chapters/08_1_light_and_shadows.md").unwrap();
     let total = f64::from(BOOK.0 * BOOK.1);
     for (far, quoted) in [
@@ -374,7 +432,7 @@ fn lesson_08_worked_numbers() {
     assert_eq!(BOOK.0 * BOOK.1, 129_600);
     // The float spacing at 1e6 (where_methods_fail_offsets.md): 2^(19 - 23).
     assert_eq!(2f64.powi(19 - 23), 0.0625);
-    // ... and at 1e3 (exercise 8.2's answer): 2^(9 - 23), close to 1e-4.
+    // ... and at 1e3 (exercise 8.5's answer): 2^(9 - 23), close to 1e-4.
     assert_eq!(format!("{:.0e}", 2f64.powi(9 - 23)), "6e-5");
     // The S13 sphere of lesson 08 sits at (X, X/2, X/4): 1.15e4 from the origin at 1e4.
     assert_eq!(
@@ -397,7 +455,7 @@ fn lesson_08_worked_numbers() {
     );
     let direct = 0.8645 - 0.1;
     assert_eq!(format!("{direct:.4}"), "0.7645");
-    // Exercise 3: twice the distance, a quarter of the direct term.
+    // Exercise 8.6: twice the distance, a quarter of the direct term.
     let farther = 0.7645 / 4.0;
     let pixel = (0.1 + farther) * Vec3::new(0.85, 0.2, 0.15);
     assert_eq!(

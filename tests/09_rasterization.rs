@@ -880,7 +880,7 @@ fn lesson_09_worked_numbers() {
     assert_eq!(format!("{:.4} {:.3}", z(5.0), depth(5.0)), "0.8182 0.909");
     assert_eq!(format!("{:.0}", 100.0 * depth(5.0)), "91");
     assert!(depth(0.5).abs() < 1e-12 && (depth(50.0) - 1.0).abs() < 1e-12);
-    // Exercise 2: film [-1.6, 1.6] x [-0.9, 0.9] at s = 1.5, 16 x 9 pixels, the
+    // Exercise 9.7: film [-1.6, 1.6] x [-0.9, 0.9] at s = 1.5, 16 x 9 pixels, the
     // point (0.8, 0.45, -3).
     let s = 1.5;
     let (xs, ys) = (s * 0.8 / 3.0, s * 0.45 / 3.0);

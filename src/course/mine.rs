@@ -23,22 +23,22 @@ use crate::shapes::Shape;
 use crate::spawn::{Offset, Start};
 use crate::transform::Transform;
 
-/// The signature of coding exercise 1.2, `compose(first, second)`.
+/// The signature of coding exercise 1.6, `compose(first, second)`.
 pub type Compose = fn(&Transform, &Transform) -> Mat4;
 
-/// The signature of coding exercise 3.1, `pixel_to_plane(film, px, py)`.
+/// The signature of coding exercise 3.5, `pixel_to_plane(film, px, py)`.
 pub type PixelToPlane = fn(&Film, u32, u32) -> Vec2;
 
-/// The signature of coding exercise 6.1, `pinhole_ray(film, s, frame, px, py)`.
+/// The signature of coding exercise 6.3, `pinhole_ray(film, s, frame, px, py)`.
 pub type PinholeRay = fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3);
 
-/// The signature of coding exercise 8.1, `closest(ray, shapes, range)`.
+/// The signature of coding exercise 8.3, `closest(ray, shapes, range)`.
 pub type Closest = fn(&Ray, &[Shape], Interval) -> Option<SceneHit>;
 
-/// The signature of coding exercise 8.2, `lambert(p, n, albedo, light, visible)`.
+/// The signature of coding exercise 8.7, `lambert(p, n, albedo, light, visible)`.
 pub type Lambert = fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3;
 
-/// The student's `compose` for lesson 01's `--mine` (coding exercise 1.2).
+/// The student's `compose` for lesson 01's `--mine` (coding exercise 1.6).
 pub fn my_compose() -> LessonResult<Compose> {
     #[cfg(feature = "exercises")]
     {
@@ -55,7 +55,7 @@ pub fn my_compose() -> LessonResult<Compose> {
     ))
 }
 
-/// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.1).
+/// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.5).
 pub fn my_pixel_to_plane() -> LessonResult<PixelToPlane> {
     #[cfg(feature = "exercises")]
     {
@@ -72,7 +72,7 @@ pub fn my_pixel_to_plane() -> LessonResult<PixelToPlane> {
     ))
 }
 
-/// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.1).
+/// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.3).
 pub fn my_pinhole_ray() -> LessonResult<PinholeRay> {
     #[cfg(feature = "exercises")]
     {
@@ -89,7 +89,7 @@ pub fn my_pinhole_ray() -> LessonResult<PinholeRay> {
     ))
 }
 
-/// The student's `closest` for lesson 08's `--mine` (coding exercise 8.1).
+/// The student's `closest` for lesson 08's `--mine` (coding exercise 8.3).
 pub fn my_closest() -> LessonResult<Closest> {
     #[cfg(feature = "exercises")]
     {
@@ -106,7 +106,7 @@ pub fn my_closest() -> LessonResult<Closest> {
     ))
 }
 
-/// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.2).
+/// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.7).
 pub fn my_lambert() -> LessonResult<Lambert> {
     #[cfg(feature = "exercises")]
     {
@@ -180,26 +180,107 @@ fn feature_off(exercise: Exercise, command: &str) -> Failure {
     }
 }
 
-/// A `--mine` picture of a lesson that renders images: its file name, and how it is
-/// drawn at the lesson's image size with the student's function (which `draw`
-/// holds). [`crate::course::lesson::ImageFlags::run_with_mine`] draws and saves it
-/// after the lesson's own images.
+/// A `--mine` picture of a lesson that renders images: its file name, the lesson's
+/// picture it should equal, and how it is drawn at the lesson's image size with the
+/// student's function (which `draw` holds).
+/// [`crate::course::lesson::ImageFlags::run_with_mine`] draws and saves it after the
+/// lesson's own images, and says how it compares with the lesson's ([`compared`]).
 pub struct Picture {
     /// The file name, `NN_..._mine.png`.
     pub file: &'static str,
+    /// The file name of the lesson's own picture, which a right answer redraws.
+    pub like: &'static str,
     /// Draws the picture at `(width, height)` pixels.
     pub draw: Box<dyn Fn((u32, u32)) -> Result<Framebuffer> + Send + Sync>,
 }
 
 impl Picture {
-    /// The picture `file`, drawn by `draw`.
+    /// The picture `file`, drawn by `draw`, to be compared with the lesson's `like`.
     pub fn new(
         file: &'static str,
+        like: &'static str,
         draw: impl Fn((u32, u32)) -> Result<Framebuffer> + Send + Sync + 'static,
     ) -> Picture {
         Picture {
             file,
+            like,
             draw: Box::new(draw),
         }
     }
+}
+
+/// How a `--mine` picture differs from the lesson's: pixels compared as the 8-bit
+/// RGBA bytes the PNG files hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Comparison {
+    /// The pixels of the picture.
+    pub pixels: usize,
+    /// The pixels that differ in any channel.
+    pub differing: usize,
+    /// The largest difference of one channel, in levels of 255.
+    pub levels: u8,
+}
+
+impl Comparison {
+    /// The comparison of two pictures' RGBA bytes (of the same size).
+    pub fn of(mine: &[u8], lesson: &[u8]) -> Comparison {
+        let mut comparison = Comparison {
+            pixels: mine.len() / 4,
+            differing: 0,
+            levels: 0,
+        };
+        for (a, b) in mine.chunks(4).zip(lesson.chunks(4)) {
+            let levels = a.iter().zip(b).map(|(x, y)| x.abs_diff(*y)).max();
+            if let Some(levels @ 1..) = levels {
+                comparison.differing += 1;
+                comparison.levels = comparison.levels.max(levels);
+            }
+        }
+        comparison
+    }
+
+    /// One line for the student: the same picture; or the same but for rounding (one
+    /// level of 255, in at most one pixel in a thousand: a right formula that does
+    /// its arithmetic in another order than the crate's, which a byte-for-byte
+    /// comparison such as `cmp` reports as different); or another picture.
+    pub fn verdict(&self, mine: &str, lesson: &str) -> String {
+        let Comparison {
+            pixels,
+            differing,
+            levels,
+        } = *self;
+        let (pixel_s, differ) = if differing == 1 {
+            ("pixel", "differs")
+        } else {
+            ("pixels", "differ")
+        };
+        if differing == 0 {
+            format!("{mine} is {lesson}, byte for byte")
+        } else if levels <= 1 && differing * 1000 <= pixels {
+            format!(
+                "{mine} is {lesson} but for rounding: {differing} {pixel_s} of {pixels} {differ} \
+                 by 1 level of 255, as a right formula that rounds in another order than the \
+                 crate's may give (`cmp` calls the files different; this comparison is the one \
+                 to trust)"
+            )
+        } else {
+            format!(
+                "{mine} is not {lesson}: {differing} {pixel_s} of {pixels} {differ}, by up to \
+                 {levels} levels of 255"
+            )
+        }
+    }
+}
+
+/// How the picture `mine` compares with the lesson's PNG file `lesson` (written by
+/// the same run): [`Comparison::verdict`]'s line, or `None` if that file cannot be
+/// read or has another size.
+pub fn compared(mine: &Framebuffer, name: &str, lesson: &std::path::Path) -> Option<String> {
+    let theirs = image::open(lesson).ok()?.to_rgba8();
+    if (theirs.width(), theirs.height()) != (mine.width(), mine.height()) {
+        return None;
+    }
+    let ours = mine.to_srgb8().ok()?;
+    let like = lesson.file_name()?.to_string_lossy();
+    Some(Comparison::of(&ours, theirs.as_raw()).verdict(name, &like))
 }

@@ -15,8 +15,14 @@ pub trait Answer {
 }
 
 impl Answer for f32 {
+    /// Equal, or both finite and within [`TOLERANCE`]: an infinity is close only to
+    /// itself (a relative tolerance scaled by it would accept any number), a NaN to
+    /// nothing.
     fn close(&self, other: &f32) -> bool {
-        *self == *other || (self - other).abs() <= TOLERANCE * 1f32.max(self.abs()).max(other.abs())
+        *self == *other
+            || (self.is_finite()
+                && other.is_finite()
+                && (self - other).abs() <= TOLERANCE * 1f32.max(self.abs()).max(other.abs()))
     }
     fn show(&self) -> String {
         if !self.is_finite() {

@@ -7,17 +7,17 @@ use glam::Mat4;
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 use crate::transform::Transform;
 
-/// Coding exercise 1.1.
+/// Coding exercise 1.5.
 pub const ROTATION_Y: Exercise = Exercise {
-    number: "1.1",
+    number: "1.5",
     chapter: "01",
     chapter_title: "Geometric transformations",
     function: "rotation_y",
     file: "src/course/exercises/ch01.rs",
 };
-/// Coding exercise 1.2.
+/// Coding exercise 1.6.
 pub const COMPOSE: Exercise = Exercise {
-    number: "1.2",
+    number: "1.6",
     chapter: "01",
     chapter_title: "Geometric transformations",
     function: "compose",
@@ -58,7 +58,7 @@ fn rotation_y_checked(f: Box<dyn Fn(f32) -> Mat4 + Send + Sync>) -> Outcome {
 }
 
 // ANCHOR: compose
-/// A worked solution of exercise 1.2: the first transformation stands on the right,
+/// A worked solution of exercise 1.6: the first transformation stands on the right,
 /// next to the point it acts on first.
 pub fn compose_solution(first: &Transform, second: &Transform) -> Mat4 {
     second.matrix() * first.matrix()
@@ -132,6 +132,15 @@ fn compose_checked(f: Box<dyn Fn(&Transform, &Transform) -> Mat4 + Send + Sync>)
                 hint: "that is first `second`, then `first`: a matrix acts on the vector to its \
                        right, so the transformation applied first stands rightmost, \
                        second.matrix() * first.matrix()",
+            },
+            Mistake {
+                looks_like: &gives(&|&(first, second): &ComposeArgs| {
+                    Some((second.matrix() * first.matrix()).transpose())
+                }),
+                hint: "that is the transpose of the right matrix (its translation sits in the \
+                       bottom row): glam's Mat4 is stored column by column, so rows written as \
+                       they are printed, or an entry [i][j] filled as [j][i], transpose it. \
+                       Multiply the matrices with glam's *, second.matrix() * first.matrix()",
             },
             Mistake {
                 looks_like: &|&(first, second): &ComposeArgs, got: &Mat4| {

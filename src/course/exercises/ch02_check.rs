@@ -7,24 +7,26 @@ use glam::Vec3;
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::ray::Ray;
 
-/// Coding exercise 2.1.
+/// Coding exercise 2.5.
 pub const POINT_AT: Exercise = Exercise {
-    number: "2.1",
+    number: "2.5",
     chapter: "02",
     chapter_title: "The ray",
     function: "point_at",
     file: "src/course/exercises/ch02.rs",
 };
-/// Coding exercise 2.2.
+/// Coding exercise 2.6.
 pub const T_CLOSEST: Exercise = Exercise {
-    number: "2.2",
+    number: "2.6",
     chapter: "02",
     chapter_title: "The ray",
     function: "t_closest",
     file: "src/course/exercises/ch02.rs",
 };
 
-/// Checks `point_at(o, d, t)`: the point r(t) = o + t d/|d|, `t` a distance.
+/// Checks `point_at(o, d, t)`: the point r(t) = o + t d/|d|, `t` a distance, also
+/// for directions whose |d|^2 overflows or underflows `f32` (lesson 02's last
+/// pitfall), which `Ray::new` accepts.
 pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static) -> Outcome {
     point_at_checked(Box::new(f))
 }
@@ -33,17 +35,32 @@ pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'stati
 /// for every closure a test passes (see [`super::harness`]).
 fn point_at_checked(f: Box<dyn Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Outcome {
     let cases: Vec<Case<(Vec3, Vec3, f32)>> = [
-        (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 0.0),
-        (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 5.0),
-        (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), -2.0),
-        (v(1.0, 1.0, 0.0), v(8.0, 6.0, 0.0), 2.5),
-        (v(1.0, 2.0, 3.0), v(0.0, 0.0, -2.0), 4.0),
-        (v(-1.0, 0.5, 2.0), v(1.0, 2.0, 2.0), 3.0),
+        (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 0.0, None),
+        (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), 5.0, None),
+        (v(1.0, 1.0, 0.0), v(4.0, 3.0, 0.0), -2.0, None),
+        (v(1.0, 1.0, 0.0), v(8.0, 6.0, 0.0), 2.5, None),
+        (v(1.0, 2.0, 3.0), v(0.0, 0.0, -2.0), 4.0, None),
+        (v(-1.0, 0.5, 2.0), v(1.0, 2.0, 2.0), 3.0, None),
+        // Lesson 02's last pitfall: |d|^2 leaves f32's range, though d is a fine
+        // direction (Ray::new accepts it).
+        (
+            v(1.0, 1.0, 0.0),
+            v(1e30, 1e30, 0.0),
+            -2.0,
+            Some("d = (1e30, 1e30, 0), so long that |d|^2 overflows f32 to infinity"),
+        ),
+        (
+            v(1.0, 1.0, 0.0),
+            v(1e-30, 1e-30, 0.0),
+            2.0,
+            Some("d = (1e-30, 1e-30, 0), so short that |d|^2 underflows f32 to 0"),
+        ),
     ]
     .into_iter()
-    .map(|(o, d, t)| {
+    .map(|(o, d, t, extreme)| {
+        let d_shown = extreme.map_or_else(|| format!("d = {}", d.show()), str::to_string);
         (
-            format!("o = {}, d = {}, t = {}", o.show(), d.show(), t.show()),
+            format!("o = {}, {d_shown}, t = {}", o.show(), t.show()),
             (o, d, t),
         )
     })
@@ -53,6 +70,16 @@ fn point_at_checked(f: Box<dyn Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Ou
         |&(o, d, t)| Ray::new(o, d).expect("valid ray").at(t),
         move |(o, d, t)| f(o, d, t),
         &[
+            Mistake {
+                looks_like: &|&(o, d, t): &(Vec3, Vec3, f32), got: &Vec3| {
+                    !d.length_squared().is_normal()
+                        && (got.close(&(o + t * d.normalize())) || !got.is_finite())
+                },
+                hint: "|d|^2 leaves f32's range for this direction (it overflows to infinity or \
+                       underflows to 0), so d / |d| (d.normalize()) is no unit vector: divide d by \
+                       its largest component first, d / max(|d_x|, |d_y|, |d_z|), which brings it to \
+                       a length between 1 and 2, then normalise (lesson 02's last pitfall)",
+            },
             Mistake {
                 looks_like: &gives(&|&(o, d, t): &(Vec3, Vec3, f32)| Some(o + t * d)),
                 hint: "t is a distance only along a unit direction: use d / |d| (d.normalize()), not d",

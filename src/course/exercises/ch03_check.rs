@@ -7,17 +7,17 @@ use glam::Vec2;
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 use crate::camera::Film;
 
-/// Coding exercise 3.1.
+/// Coding exercise 3.5.
 pub const PIXEL_TO_PLANE: Exercise = Exercise {
-    number: "3.1",
+    number: "3.5",
     chapter: "03",
     chapter_title: "The orthographic camera",
     function: "pixel_to_plane",
     file: "src/course/exercises/ch03.rs",
 };
-/// Coding exercise 3.2.
+/// Coding exercise 3.6.
 pub const PLANE_TO_PIXEL: Exercise = Exercise {
-    number: "3.2",
+    number: "3.6",
     chapter: "03",
     chapter_title: "The orthographic camera",
     function: "plane_to_pixel",
@@ -25,7 +25,7 @@ pub const PLANE_TO_PIXEL: Exercise = Exercise {
 };
 
 // ANCHOR: solution
-/// A worked solution of exercise 3.1: the slide's formula, with the row counted from
+/// A worked solution of exercise 3.5: the slide's formula, with the row counted from
 /// the bottom first (the crate's `Film::pixel_to_plane` does the same).
 pub fn pixel_to_plane_solution(film: &Film, px: u32, py: u32) -> Vec2 {
     let ((x_min, x_max), (y_min, y_max)) = (film.x_extent(), film.y_extent());
@@ -116,6 +116,21 @@ fn pixel_to_plane_checked(f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>)
                 }),
                 hint: "off by one row: the bottom row is y_pixel = 0, so y_pixel = height - 1 - py, \
                        not height - py",
+            },
+            Mistake {
+                looks_like: &|&(film, px, py): &PixelArgs, got: &Vec2| {
+                    // Square pixels of the columns' size, counted from the top or from
+                    // the bottom edge.
+                    let ((x_min, x_max), (y_min, y_max)) = (film.x_extent(), film.y_extent());
+                    let size = (x_max - x_min) / film.width() as f32;
+                    let x = (px as f32 + 0.5) * size + x_min;
+                    let from_top = y_max - (py as f32 + 0.5) * size;
+                    let from_bottom = ((film.height() - 1 - py) as f32 + 0.5) * size + y_min;
+                    got.close(&Vec2::new(x, from_top)) || got.close(&Vec2::new(x, from_bottom))
+                },
+                hint: "the rows used the columns' pixel size: a pixel is (x_max - x_min) / width \
+                       wide but (y_max - y_min) / height high, and the two differ when the pixels \
+                       are not square (this film's are not)",
             },
             Mistake {
                 looks_like: &gives(&|a: &PixelArgs| {

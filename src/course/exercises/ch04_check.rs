@@ -8,17 +8,17 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::basis::Basis;
 use crate::camera::camera_basis;
 
-/// Coding exercise 4.1.
+/// Coding exercise 4.5.
 pub const TO_WORLD: Exercise = Exercise {
-    number: "4.1",
+    number: "4.5",
     chapter: "04",
     chapter_title: "Change of basis",
     function: "to_world",
     file: "src/course/exercises/ch04.rs",
 };
-/// Coding exercise 4.2.
+/// Coding exercise 4.6.
 pub const TO_LOCAL: Exercise = Exercise {
-    number: "4.2",
+    number: "4.6",
     chapter: "04",
     chapter_title: "Change of basis",
     function: "to_local",

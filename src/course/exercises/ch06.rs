@@ -1,4 +1,4 @@
-//! Chapter 06, The pinhole camera: coding exercises 6.1 and 6.2.
+//! Chapter 06, The pinhole camera: coding exercises 6.3 and 6.4.
 //!
 //! Check them with `cargo test --features exercises --test exercises ch06`.
 // The parameters are unused until you write the bodies.
@@ -8,7 +8,7 @@ use glam::{Vec2, Vec3};
 
 use crate::camera::{Film, Frame};
 
-/// Coding exercise 6.1: the world-space ray (origin, unit direction) of pixel
+/// Coding exercise 6.3: the world-space ray (origin, unit direction) of pixel
 /// (`px`, `py`, row 0 at the top) of a pinhole camera whose screen lies at
 /// distance `s` in front of the eye.
 ///
@@ -18,11 +18,11 @@ use crate::camera::{Film, Frame};
 /// `Frame::point_to_world` and `Frame::vector_to_world`.
 pub fn pinhole_ray(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
     todo!(
-        "Coding exercise 6.1 (chapter 06, The pinhole camera): the ray from the eye through the screen point"
+        "Coding exercise 6.3 (chapter 06, The pinhole camera): the ray from the eye through the screen point"
     )
 }
 
-/// Coding exercise 6.2: where the world point `x` lands in the image of the same
+/// Coding exercise 6.4: where the world point `x` lands in the image of the same
 /// pinhole camera, in continuous pixel coordinates (column, row from the top, as
 /// `film.plane_to_pixel` gives them for a point of the screen), or `None` if `x` is
 /// not in front of the eye.
@@ -31,5 +31,5 @@ pub fn pinhole_ray(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec
 /// down its -Z, so "in front" means Z < 0. (`PinholeCamera::project` is the crate's
 /// answer.)
 pub fn project(film: &Film, s: f32, frame: &Frame, x: Vec3) -> Option<Vec2> {
-    todo!("Coding exercise 6.2 (chapter 06, The pinhole camera): where a point lands in the image")
+    todo!("Coding exercise 6.4 (chapter 06, The pinhole camera): where a point lands in the image")
 }

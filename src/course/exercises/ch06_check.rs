@@ -7,17 +7,17 @@ use glam::{Vec2, Vec3};
 use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::camera::{Film, Frame, PinholeCamera};
 
-/// Coding exercise 6.1.
+/// Coding exercise 6.3.
 pub const PINHOLE_RAY: Exercise = Exercise {
-    number: "6.1",
+    number: "6.3",
     chapter: "06",
     chapter_title: "The pinhole camera",
     function: "pinhole_ray",
     file: "src/course/exercises/ch06.rs",
 };
-/// Coding exercise 6.2.
+/// Coding exercise 6.4.
 pub const PROJECT: Exercise = Exercise {
-    number: "6.2",
+    number: "6.4",
     chapter: "06",
     chapter_title: "The pinhole camera",
     function: "project",
@@ -123,6 +123,17 @@ fn pinhole_ray_checked(
             Mistake {
                 looks_like: &|a: &PinholeArgs, got: &(Vec3, Vec3)| {
                     let mut s = screen(a);
+                    s.y = -s.y;
+                    got.1.close(&a.2.vector_to_world(s.normalize()))
+                },
+                hint: "the image is upside down (STABILITY S11: up must be up): pixel row 0 is \
+                       the top row of the image, whose rays go up, but the slides' formula counts \
+                       rows from the bottom. film.pixel_to_plane flips the rows once, in one \
+                       place: use its (x, y)",
+            },
+            Mistake {
+                looks_like: &|a: &PinholeArgs, got: &(Vec3, Vec3)| {
+                    let mut s = screen(a);
                     s.z = -s.z;
                     got.1.close(&a.2.vector_to_world(s.normalize()))
                 },
@@ -201,6 +212,21 @@ fn project_checked(
             "the origin, which the camera looks towards",
         ),
         (placed, 8.0, v(0.0, 3.0, 9.0), at_p, "behind the camera"),
+        // STABILITY S11: right is right and up is up.
+        (
+            origin,
+            8.0,
+            v(1.0, 0.0, -5.0),
+            at_origin,
+            "right of the view direction, so in the right half (STABILITY S11)",
+        ),
+        (
+            origin,
+            8.0,
+            v(0.0, 1.0, -5.0),
+            at_origin,
+            "above the view direction, so in the upper half (STABILITY S11)",
+        ),
     ]
     .into_iter()
     .map(|(frame, s, x, camera, what)| {
@@ -249,6 +275,23 @@ fn project_checked(
                 looks_like: &gives(&|a: &ProjectArgs| landing(a, local(a), local(a).z)),
                 hint: "the depth of a point in front of the eye is -Z (the camera looks down its \
                        -Z): divide by -Z, or the image comes out mirrored",
+            },
+            Mistake {
+                looks_like: &gives(&|a: &ProjectArgs| {
+                    let c = local(a);
+                    let on_screen = c.truncate() * (a.1 / -c.z);
+                    let ((x0, x1), (y0, y1)) = (a.0.x_extent(), a.0.y_extent());
+                    let (w, h) = (a.0.width() as f32, a.0.height() as f32);
+                    (c.z < 0.0).then(|| {
+                        Some(Vec2::new(
+                            (on_screen.x - x0) / (x1 - x0) * w,
+                            (on_screen.y - y0) / (y1 - y0) * h,
+                        ))
+                    })
+                }),
+                hint: "the image is upside down (STABILITY S11: up must be up): rows count from \
+                       the top of the image, y grows upwards on the screen. film.plane_to_pixel \
+                       flips the rows (height - sy); use it",
             },
             Mistake {
                 looks_like: &gives(&|a: &ProjectArgs| landing(a, local(a), -local(a).z * a.1)),

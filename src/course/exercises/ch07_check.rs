@@ -8,25 +8,25 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Plane, Sphere, Triangle};
 
-/// Coding exercise 7.1.
+/// Coding exercise 7.16.
 pub const RAY_PLANE_T: Exercise = Exercise {
-    number: "7.1",
+    number: "7.16",
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_plane_t",
     file: "src/course/exercises/ch07.rs",
 };
-/// Coding exercise 7.2.
+/// Coding exercise 7.17.
 pub const RAY_SPHERE_ROOTS: Exercise = Exercise {
-    number: "7.2",
+    number: "7.17",
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "ray_sphere_roots",
     file: "src/course/exercises/ch07.rs",
 };
-/// Coding exercise 7.3.
+/// Coding exercise 7.18.
 pub const MOLLER_TRUMBORE: Exercise = Exercise {
-    number: "7.3",
+    number: "7.18",
     chapter: "07",
     chapter_title: "Ray/primitive intersections",
     function: "moller_trumbore",
@@ -49,7 +49,7 @@ fn ray_plane_t_checked(
     f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Option<f32> + Send + Sync>,
 ) -> Outcome {
     let diagonal = v(1.0, 1.0, 1.0).normalize();
-    let cases: Vec<Case<PlaneArgs>> = [
+    let mut cases: Vec<Case<PlaneArgs>> = [
         (v(0.0, 3.0, 0.0), -Vec3::Y, Vec3::ZERO, Vec3::Y),
         (
             v(0.0, 3.0, 9.0),
@@ -82,6 +82,15 @@ fn ray_plane_t_checked(
         )
     })
     .collect();
+    // The plane's pitfall "dividing before checking": d . n = -1e-30 is not 0, but
+    // 1e9 / 1e-30 overflows f32.
+    let grazing = (v(0.0, 1e9, 0.0), v(1.0, -1e-30, 0.0), Vec3::ZERO, Vec3::Y);
+    cases.push((
+        "o = (0, 1e9, 0), d = (1, -1e-30, 0): so nearly parallel to the plane through \
+         (0, 0, 0) with normal (0, 1, 0) that t = 1e9 / 1e-30 overflows f32"
+            .to_string(),
+        grazing,
+    ));
     run(
         &cases,
         |&(o, d, p0, n)| {
@@ -97,6 +106,13 @@ fn ray_plane_t_checked(
                 },
                 hint: "the ray is parallel to the plane (d . n = 0): return None, never a NaN or an \
                        infinity",
+            },
+            Mistake {
+                looks_like: &|_: &PlaneArgs, got: &Option<f32>| got.is_some_and(f32::is_infinite),
+                hint: "refuse a quotient that is not finite: d . n is not 0 here, but so small \
+                       that (p0 - o) . n / (d . n) overflows to infinity, which a later \
+                       comparison such as t > t_min lets through (the plane's pitfall \
+                       \"dividing before checking\")",
             },
             Mistake {
                 looks_like: &gives(&|&(o, d, p0, n): &PlaneArgs| {
@@ -119,8 +135,9 @@ fn ray_plane_t_checked(
 type SphereArgs = (Vec3, Vec3, Vec3, f32);
 
 /// Checks `ray_sphere_roots(o, d, c, r)`: both `t` where the line o + t d (`d` of
-/// unit length) meets the sphere, ascending, or `None` when it misses. The last cases
-/// are STABILITY S1's small sphere far away, which the school formula gets wrong.
+/// unit length) meets the sphere, ascending, or `None` when it misses. STABILITY S2's
+/// rays from the centre and the surface (b = 0, c = 0) come before the last cases,
+/// S1's small sphere far away, which the school formula gets wrong.
 pub fn check_ray_sphere_roots(
     f: impl Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, f32)> + Send + Sync + 'static,
 ) -> Outcome {
@@ -143,6 +160,13 @@ fn ray_sphere_roots_checked(
         (v(3.0, 0.0, 0.0), Vec3::X, Vec3::ZERO, 1.0),
         (v(1.0, 2.0, -5.0), Vec3::Z, v(1.0, 2.0, 3.0), 2.0),
         (v(0.0, 0.0, 5.0), v(0.0, 0.6, -0.8), v(0.0, 1.0, 0.0), 1.5),
+        // STABILITY S2: the sphere of radius 2 around (1, 2, 3), from its centre
+        // (b = 0), and from its surface point (1, 2, 1) towards the centre, away from
+        // it (c = 0) and along a tangent (b = 0 and c = 0).
+        (v(1.0, 2.0, 3.0), Vec3::Y, v(1.0, 2.0, 3.0), 2.0),
+        (v(1.0, 2.0, 1.0), Vec3::Z, v(1.0, 2.0, 3.0), 2.0),
+        (v(1.0, 2.0, 1.0), -Vec3::Z, v(1.0, 2.0, 3.0), 2.0),
+        (v(1.0, 2.0, 1.0), Vec3::X, v(1.0, 2.0, 3.0), 2.0),
         // STABILITY S1: a unit sphere 1e4 away, rays aimed at its centre, 0.6 r off
         // it and 2 r off it (a miss). The textbook discriminant cancels on all three.
         (Vec3::ZERO, aim, far, 1.0),
@@ -189,6 +213,27 @@ fn ray_sphere_roots_checked(
                 },
                 hint: "return both roots of the line, even negative ones (behind the origin); \
                        choosing t_min < t < t_max is the hit function's job",
+            },
+            Mistake {
+                looks_like: &|&(o, d, c, r): &SphereArgs, got: &Option<(f32, f32)>| {
+                    let f = o - c;
+                    f.dot(d) == 0.0
+                        && f.dot(f) == r * r
+                        && got.is_some_and(|(t0, t1)| t0.is_nan() || t1.is_nan())
+                },
+                hint: "the line only touches the sphere, at its origin (STABILITY S2): b = 0 and \
+                       c = 0, so the discriminant is 0 and q = -(b + sign(b) sqrt(0)) / 2 = 0, \
+                       and c/q is 0/0 = NaN. When q = 0 the double root is 0: return (0, 0)",
+            },
+            Mistake {
+                looks_like: &|&(o, d, c, _): &SphereArgs, got: &Option<(f32, f32)>| {
+                    (o - c).dot(d) == 0.0
+                        && got.is_some_and(|(t0, t1)| !(t0.is_finite() && t1.is_finite()))
+                },
+                hint: "b = 2 f . d is 0 here (STABILITY S2: the origin at the centre, or a \
+                       tangent): a sign function with sign(0) = 0 makes \
+                       q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2 = 0, and the root c/q infinite or \
+                       NaN. Take sign(0) = +1 (b >= 0), as f32::signum does for +0",
             },
             Mistake {
                 looks_like: &|&(o, _, c, r): &SphereArgs, _: &Option<(f32, f32)>| {

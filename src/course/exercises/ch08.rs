@@ -1,4 +1,4 @@
-//! Chapter 08, Ray casting: coding exercises 8.1 and 8.2.
+//! Chapter 08, Ray casting: coding exercises 8.3 and 8.7.
 //!
 //! Check them with `cargo test --features exercises --test exercises ch08`.
 // The parameters are unused until you write the bodies.
@@ -10,17 +10,17 @@ use crate::ray::{Interval, Ray};
 use crate::scene::{PointLight, SceneHit};
 use crate::shapes::Shape;
 
-/// Coding exercise 8.1: the closest hit of `ray` over all `shapes`, counting only
+/// Coding exercise 8.3: the closest hit of `ray` over all `shapes`, counting only
 /// hits with `t` inside `range` (`range.min < t < range.max`): the `Hit` and the index
 /// of the shape hit, as a `SceneHit { hit, object }`; `None` if no shape is hit.
 ///
 /// `shape.hit(ray, range)` tests one shape and returns its nearest crossing in that
 /// range (a `Hit`, whose field `t` is the distance).
 pub fn closest(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
-    todo!("Coding exercise 8.1 (chapter 08, Ray casting): the closest-hit loop over every shape")
+    todo!("Coding exercise 8.3 (chapter 08, Ray casting): the closest-hit loop over every shape")
 }
 
-/// Coding exercise 8.2: Lambert's cosine law. The colour of a surface point `p` with
+/// Coding exercise 8.7: Lambert's cosine law. The colour of a surface point `p` with
 /// unit normal `n` (already turned towards the viewer) and colour `albedo`, lit by
 /// the point `light` (`light.position`, `light.intensity`), which the shadow ray has
 /// found `visible` or not:
@@ -32,5 +32,5 @@ pub fn closest(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit>
 /// `crate::lighting::AMBIENT` is the ambient share, 0.1. (`lighting::lambert` is the
 /// crate's answer.)
 pub fn lambert(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
-    todo!("Coding exercise 8.2 (chapter 08, Ray casting): Lambert's cosine law from a point light")
+    todo!("Coding exercise 8.7 (chapter 08, Ray casting): Lambert's cosine law from a point light")
 }

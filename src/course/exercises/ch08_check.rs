@@ -10,17 +10,17 @@ use crate::ray::{Interval, Ray};
 use crate::scene::{Object, PointLight, Scene, SceneHit};
 use crate::shapes::{Plane, Shape, Sphere};
 
-/// Coding exercise 8.1.
+/// Coding exercise 8.3.
 pub const CLOSEST: Exercise = Exercise {
-    number: "8.1",
+    number: "8.3",
     chapter: "08",
     chapter_title: "Ray casting",
     function: "closest",
     file: "src/course/exercises/ch08.rs",
 };
-/// Coding exercise 8.2.
+/// Coding exercise 8.7.
 pub const LAMBERT: Exercise = Exercise {
-    number: "8.2",
+    number: "8.7",
     chapter: "08",
     chapter_title: "Ray casting",
     function: "lambert",
@@ -30,7 +30,7 @@ pub const LAMBERT: Exercise = Exercise {
 type ClosestArgs = (Ray, Vec<Shape>, Interval);
 
 // ANCHOR: solution
-/// A worked solution of exercise 8.1, written as lesson 08 teaches it: ask every
+/// A worked solution of exercise 8.3, written as lesson 08 teaches it: ask every
 /// shape for its nearest crossing in `range`, and let each hit shrink `range.max`,
 /// so that a later shape counts only if it is nearer.
 pub fn closest_solution(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
@@ -57,7 +57,7 @@ impl Answer for SceneHit {
 }
 
 /// Every hit in list order, as the closest-hit loop would record it without
-/// shrinking the range: what the two typical mistakes of exercise 8.1 pick from.
+/// shrinking the range: what the two typical mistakes of exercise 8.3 pick from.
 pub fn each_hit<'a>(
     ray: &'a Ray,
     shapes: &'a [Shape],
@@ -121,6 +121,16 @@ fn closest_checked(
         },
         move |(ray, shapes, range)| f(&ray, &shapes, range),
         &[
+            Mistake {
+                looks_like: &|(_, _, range): &ClosestArgs, got: &Option<SceneHit>| {
+                    got.as_ref()
+                        .is_some_and(|found| !(found.hit.t > range.min && found.hit.t < range.max))
+                },
+                hint: "that hit lies outside range: count only range.min < t < range.max. Pass \
+                       range itself to shape.hit (not Interval::AHEAD or a range of your own), \
+                       and shrink its max as you go; a hit at t <= 0 is behind the ray's \
+                       origin, where the camera cannot see",
+            },
             Mistake {
                 looks_like: &gives(&|(ray, shapes, range): &ClosestArgs| {
                     Some(each_hit(ray, shapes, *range).next())

@@ -1,4 +1,4 @@
-//! Chapter 09, The rasterization pipeline: coding exercises 9.1 and 9.2.
+//! Chapter 09, The rasterization pipeline: coding exercises 9.6 and 9.7.
 //!
 //! Check them with `cargo test --features exercises --test exercises ch09`.
 // The parameters are unused until you write the bodies.
@@ -6,7 +6,7 @@
 
 use crate::raster::ScreenVertex;
 
-/// Coding exercise 9.1: does the triangle `a`, `b`, `c` cover the point `p` under the
+/// Coding exercise 9.6: does the triangle `a`, `b`, `c` cover the point `p` under the
 /// top-left rule? All four are on the rasterizer's integer sub-pixel grid, as
 /// (column, row) with rows growing downwards; the vertices may run either way round,
 /// and the triangle may be degenerate.
@@ -20,12 +20,12 @@ use crate::raster::ScreenVertex;
 /// (v_y > u_y), or is horizontal and runs towards -x (v_y = u_y and v_x < u_x).
 pub fn covers(a: (i64, i64), b: (i64, i64), c: (i64, i64), p: (i64, i64)) -> bool {
     todo!(
-        "Coding exercise 9.1 (chapter 09, The rasterization pipeline): the inside test, \
+        "Coding exercise 9.6 (chapter 09, The rasterization pipeline): the inside test, \
          edge functions and the top-left rule"
     )
 }
 
-/// Coding exercise 9.2: perspective-correct interpolation. The weights with which a
+/// Coding exercise 9.7: perspective-correct interpolation. The weights with which a
 /// fragment mixes the attributes of the triangle's `vertices`, from its screen-space
 /// barycentric weights `b` (`b[k]` belongs to `vertices[k]`; they sum to 1).
 ///
@@ -36,6 +36,6 @@ pub fn covers(a: (i64, i64), b: (i64, i64), c: (i64, i64), p: (i64, i64)) -> boo
 /// (`raster::rasterize::perspective_weights` is the crate's answer.)
 pub fn perspective_weights(b: [f32; 3], vertices: &[ScreenVertex; 3]) -> [f32; 3] {
     todo!(
-        "Coding exercise 9.2 (chapter 09, The rasterization pipeline): perspective-correct weights"
+        "Coding exercise 9.7 (chapter 09, The rasterization pipeline): perspective-correct weights"
     )
 }

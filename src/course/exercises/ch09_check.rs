@@ -8,17 +8,17 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run};
 use crate::raster::rasterize::{covers, perspective_weights};
 use crate::raster::{ScreenVertex, Varyings};
 
-/// Coding exercise 9.1.
+/// Coding exercise 9.6.
 pub const COVERS: Exercise = Exercise {
-    number: "9.1",
+    number: "9.6",
     chapter: "09",
     chapter_title: "The rasterization pipeline",
     function: "covers",
     file: "src/course/exercises/ch09.rs",
 };
-/// Coding exercise 9.2.
+/// Coding exercise 9.7.
 pub const PERSPECTIVE_WEIGHTS: Exercise = Exercise {
-    number: "9.2",
+    number: "9.7",
     chapter: "09",
     chapter_title: "The rasterization pipeline",
     function: "perspective_weights",

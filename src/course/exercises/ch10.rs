@@ -1,4 +1,4 @@
-//! Chapter 10, Path tracing: coding exercises 10.1 and 10.2.
+//! Chapter 10, Path tracing: coding exercises 10.11 and 10.12.
 //!
 //! Check them with `cargo test --features exercises --test exercises ch10`.
 // The parameters are unused until you write the bodies.
@@ -6,7 +6,7 @@
 
 use glam::{Vec2, Vec3};
 
-/// Coding exercise 10.1: a cosine-weighted direction in the hemisphere around +Z,
+/// Coding exercise 10.11: a cosine-weighted direction in the hemisphere around +Z,
 /// and its density per unit solid angle, from a uniform point `u` of the unit square.
 ///
 /// Use Malley's method, as `sampling::cosine_hemisphere` does: `u.x` chooses the
@@ -15,11 +15,11 @@ use glam::{Vec2, Vec3};
 /// onto the hemisphere. Return the unit direction and its pdf, cos(theta) / pi.
 pub fn cosine_sample(u: Vec2) -> (Vec3, f32) {
     todo!(
-        "Coding exercise 10.1 (chapter 10, Path tracing): a cosine-weighted direction and its pdf"
+        "Coding exercise 10.11 (chapter 10, Path tracing): a cosine-weighted direction and its pdf"
     )
 }
 
-/// Coding exercise 10.2: the factor by which one bounce multiplies a path's
+/// Coding exercise 10.12: the factor by which one bounce multiplies a path's
 /// throughput at a matte (Lambertian) surface, f_r cos(theta) / pdf.
 ///
 /// The surface has colour `albedo` and unit normal `n`; the path leaves along the
@@ -28,5 +28,5 @@ pub fn cosine_sample(u: Vec2) -> (Vec3, f32) {
 /// angle between `n` and `wi`. A direction below the surface (cos(theta) <= 0)
 /// carries nothing, and neither does a direction of density 0 (never divide by it).
 pub fn bounce_weight(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
-    todo!("Coding exercise 10.2 (chapter 10, Path tracing): the throughput factor of a bounce")
+    todo!("Coding exercise 10.12 (chapter 10, Path tracing): the throughput factor of a bounce")
 }

@@ -2,7 +2,7 @@
 //! answer for each, and the hints for the typical mistakes. The student's functions
 //! are in `ch10.rs`, beside this file; the harness is `harness.rs`.
 //!
-//! The check of exercise 10.1 runs in two rounds. First three statistics over 4096 directions from a
+//! The check of exercise 10.11 runs in two rounds. First three statistics over 4096 directions from a
 //! fixed random stream (so the check is never flaky): how many directions are not of
 //! unit length or lie below the horizon, the mean of cos(theta), and an estimate of
 //! the integral of cos(theta) / pi over the hemisphere (1) with the student's own pdf.
@@ -18,17 +18,17 @@ use crate::material::diffuse_brdf;
 use crate::rng::Rng;
 use crate::sampling::cosine_hemisphere;
 
-/// Coding exercise 10.1.
+/// Coding exercise 10.11.
 pub const COSINE_SAMPLE: Exercise = Exercise {
-    number: "10.1",
+    number: "10.11",
     chapter: "10",
     chapter_title: "Path tracing: the rendering equation",
     function: "cosine_sample",
     file: "src/course/exercises/ch10.rs",
 };
-/// Coding exercise 10.2.
+/// Coding exercise 10.12.
 pub const BOUNCE_WEIGHT: Exercise = Exercise {
-    number: "10.2",
+    number: "10.12",
     chapter: "10",
     chapter_title: "Path tracing: the rendering equation",
     function: "bounce_weight",
@@ -198,7 +198,7 @@ fn cosine_sample_checked(f: Box<dyn Fn(Vec2) -> (Vec3, f32) + Send + Sync>) -> O
 }
 
 // ANCHOR: bounce_weight
-/// A worked solution of exercise 10.2: f_r cos(theta) / pdf with Lambert's
+/// A worked solution of exercise 10.12: f_r cos(theta) / pdf with Lambert's
 /// f_r = albedo / pi, and nothing for a direction below the surface or of density 0.
 pub fn bounce_weight_solution(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
     let cos_theta = n.dot(wi);
@@ -270,6 +270,13 @@ fn bounce_weight_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + S
             grey,
             up,
             v(1.0, 0.0, 0.0),
+            0.0,
+        ),
+        (
+            "a direction above the surface that the sampler cannot draw: density 0",
+            red,
+            up,
+            slanted,
             0.0,
         ),
     ]

@@ -1,4 +1,4 @@
-//! Chapter 11, Speed against accuracy: coding exercises 11.1 and 11.2.
+//! Chapter 11, Speed against accuracy: coding exercises 11.4 and 11.6.
 //!
 //! Check them with `cargo test --features exercises --test exercises ch11`.
 // The parameters are unused until you write the bodies.
@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::ray::{ClosedSpan, Interval};
 use crate::shapes::Aabb;
 
-/// Coding exercise 11.1: the slab test with a precomputed `1/d`. The closed interval
+/// Coding exercise 11.4: the slab test with a precomputed `1/d`. The closed interval
 /// `[t0, t1]` of the ray `o + t d` inside the closed box `[min, max]`, clipped to
 /// `[range.min, range.max]`, as a `ClosedSpan { t0, t1 }`, or `None` if it is empty. `inv_d` is `1 / d`, component by
 /// component, computed once per ray by the caller: a zero component of `d` gives an
@@ -23,12 +23,12 @@ use crate::shapes::Aabb;
 /// in a face's plane) must leave the interval alone.
 pub fn slab(o: Vec3, inv_d: Vec3, min: Vec3, max: Vec3, range: Interval) -> Option<ClosedSpan> {
     todo!(
-        "Coding exercise 11.1 (chapter 11, Speed against accuracy): the slab test \
+        "Coding exercise 11.4 (chapter 11, Speed against accuracy): the slab test \
          with a precomputed 1/d"
     )
 }
 
-/// Coding exercise 11.2: the surface area heuristic. The expected cost, in primitive
+/// Coding exercise 11.6: the surface area heuristic. The expected cost, in primitive
 /// tests, of splitting the BVH node whose box is `node` into a left child (box `left`,
 /// `left_count` primitives) and a right child (box `right`, `right_count` primitives):
 ///
@@ -45,5 +45,5 @@ pub fn sah_cost(
     right: &Aabb,
     right_count: usize,
 ) -> f32 {
-    todo!("Coding exercise 11.2 (chapter 11, Speed against accuracy): the SAH cost of a split")
+    todo!("Coding exercise 11.6 (chapter 11, Speed against accuracy): the SAH cost of a split")
 }

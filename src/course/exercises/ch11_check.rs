@@ -9,9 +9,9 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, run, v};
 use crate::ray::{ClosedSpan, Interval, Ray};
 use crate::shapes::Aabb;
 
-/// Coding exercise 11.1.
+/// Coding exercise 11.4.
 pub const SLAB: Exercise = Exercise {
-    number: "11.1",
+    number: "11.4",
     chapter: "11",
     chapter_title: "Speed against accuracy",
     function: "slab",
@@ -33,7 +33,7 @@ struct SlabArgs {
 type SlabAnswer = Option<ClosedSpan>;
 
 // ANCHOR: solution
-/// A worked solution of exercise 11.1, written as the exercise asks (the book shows
+/// A worked solution of exercise 11.4, written as the exercise asks (the book shows
 /// it). The crate's own [`Aabb::slab`] computes `1 / d` itself, once per call.
 pub fn slab_solution(
     o: Vec3,
@@ -307,6 +307,15 @@ fn slab_checked(
             inf,
         ),
         (
+            "a -0 component along the top face's plane: d_x = d_y = -0 in the plane y = 1 \
+             ((1 - 1) * -inf = NaN as the entry in y, +inf as the exit)",
+            cube,
+            v(0.0, 1.0, -5.0),
+            v(-0.0, -0.0, 1.0),
+            0.0,
+            inf,
+        ),
+        (
             "parallel to x, just above the top face",
             cube,
             v(-5.0, 1.0 + 1e-6, 0.0),
@@ -425,6 +434,19 @@ fn slab_checked(
                 hint: "`t0 = if t0 > t_near { t0 } else { t_near }` takes t_near when it is NaN \
                        (0 * inf, a ray lying in a face's plane): write \
                        `if t_near > t0 { t0 = t_near }` (or t0.max(t_near)), which keeps t0",
+            },
+            Mistake {
+                looks_like: &|a: &SlabArgs, _: &SlabAnswer| {
+                    a.inv_d.to_array().contains(&f32::NEG_INFINITY)
+                },
+                hint: "this ray has a component d_i = -0, so inv_d_i = 1 / -0 = -inf: negative, \
+                       and the ray meets the max plane first, t_near = (max_i - o_i) * inv_d_i, \
+                       t_far = (min_i - o_i) * inv_d_i. Decide by inv_d_i < 0: the sign of d_i \
+                       itself (-0 < 0 is false), or of 1 / inv_d_i = -0, gets it wrong, and so \
+                       does comparing the two ends when the ray lies in a face's plane, where \
+                       one of them is 0 * -inf = NaN. Then update with \
+                       `if t_near > t0 { t0 = t_near }` and `if t_far < t1 { t1 = t_far }`, so \
+                       that a NaN end changes nothing",
             },
         ],
         "per axis t_near = (min_i - o_i) * inv_d_i, t_far = (max_i - o_i) * inv_d_i, swapped \

@@ -9,9 +9,9 @@ use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, v};
 use crate::bvh::build::{TRAVERSAL_COST, split_cost};
 use crate::shapes::Aabb;
 
-/// Coding exercise 11.2.
+/// Coding exercise 11.6.
 pub const SAH_COST: Exercise = Exercise {
-    number: "11.2",
+    number: "11.6",
     chapter: "11",
     chapter_title: "Speed against accuracy",
     function: "sah_cost",
@@ -19,7 +19,7 @@ pub const SAH_COST: Exercise = Exercise {
 };
 
 // ANCHOR: solution
-/// A worked solution of exercise 11.2: each child's primitives are tested by the
+/// A worked solution of exercise 11.6: each child's primitives are tested by the
 /// share A(child) / A(node) of the rays that reach the node.
 pub fn sah_cost_solution(
     node: &Aabb,

@@ -27,10 +27,9 @@
 //! fails CI.
 
 use std::any::Any;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 use std::fmt;
 use std::panic::{self, AssertUnwindSafe};
-use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Once, mpsc};
 use std::time::Duration;
 
@@ -47,13 +46,56 @@ pub enum Outcome {
         case: String,
         /// What the reference code answers.
         expected: String,
-        /// What the implementation answered (or how it panicked).
+        /// What the implementation answered (or how it panicked, or that it did not
+        /// answer in time).
         got: String,
         /// What is probably wrong.
         hint: String,
+        /// A wrong answer, a panic or no answer in time.
+        reason: Reason,
     },
     /// The function still panics with `todo!()`.
     NotStarted,
+}
+
+/// Why a case failed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reason {
+    /// The function answered, wrongly.
+    Wrong,
+    /// The function panicked with `message`, at `at` (`file:line`) when the panic
+    /// happened on the thread that runs it (a panic on a thread the function started,
+    /// such as a rayon worker's, reaches the check without its place).
+    Panicked {
+        /// Where: the file and line of the panic.
+        at: Option<String>,
+        /// The panic's message.
+        message: String,
+    },
+    /// No answer within the time limit, `seconds`.
+    TimedOut {
+        /// The time limit in whole seconds.
+        seconds: u64,
+    },
+}
+
+impl Reason {
+    /// What the function did instead of answering, in a few words: "panicked at
+    /// src/course/exercises/ch02.rs:17: oops" (the message's first line), "no answer
+    /// within 5 s"; `None` for a wrong answer.
+    pub fn summary(&self) -> Option<String> {
+        match self {
+            Reason::Wrong => None,
+            Reason::Panicked { at, message } => {
+                let first = message.lines().next().unwrap_or_default();
+                Some(match at {
+                    Some(at) => format!("panicked at {at}: {first}"),
+                    None => format!("panicked: {first}"),
+                })
+            }
+            Reason::TimedOut { seconds } => Some(format!("no answer within {seconds} s")),
+        }
+    }
 }
 
 impl Outcome {
@@ -63,6 +105,14 @@ impl Outcome {
             Outcome::Pass => "PASS",
             Outcome::Fail { .. } => "FAIL",
             Outcome::NotStarted => "NOT STARTED",
+        }
+    }
+
+    /// The hint of a failure; `None` for a pass or an exercise not started.
+    pub fn hint(&self) -> Option<&str> {
+        match self {
+            Outcome::Fail { hint, .. } => Some(hint),
+            _ => None,
         }
     }
 }
@@ -77,6 +127,7 @@ impl fmt::Display for Outcome {
                 expected,
                 got,
                 hint,
+                ..
             } => write!(
                 f,
                 "FAIL\n  case:     {case}\n  expected: {expected}\n  got:      {got}\n  hint:     {hint}"
@@ -88,7 +139,9 @@ impl fmt::Display for Outcome {
 /// One coding exercise: where the student writes it and what it is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Exercise {
-    /// "3.1": chapter 3, first coding exercise.
+    /// "3.5": lesson 03's fifth exercise. Every exercise of a lesson, written or
+    /// coding, is numbered N.k in book order across the lesson's pages, and the check's
+    /// number is the book's (`tests/exercise_harness.rs` holds them to it).
     pub number: &'static str,
     /// The chapter's number, "03".
     pub chapter: &'static str,
@@ -117,15 +170,41 @@ impl Exercise {
         }
     }
 
-    /// One line of a summary table: number, chapter, function, status.
+    /// One line of a summary table: number, chapter, function, status, and for a
+    /// panic or a time-out what happened ("FAIL: panicked at src/...:17: oops").
     pub fn row(&self, outcome: &Outcome) -> String {
+        let status = match outcome {
+            Outcome::Fail { reason, .. } => match reason.summary() {
+                Some(what) => format!("FAIL: {what}"),
+                None => "FAIL".to_string(),
+            },
+            other => other.status().to_string(),
+        };
         format!(
-            "{:<5} ch{}  {:<20} {}",
-            self.number,
-            self.chapter,
-            self.function,
-            outcome.status()
+            "{:<5} ch{}  {:<20} {status}",
+            self.number, self.chapter, self.function
         )
+    }
+
+    /// `Ok` for a pass; otherwise the full report, as the error a student's test
+    /// returns. A test that returns an error prints it as it is, without the
+    /// backtrace a failed assertion would print with `RUST_BACKTRACE=1` (a backtrace
+    /// of the harness, not of the student's code, whose panics the report places).
+    pub fn expect_pass(&self, outcome: &Outcome) -> Result<(), Report> {
+        match outcome {
+            Outcome::Pass => Ok(()),
+            other => Err(Report(self.report(other))),
+        }
+    }
+}
+
+/// A check's report, as the error of a student's test: its `Debug` form, which the
+/// test prints, is the report itself.
+pub struct Report(pub String);
+
+impl fmt::Debug for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "\n{}\n", self.0)
     }
 }
 
@@ -139,59 +218,103 @@ pub use super::answer::{Answer, TOLERANCE};
 /// check takes well under a second with a right answer, even in a debug build.
 pub const CASE_TIME_LIMIT: Duration = Duration::from_secs(5);
 
-/// The time limit in whole seconds, [`CASE_TIME_LIMIT`] until
-/// [`set_case_time_limit`] changes it.
-static CASE_LIMIT_SECONDS: AtomicU64 = AtomicU64::new(CASE_TIME_LIMIT.as_secs());
+/// The environment variable that sets the time limit of every case in whole
+/// seconds, instead of [`CASE_TIME_LIMIT`]: more for a machine much slower than
+/// usual, or while stepping through an answer in a debugger
+/// (`EXERCISE_SECONDS=600 cargo test --features exercises --test exercises ch03`).
+pub const TIME_LIMIT_VARIABLE: &str = "EXERCISE_SECONDS";
 
-/// How long one case may run now: [`CASE_TIME_LIMIT`], or what
-/// [`set_case_time_limit`] set.
-pub fn case_time_limit() -> Duration {
-    Duration::from_secs(CASE_LIMIT_SECONDS.load(Ordering::Relaxed))
+thread_local! {
+    /// The time limit [`with_case_time_limit`] set for the checks this thread runs
+    /// now, if any.
+    static LIMIT_HERE: Cell<Option<Duration>> = const { Cell::new(None) };
 }
 
-/// Changes how long each case of every check in this program may run, in whole
-/// seconds from 1 (a shorter `limit` gives 1 s): more for a machine much slower than
-/// usual, or while stepping through an answer in a debugger; less to see a stuck
-/// loop reported sooner (the course's own test of that message uses 1 s).
-pub fn set_case_time_limit(limit: Duration) {
-    CASE_LIMIT_SECONDS.store(limit.as_secs().max(1), Ordering::Relaxed);
+/// How long one case may run: what [`with_case_time_limit`] set around the check
+/// this thread runs, else `EXERCISE_SECONDS` ([`TIME_LIMIT_VARIABLE`]) if it holds a
+/// whole number of seconds from 1, else [`CASE_TIME_LIMIT`].
+pub fn case_time_limit() -> Duration {
+    LIMIT_HERE.with(Cell::get).unwrap_or_else(|| {
+        std::env::var(TIME_LIMIT_VARIABLE)
+            .ok()
+            .and_then(|s| s.trim().parse::<u64>().ok())
+            .filter(|&seconds| seconds >= 1)
+            .map_or(CASE_TIME_LIMIT, Duration::from_secs)
+    })
+}
+
+/// Runs `f` (which runs checks) with each case's time limit set to `limit`, in whole
+/// seconds from 1 (a shorter `limit` gives 1 s), and restores the limit afterwards,
+/// even if `f` panics. The limit holds only for checks run on this thread, so that a
+/// test that shortens it (the course's own test of the time-out message uses 1 s)
+/// changes nothing for the tests running beside it or after it.
+pub fn with_case_time_limit<T>(limit: Duration, f: impl FnOnce() -> T) -> T {
+    /// Puts the limit that held before back when dropped.
+    struct Restore(Option<Duration>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            LIMIT_HERE.with(|here| here.set(self.0));
+        }
+    }
+    let whole = Duration::from_secs(limit.as_secs().max(1));
+    let _restore = Restore(LIMIT_HERE.with(|here| here.replace(Some(whole))));
+    f()
 }
 
 thread_local! {
     /// True on a thread that runs a student's function: its panics are reported in
     /// the outcome, not printed.
     static QUIET: Cell<bool> = const { Cell::new(false) };
+    /// Where the last panic on this quiet thread happened (`file:line`), as the panic
+    /// hook saw it: the payload that reaches `catch_unwind` carries no place.
+    static PANICKED_AT: RefCell<Option<String>> = const { RefCell::new(None) };
 }
 
 static INSTALL_HOOK: Once = Once::new();
 
-/// Runs `f`, catching a panic and returning its message.
+/// A panic of a student's function: its message, and its place when known.
+struct Panic {
+    message: String,
+    at: Option<String>,
+}
+
+/// Runs `f`, catching a panic and returning its message and place.
 ///
-/// The panic hook is replaced once by one that stays silent on a thread that runs a
-/// student's function and otherwise calls the previous hook. (Swapping the hook in
-/// and out around every call would race between tests running in parallel.) A
-/// panic on another thread the function started (a rayon closure, say) still
-/// reaches the function, and so the outcome, but its message is printed there too.
-fn quietly(f: Job) -> Result<Box<dyn Any + Send>, String> {
+/// The panic hook is replaced once by one that, on a thread that runs a student's
+/// function, prints nothing but notes the place of the panic (the file and line the
+/// hook receives, which the caught payload does not carry), and otherwise calls the
+/// previous hook. (Swapping the hook in and out around every call would race between
+/// tests running in parallel.) A panic on another thread the function started (a
+/// rayon closure, say) still reaches the function, and so the outcome, but its
+/// message and place are printed there, and the outcome has no place.
+fn quietly(f: Job) -> Result<Box<dyn Any + Send>, Panic> {
     INSTALL_HOOK.call_once(|| {
         let previous = panic::take_hook();
         panic::set_hook(Box::new(move |info| {
-            if !QUIET.with(Cell::get) {
+            if QUIET.with(Cell::get) {
+                let at = info
+                    .location()
+                    .map(|place| format!("{}:{}", place.file(), place.line()));
+                PANICKED_AT.with(|here| *here.borrow_mut() = at);
+            } else {
                 previous(info);
             }
         }));
     });
     QUIET.with(|q| q.set(true));
+    PANICKED_AT.with(|here| here.borrow_mut().take());
     let result = panic::catch_unwind(AssertUnwindSafe(f));
     QUIET.with(|q| q.set(false));
     result.map_err(|payload| {
-        if let Some(s) = payload.downcast_ref::<&str>() {
+        let message = if let Some(s) = payload.downcast_ref::<&str>() {
             (*s).to_string()
         } else if let Some(s) = payload.downcast_ref::<String>() {
             s.clone()
         } else {
             "a panic without a message".to_string()
-        }
+        };
+        let at = PANICKED_AT.with(|here| here.borrow_mut().take());
+        Panic { message, at }
     })
 }
 
@@ -208,7 +331,7 @@ fn quietly(f: Job) -> Result<Box<dyn Any + Send>, String> {
 /// check, whatever its argument and answer types.
 struct Worker {
     jobs: mpsc::Sender<Job>,
-    answers: mpsc::Receiver<Result<Box<dyn Any + Send>, String>>,
+    answers: mpsc::Receiver<Result<Box<dyn Any + Send>, Panic>>,
 }
 
 /// One case of a student's function, ready to run.
@@ -233,17 +356,23 @@ impl Worker {
         Worker { jobs, answers }
     }
 
-    /// The answer of `job`: `Ok` with what it returned or `Err` with its panic
-    /// message; `None` if none came within [`case_time_limit`].
-    fn answer(&self, job: Job) -> Option<Result<Box<dyn Any + Send>, String>> {
+    /// The answer of `job`: `Ok` with what it returned or `Err` with its panic;
+    /// `None` if none came within [`case_time_limit`].
+    fn answer(&self, job: Job) -> Option<Result<Box<dyn Any + Send>, Panic>> {
+        let broken = |message: &str| {
+            Some(Err(Panic {
+                message: message.to_string(),
+                at: None,
+            }))
+        };
         if self.jobs.send(job).is_err() {
-            return Some(Err("the check could not start a thread to run it".into()));
+            return broken("the check could not start a thread to run it");
         }
         match self.answers.recv_timeout(case_time_limit()) {
             Ok(answer) => Some(answer),
             Err(mpsc::RecvTimeoutError::Timeout) => None,
             Err(mpsc::RecvTimeoutError::Disconnected) => {
-                Some(Err("the thread running it ended without an answer".into()))
+                broken("the thread running it ended without an answer")
             }
         }
     }
@@ -279,6 +408,31 @@ where
     A: Clone + Send + 'static,
     R: Answer + Send + 'static,
 {
+    run_compared(
+        cases,
+        reference,
+        student,
+        |_, expected: &R, got: &R| got.close(expected),
+        mistakes,
+        hint,
+    )
+}
+
+/// [`run`], with `right(args, expected, got)` deciding whether the answer `got` is
+/// right where [`Answer::close`] is not the whole story (a camera basis whose roll
+/// rounding leaves uncertain, but which must be orthonormal).
+pub(crate) fn run_compared<A, R>(
+    cases: &[Case<A>],
+    reference: impl Fn(&A) -> R,
+    student: impl Fn(A) -> R + Send + Sync + 'static,
+    right: impl Fn(&A, &R, &R) -> bool,
+    mistakes: &[Mistake<'_, A, R>],
+    hint: &str,
+) -> Outcome
+where
+    A: Clone + Send + 'static,
+    R: Answer + Send + 'static,
+{
     let worker = Worker::start();
     let student = Arc::new(student);
     for (n, (case, args)) in cases.iter().enumerate() {
@@ -289,32 +443,36 @@ where
         let got = match answer {
             Some(Ok(Ok(got))) => *got,
             Some(Ok(Err(_))) => unreachable!("a job answers with its function's type"),
-            Some(Err(message)) if message.contains("not yet implemented") => {
+            Some(Err(panic)) if panic.message.contains("not yet implemented") => {
                 return Outcome::NotStarted;
             }
-            Some(Err(message)) => {
+            Some(Err(Panic { message, at })) => {
+                let reason = Reason::Panicked { at, message };
                 return Outcome::Fail {
                     case: case.clone(),
                     expected: expected.show(),
-                    got: format!("a panic: {message}"),
+                    got: reason.summary().unwrap_or_default(),
                     hint: format!("the function must not panic on this input. {hint}"),
+                    reason,
                 };
             }
             None => {
-                let limit = case_time_limit().as_secs();
+                let seconds = case_time_limit().as_secs();
+                let reason = Reason::TimedOut { seconds };
                 return Outcome::Fail {
                     case: case.clone(),
                     expected: expected.show(),
-                    got: format!("no answer within {limit} s"),
+                    got: reason.summary().unwrap_or_default(),
                     hint: format!(
-                        "case {} ({case}) did not finish within {limit} s: an infinite loop? \
+                        "case {} ({case}) did not finish within {seconds} s: an infinite loop? \
                          Look for a loop whose condition never changes. {hint}",
                         n + 1
                     ),
+                    reason,
                 };
             }
         };
-        if !got.close(&expected) {
+        if !right(args, &expected, &got) {
             let hint = mistakes
                 .iter()
                 .find(|m| (m.looks_like)(args, &got))
@@ -324,6 +482,7 @@ where
                 expected: expected.show(),
                 got: got.show(),
                 hint: hint.to_string(),
+                reason: Reason::Wrong,
             };
         }
     }

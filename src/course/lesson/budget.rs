@@ -52,7 +52,9 @@ impl ImageFlags {
     /// [`ImageFlags::run`] with `--mine` pictures ([`mine::Picture`]): `mine` gives
     /// them first (the student's functions checked, so that a failing check stops
     /// the lesson before any work), the budget counts them among the images held,
-    /// and after `lesson` each is drawn at the same size and saved in `out`.
+    /// and after `lesson` each is drawn at the same size, saved in `out`, and compared
+    /// with the lesson's picture it should equal, in one printed line
+    /// ([`mine::compared`]).
     pub fn run_with_mine(
         &self,
         images: u64,
@@ -76,7 +78,13 @@ impl ImageFlags {
             lesson(checked.size())?;
             if let Some(out) = out {
                 for picture in pictures {
-                    out.image(picture.file, &(picture.draw)(checked.size())?)?;
+                    let image = (picture.draw)(checked.size())?;
+                    out.image(picture.file, &image)?;
+                    if let Some(line) =
+                        mine::compared(&image, picture.file, &out.file(picture.like))
+                    {
+                        super::print(&format!("{line}\n"));
+                    }
                 }
             }
             Ok(())

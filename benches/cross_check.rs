@@ -195,7 +195,9 @@ fn object_json(object: &Object) -> Result<String, String> {
         other => return Err(format!("no Mitsuba counterpart for {other:?}")),
     };
     let material = match object.material {
-        Material::Diffuse { albedo } => format!("{{\"type\": \"diffuse\", \"albedo\": {}}}", v(albedo)),
+        Material::Diffuse { albedo } => {
+            format!("{{\"type\": \"diffuse\", \"albedo\": {}}}", v(albedo))
+        }
         Material::Mirror { reflectance } => format!(
             "{{\"type\": \"mirror\", \"reflectance\": {}}}",
             v(reflectance)

@@ -59,6 +59,7 @@ CONFIGS = [
 ZMAPS = ["cornell_mis_1", "cornell_mis_2", "cornell_mis_8", "two-lights_mis_1"]
 
 SAMPLING_NAMES = {"cosine": "cosine", "mis": "MIS", "nee": "next event"}
+SCENE_NAMES = {"cornell": "Cornell box", "two-lights": "two lights"}
 
 
 # ---------------------------------------------------------------- the crate
@@ -178,6 +179,7 @@ def rectangle_of_quad(q):
     return frame_matrix(a, b, q["normal"], centre)
 
 
+# ANCHOR: bsdf
 def bsdf_of(material):
     kind = material["type"]
     if kind == "diffuse":
@@ -186,12 +188,14 @@ def bsdf_of(material):
                 "bsdf": {"type": "diffuse",
                          "reflectance": {"type": "rgb", "value": material["albedo"]}}}
     if kind == "mirror":
+        reflectance = {"type": "rgb", "value": material["reflectance"]}
         return {"type": "conductor", "material": "none",
-                "specular_reflectance": {"type": "rgb", "value": material["reflectance"]}}
+                "specular_reflectance": reflectance}
     if kind == "glass":
         # Outside the glass: index 1 (`Material::Glass`).
         return {"type": "dielectric", "int_ior": material["ior"], "ext_ior": 1.0}
     sys.exit(f"cross-check: no Mitsuba BSDF for {material}")
+# ANCHOR_END: bsdf
 
 
 def mitsuba_dict(desc, max_depth, spp):
@@ -206,7 +210,8 @@ def mitsuba_dict(desc, max_depth, spp):
     if abs(x1 / y1 - cam["width"] / cam["height"]) > 1e-5:
         sys.exit("cross-check: the film's pixels are not square")
     if any(desc["background"]):
-        sys.exit("cross-check: a scene with a background needs a Mitsuba `constant` emitter")
+        sys.exit("cross-check: a background needs a Mitsuba `constant` emitter")
+    # ANCHOR: sensor
     fov = math.degrees(2 * math.atan(y1 / cam["screen_distance"]))
     scene = {
         "type": "scene",
@@ -221,6 +226,7 @@ def mitsuba_dict(desc, max_depth, spp):
             "sampler": {"type": "independent", "sample_count": spp},
         },
     }
+    # ANCHOR_END: sensor
     planes = [o["shape"] for o in desc["objects"] if o["shape"]["type"] == "plane"]
     box = box_of(planes)
     for index, o in enumerate(desc["objects"]):
@@ -229,7 +235,8 @@ def mitsuba_dict(desc, max_depth, spp):
             m = {"type": "rectangle",
                  "to_world": mi.ScalarTransform4f(rectangle_of_plane(shape, box))}
         elif shape["type"] == "quad":
-            m = {"type": "rectangle", "to_world": mi.ScalarTransform4f(rectangle_of_quad(shape))}
+            m = {"type": "rectangle",
+                 "to_world": mi.ScalarTransform4f(rectangle_of_quad(shape))}
         elif shape["type"] == "sphere":
             m = {"type": "sphere", "center": shape["centre"], "radius": shape["radius"]}
         else:
@@ -239,7 +246,8 @@ def mitsuba_dict(desc, max_depth, spp):
             # lamp's one side, or a sphere's outside, all that can be seen of it.
             if not (o["front_only"] or shape["type"] == "sphere"):
                 sys.exit(f"cross-check: a two-sided emitter Mitsuba cannot match: {shape}")
-            m["emitter"] = {"type": "area", "radiance": {"type": "rgb", "value": o["emission"]}}
+            m["emitter"] = {"type": "area",
+                            "radiance": {"type": "rgb", "value": o["emission"]}}
         m["bsdf"] = bsdf_of(o["material"])
         scene[f"object_{index}"] = m
     return scene, fov
@@ -314,16 +322,18 @@ def z_of_p(p, sign):
     return -sign * NormalDist().inv_cdf(p / 2) if p < 1 else 0.0
 
 
-def mean_and_se(values):
+def mean_and_se2(values):
+    """The mean of `values` and the square of its standard error."""
     n = len(values)
     m = sum(values) / n
     var = sum((v - m) ** 2 for v in values) / (n - 1)
     return m, var / n
 
 
+# ANCHOR: welch
 def welch(a, b):
     """(z, p) of mean(a) - mean(b): Welch's t and its degrees of freedom."""
-    (ma, va), (mb, vb) = mean_and_se(a), mean_and_se(b)
+    (ma, va), (mb, vb) = mean_and_se2(a), mean_and_se2(b)
     diff, var = ma - mb, va + vb
     if var == 0:
         return (0.0, 1.0) if diff == 0 else (math.copysign(math.inf, diff), 0.0)
@@ -331,10 +341,11 @@ def welch(a, b):
     t = diff / math.sqrt(var)
     p = t_two_sided_p(t, dof)
     return z_of_p(p, math.copysign(1, t)), p
+# ANCHOR_END: welch
 
 
 def one_sample(a, exact):
-    m, v = mean_and_se(a)
+    m, v = mean_and_se2(a)
     diff = m - exact
     if v == 0:
         return (0.0, 1.0) if abs(diff) <= 1e-12 * abs(exact) else (math.copysign(math.inf, diff), 0.0)
@@ -540,7 +551,7 @@ def compare(desc, scene, sampling, depth, spp, scratch, exact, cache):
             a = [r[k][c] for r in r_ours]
             b = [r[k][c] for r in r_theirs]
             z, p = welch(a, b)
-            se = math.sqrt(mean_and_se(a)[1] + mean_and_se(b)[1])
+            se = math.sqrt(mean_and_se2(a)[1] + mean_and_se2(b)[1])
             cell = {"crate": sum(a) / len(a), "mitsuba": sum(b) / len(b), "z": z, "p": p,
                     "se": se}
             if exact is not None and exact[k] is not None:
@@ -592,11 +603,8 @@ def tests_of(result):
 
 
 def label(r):
-    return (f"{r['scene']}, {SAMPLING_NAMES[r['sampling']]}, "
+    return (f"{SCENE_NAMES[r['scene']]}, {SAMPLING_NAMES[r['sampling']]}, "
             f"depth {r['depth']} (Mitsuba {r['depth'] + 1})")
-
-
-SCENE_NAMES = {"cornell": "Cornell box", "two-lights": "two lights"}
 
 
 def catchable(r, z_limit):
@@ -649,14 +657,43 @@ def anchor(name):
     return name.replace("-", "_")
 
 
-def write_outputs(out_dir, results, z_limit, alpha, m, fov, seconds):
+def vec(v):
+    return "(" + ", ".join(f"{x + 0.0:g}" for x in v) + ")"
+
+
+def parameters(desc, fov):
+    """The Cornell box's camera and lamp as the crate holds them, and what Mitsuba
+    is given for them."""
+    cam = desc["camera"]
+    lamp = next(o for o in desc["objects"] if o["front_only"])
+    q = lamp["shape"]
+    half = cam["y_extent"][1]
+    return "\n".join([
+        "| the crate's value | | Mitsuba's |",
+        "|---|---|---|",
+        f"| eye | {vec(cam['eye'])} | sensor `\"origin\"` |",
+        f"| **w** (from the scene to the eye) | {vec(cam['w'])} "
+        "| `\"target\"`: eye - **w** |",
+        f"| **v** | {vec(cam['v'])} | `\"up\"` |",
+        f"| film half height, screen distance | {half:g}, {cam['screen_distance']:g} "
+        f"| `\"fov\"`: 2 atan({half:g}) = {fov:.4f} degrees, `\"fov_axis\": \"y\"` |",
+        f"| lamp: corner, edge ends | {vec(q['corner'])}, {vec(q['end_a'])}, "
+        f"{vec(q['end_b'])} | `\"rectangle\"` with that centre and half edges |",
+        f"| lamp: normal, radiance | {vec(q['normal'])}, {lamp['emission'][0]:g} "
+        "| `\"area\"` emitter, one-sided, black BSDF |",
+    ])
+
+
+def write_outputs(out_dir, results, z_limit, alpha, m, desc, fov):
     os.makedirs(out_dir, exist_ok=True)
     md = ["<!-- Written by scripts/cross-check; do not edit. -->"]
     md += ["<!-- ANCHOR: setup -->",
            f"{WIDTH} x {HEIGHT} pixels, {GRID} x {GRID} regions, {SEEDS} seeds per renderer; "
-           f"fov {fov:.4f} degrees; {m} tests, family-wise alpha {alpha}, "
-           f"so |z| above {z_limit:.2f} fails",
+           f"{m} tests, family-wise alpha {alpha}: a test fails at |z| above {z_limit:.2f}",
            "<!-- ANCHOR_END: setup -->"]
+    if desc is not None:
+        md += ["<!-- ANCHOR: parameters -->", parameters(desc, fov),
+               "<!-- ANCHOR_END: parameters -->"]
     md += ["<!-- ANCHOR: summary -->", summary_table(results, z_limit),
            "<!-- ANCHOR_END: summary -->"]
     for r in results:
@@ -717,7 +754,7 @@ def main():
         print()
         print(f"{label(r)}: region means crate / Mitsuba (grey), z of the channel furthest off")
         print(region_table(r))
-    write_outputs(args.out, results, z_limit, ALPHA, m, fov or 0.0, seconds)
+    write_outputs(args.out, results, z_limit, ALPHA, m, descs.get("cornell"), fov)
     failed = [t for t in tests if t[0] < p_limit]
     worst = max(tests, key=lambda t: abs(t[1]))
     print()

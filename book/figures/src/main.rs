@@ -11,6 +11,7 @@ use clap::Parser;
 use render_lessons::Result;
 use render_lessons::course::lesson::{self, Output};
 
+mod cross_check;
 mod lesson09;
 mod lesson10;
 mod variance;
@@ -31,6 +32,7 @@ const LESSONS: &[(&str, Figures)] = &[
     ("lesson 09", lesson09::figures),
     ("lesson 10", lesson10::figures),
     ("lesson 10, variance", variance::figures),
+    ("lesson 10, cross-check", cross_check::figures),
 ];
 
 fn main() -> ExitCode {

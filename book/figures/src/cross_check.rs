@@ -1,0 +1,130 @@
+//! Lesson 10's cross-check figure: the per-pixel z of the crate's image minus
+//! Mitsuba 3's, one map per configuration, from the numbers `scripts/cross-check
+//! --update` measured and committed (`chapters/figures/10_9_cross_check_z.csv`).
+//! No render happens here: the figure shows that run's numbers, as the page's table
+//! does.
+
+use std::path::Path;
+
+use glam::Vec2;
+use render_lessons::course::diagram::{Diagram, Place, palette};
+use render_lessons::course::lesson::Output;
+use render_lessons::{Error, Result};
+
+/// The committed z-maps, beside the book's figures.
+const DATA: &str = "chapters/figures/10_9_cross_check_z.csv";
+
+/// Each map's pixels are drawn this many screen pixels wide.
+const ZOOM: u32 = 4;
+/// |z| at which the colour saturates.
+const Z_FULL: f32 = 4.0;
+/// Caption size in pixels, and the gap between panels.
+const TEXT: f32 = 15.0;
+const GAP: u32 = 24;
+
+/// Writes `10_9_zmap.png`.
+pub fn figures(out: &Output) -> Result<()> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(DATA);
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::Io {
+        path: DATA.to_string(),
+        message: e.to_string(),
+    })?;
+    out.diagram("10_9_zmap.png", &zmap_figure(&text)?)
+}
+
+/// One configuration's map: its label and the z of each pixel, rows from the top.
+type Map = (String, Vec<f32>);
+
+/// The size ("W x H" in the header line) and the maps.
+fn parse(text: &str) -> Result<((u32, u32), Vec<Map>)> {
+    let bad = |message: &str| Error::Io {
+        path: DATA.to_string(),
+        message: message.to_string(),
+    };
+    let mut lines = text.lines();
+    let header = lines.next().ok_or_else(|| bad("empty"))?;
+    let size = header
+        .split(", ")
+        .find_map(|part| {
+            let (w, rest) = part.split_once(" x ")?;
+            let h = rest.split_whitespace().next()?;
+            Some((w.trim().parse().ok()?, h.parse().ok()?))
+        })
+        .ok_or_else(|| bad("no size in the header"))?;
+    let mut maps = Vec::new();
+    for line in lines {
+        let (label, values) = line.split_once(';').ok_or_else(|| bad("no ';'"))?;
+        let z: Vec<f32> = values
+            .split(',')
+            .map(|v| v.parse().map_err(|_| bad("a z that is not a number")))
+            .collect::<Result<_>>()?;
+        if z.len() != (size.0 * size.1) as usize {
+            return Err(bad("a map of the wrong size"));
+        }
+        maps.push((label.to_string(), z));
+    }
+    Ok((size, maps))
+}
+
+/// Blue for negative z, white for 0, red for positive, full at |z| = Z_FULL.
+fn colour(z: f32) -> [u8; 4] {
+    let t = (z.abs() / Z_FULL).min(1.0);
+    let fade = |full: u8| (255.0 + (f32::from(full) - 255.0) * t).round() as u8;
+    let (r, g, b) = if z >= 0.0 {
+        (fade(200), fade(30), fade(30))
+    } else {
+        (fade(30), fade(80), fade(200))
+    };
+    [r, g, b, 255]
+}
+
+/// The maps two to a row, each under its caption, and a colour bar under them.
+pub fn zmap_figure(text: &str) -> Result<Diagram> {
+    let ((w, h), maps) = parse(text)?;
+    let (pw, ph) = (w * ZOOM, h * ZOOM);
+    let band = (TEXT * 1.8) as u32;
+    let columns = 2;
+    let rows = (maps.len() as u32).div_ceil(columns);
+    let legend = 70;
+    let width = columns * pw + (columns + 1) * GAP;
+    let height = rows * (band + ph) + GAP + legend;
+    let mut d = Diagram::new(width, height, (0.0, width as f32), (0.0, height as f32))?;
+    for (k, (label, z)) in maps.iter().enumerate() {
+        let (col, row) = (k as u32 % columns, k as u32 / columns);
+        let left = GAP + col * (pw + GAP);
+        let top = row * (band + ph) + band;
+        let mut rgba = Vec::with_capacity((pw * ph * 4) as usize);
+        for y in 0..ph {
+            for x in 0..pw {
+                rgba.extend(colour(z[((y / ZOOM) * w + x / ZOOM) as usize]));
+            }
+        }
+        d.image_px(left, top, pw, &rgba);
+        let centre = Vec2::new((left + pw / 2) as f32, (top - band / 2) as f32);
+        d.text_px(centre, label, TEXT, palette::INK, Place::Centre);
+    }
+    // The colour bar: z from -Z_FULL to Z_FULL.
+    let (bar_w, bar_h) = (width - 4 * GAP, 14);
+    let bar_top = height - legend + 10;
+    let mut rgba = Vec::new();
+    for _ in 0..bar_h {
+        for x in 0..bar_w {
+            let z = (x as f32 / (bar_w - 1) as f32 * 2.0 - 1.0) * Z_FULL;
+            rgba.extend(colour(z));
+        }
+    }
+    d.image_px(2 * GAP, bar_top, bar_w, &rgba);
+    for tick in [-4, -2, 0, 2, 4] {
+        let x = 2 * GAP + ((tick as f32 / Z_FULL + 1.0) / 2.0 * (bar_w - 1) as f32) as u32;
+        let at = Vec2::new(x as f32, (bar_top + bar_h + 4) as f32);
+        let label = if tick > 0 {
+            format!("+{tick}")
+        } else {
+            tick.to_string()
+        };
+        d.text_px(at, &label, TEXT, palette::INK, Place::Below);
+    }
+    Ok(d)
+}

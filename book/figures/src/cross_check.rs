@@ -27,8 +27,9 @@ pub fn figures(out: &Output) -> Result<()> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../..")
         .join(DATA);
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::Io {
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::File {
         path: DATA.to_string(),
+        line: None,
         message: e.to_string(),
     })?;
     out.diagram("10_9_zmap.png", &zmap_figure(&text)?)
@@ -39,8 +40,9 @@ type Map = (String, Vec<f32>);
 
 /// The size ("W x H" in the header line) and the maps.
 fn parse(text: &str) -> Result<((u32, u32), Vec<Map>)> {
-    let bad = |message: &str| Error::Io {
+    let bad = |message: &str| Error::File {
         path: DATA.to_string(),
+        line: None,
         message: message.to_string(),
     };
     let mut lines = text.lines();

@@ -154,3 +154,120 @@ fn the_claim_checker_can_fail() {
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].contains("does not exist"), "{found:?}");
 }
+
+/// Phrases that say several measurements were taken together (issue 30, part 3).
+const RUN_CLAIMS: &[&str] = &["one run", "same run", "one `--full` run"];
+
+/// The stamp of a fragment file that names its run ("... run on 2 cores of ...,
+/// load average 1.16, 2026-11-23"), if it has one.
+fn stamp(fragment: &str) -> Option<String> {
+    fragment.lines().find_map(|line| {
+        let start = line.find(" run on ")?;
+        let rest = &line[start..];
+        let end = rest.find(": they change").unwrap_or(rest.len());
+        Some(rest[..end].to_string())
+    })
+}
+
+/// The stamp an include shows: the one inside its anchor, or, for a fragment of
+/// `chapters/figures/` (each written by one run), the file's.
+fn included_stamp(args: &str, fragment: &dyn Fn(&str) -> Option<String>) -> Option<String> {
+    let (path, anchor) = args.split_once(':').unwrap_or((args, ""));
+    let text = fragment(path)?;
+    let begin = format!("ANCHOR: {anchor}");
+    let shown = text
+        .split_once(&begin)
+        .and_then(|(_, rest)| rest.split_once(&format!("ANCHOR_END: {anchor}")))
+        .map(|(inside, _)| inside.to_string());
+    match shown.as_deref().and_then(stamp) {
+        Some(found) => Some(found),
+        None if path.starts_with("figures/") => stamp(&text),
+        None => None,
+    }
+}
+
+/// The problems of one page's run claims: a paragraph that says its numbers come
+/// from one run (or the same run) must include, in its section (from it to the end
+/// of the page if it says "below"), only fragments stamped by one run. `fragment`
+/// reads an included file by its path relative to `chapters/`.
+fn check_runs(page: &str, text: &str, fragment: &dyn Fn(&str) -> Option<String>) -> Vec<String> {
+    let sections: Vec<&str> = text.split("\n## ").collect();
+    let mut problems = Vec::new();
+    for (s, section) in sections.iter().enumerate() {
+        for paragraph in section.split("\n\n") {
+            let low = paragraph.to_lowercase();
+            let Some(phrase) = RUN_CLAIMS.iter().find(|p| low.contains(*p)) else {
+                continue;
+            };
+            let scope = if low.contains("below") {
+                let from = section.find(paragraph).unwrap_or(0);
+                let mut rest = section[from..].to_string();
+                for later in &sections[s + 1..] {
+                    rest += later;
+                }
+                rest
+            } else {
+                section.to_string()
+            };
+            let mut stamps: Vec<String> = scope
+                .split("{{#include ")
+                .skip(1)
+                .filter_map(|inc| inc.split("}}").next())
+                .filter_map(|args| included_stamp(args, fragment))
+                .collect();
+            stamps.sort();
+            stamps.dedup();
+            if stamps.len() > 1 {
+                problems.push(format!(
+                    "{page}: \"{phrase}\", but its section includes {} runs: {}",
+                    stamps.len(),
+                    stamps.join(" | ")
+                ));
+            }
+        }
+    }
+    problems
+}
+
+#[test]
+fn a_sentence_about_one_run_includes_one_runs_stamps() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let chapters = root.join("chapters");
+    let fragment = |path: &str| fs::read_to_string(chapters.join(path)).ok();
+    let mut problems = Vec::new();
+    for entry in fs::read_dir(&chapters).expect("chapters/").flatten() {
+        let name = entry.file_name().to_string_lossy().to_string();
+        if name.ends_with(".md") {
+            let text = fs::read_to_string(entry.path()).expect("page");
+            problems.extend(check_runs(&name, &text, &fragment));
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn the_run_checker_can_fail() {
+    let stamped = |load: &str| {
+        format!(
+            "| 1 |\n\nTimes from one `--full` run on 2 cores, load {load}, 2026-11-23: they change.\n"
+        )
+    };
+    let fragment = |path: &str| match path {
+        "figures/a.md" => Some(stamped("1.0")),
+        "figures/b.md" => Some(stamped("2.0")),
+        "figures/c.md" => Some(stamped("1.0")),
+        _ => None,
+    };
+    let one =
+        "## S\n\nFrom one run:\n\n{{#include figures/a.md:t}}\n\n{{#include figures/c.md:t}}\n";
+    assert!(check_runs("p.md", one, &fragment).is_empty());
+    let two =
+        "## S\n\nFrom one run:\n\n{{#include figures/a.md:t}}\n\n{{#include figures/b.md:t}}\n";
+    assert_eq!(check_runs("p.md", two, &fragment).len(), 1);
+    // "below" reaches past the section's end; without it, the next section is apart.
+    let below = "## S\n\nThe tables below come from one run.\n\n## T\n\n{{#include figures/a.md:t}}\n{{#include figures/b.md:t}}\n";
+    assert_eq!(check_runs("p.md", below, &fragment).len(), 1);
+    let apart =
+        "## S\n\nOne run.\n\n## T\n\n{{#include figures/a.md:t}}\n{{#include figures/b.md:t}}\n";
+    assert!(check_runs("p.md", apart, &fragment).is_empty());
+}

@@ -3,6 +3,7 @@
 //! snapshot exactly what the lessons print.
 
 use std::fmt;
+use std::sync::OnceLock;
 
 use glam::Vec3;
 
@@ -184,34 +185,49 @@ pub struct Run {
     pub quality: &'static str,
     /// The machine, e.g. "2 cores of AMD EPYC, load average 1.5".
     pub machine: String,
-    /// The day, `YYYY-MM-DD` (UTC).
+    /// The day and minute the run started, `YYYY-MM-DD hh:mm UTC`.
     pub date: String,
 }
 
 impl Run {
-    /// This machine, now.
+    /// This machine, as it was when this program first asked: every table of one
+    /// program names the same run, its load average at the start and the start's
+    /// minute, so tables from different runs can be told apart.
     pub fn here(quality: &'static str) -> Run {
-        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-        let cpu = std::fs::read_to_string("/proc/cpuinfo")
-            .ok()
-            .and_then(|text| {
-                text.lines()
-                    .find(|l| l.starts_with("model name"))
-                    .and_then(|l| l.split_once(':'))
-                    .map(|(_, name)| name.split_whitespace().collect::<Vec<_>>().join(" "))
-            })
-            .unwrap_or_else(|| "an unnamed CPU".to_string());
-        let load = std::fs::read_to_string("/proc/loadavg")
-            .ok()
-            .and_then(|text| text.split_whitespace().next().map(str::to_string))
-            .map_or(String::new(), |l| format!(", load average {l}"));
-        let days = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_secs() / 86_400);
+        static START: OnceLock<(String, String)> = OnceLock::new();
+        let (machine, date) = START.get_or_init(|| {
+            let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+            let cpu = std::fs::read_to_string("/proc/cpuinfo")
+                .ok()
+                .and_then(|text| {
+                    text.lines()
+                        .find(|l| l.starts_with("model name"))
+                        .and_then(|l| l.split_once(':'))
+                        .map(|(_, name)| name.split_whitespace().collect::<Vec<_>>().join(" "))
+                })
+                .unwrap_or_else(|| "an unnamed CPU".to_string());
+            let load = std::fs::read_to_string("/proc/loadavg")
+                .ok()
+                .and_then(|text| text.split_whitespace().next().map(str::to_string))
+                .map_or(String::new(), |l| {
+                    format!(", load average {l} at its start")
+                });
+            let seconds = std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.as_secs());
+            let minute = (seconds % 86_400) / 60;
+            let date = format!(
+                "{} {:02}:{:02} UTC",
+                civil_date((seconds / 86_400) as i64),
+                minute / 60,
+                minute % 60
+            );
+            (format!("{cores} cores of {cpu}{load}"), date)
+        });
         Run {
             quality,
-            machine: format!("{cores} cores of {cpu}{load}"),
-            date: civil_date(days as i64),
+            machine: machine.clone(),
+            date: date.clone(),
         }
     }
 

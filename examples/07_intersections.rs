@@ -39,21 +39,17 @@ fn main() -> ExitCode {
 /// The lesson's loop: each ray against its shape by the naive method and by the
 /// robust one, side by side; every crossing of the whole line, or "miss".
 pub fn naive_and_robust<'a>(cases: impl IntoIterator<Item = &'a Case>) -> String {
-    let columns = ["shape", "naive", "crossings t", "robust", "crossings t"];
+    let columns = ["shape", "", "method", "crossings t"];
     let mut table = Table::new("Naive and robust methods on the same rays", &columns);
     let ts = |ts: Vec<f32>| match ts.is_empty() {
         true => "miss".to_string(),
         false => nums(&ts, 4),
     };
+    // Two rows a shape, so the table fits a page's code column.
     for Case { name, shape, ray } in cases {
         let [(naive, a), (robust, b)] = methods(shape, ray);
-        table.row(vec![
-            name.to_string(),
-            naive.into(),
-            ts(a),
-            robust.into(),
-            ts(b),
-        ]);
+        table.row(vec![name.to_string(), "naive".into(), naive.into(), ts(a)]);
+        table.row(vec![String::new(), "robust".into(), robust.into(), ts(b)]);
     }
     table.to_string()
 }
@@ -139,28 +135,23 @@ pub fn hard_cases() -> Result<Vec<Case>> {
 
 /// The lesson's table: each case's crossings, then its nearest hit with t > 0.
 pub fn numbers(cases: &[Case]) -> String {
-    let mut table = Table::new(
-        "One ray per primitive: every crossing, then the nearest hit with t > 0",
-        &[
-            "shape",
-            "ray origin",
-            "ray direction",
-            "crossings t",
-            "hit point",
-            "outward normal",
-            "face",
-        ],
-    );
+    // Two tables, the ray and then its hit, so each fits a page's code column.
+    let columns = ["shape", "ray origin", "ray direction", "crossings t"];
+    let mut rays = Table::new("One ray per primitive: every crossing", &columns);
+    let columns = ["shape", "hit point", "outward normal", "face"];
+    let mut hits = Table::new("Then the nearest hit with t > 0", &columns);
     for Case { name, shape, ray } in cases {
-        let mut row = vec![name.to_string(), vec3(ray.origin(), 2)];
-        row.extend([vec3(ray.direction(), 4), nums(&shape.crossings(ray), 4)]);
-        row.extend(match shape.hit(ray, Interval::AHEAD) {
+        let (origin, direction) = (vec3(ray.origin(), 2), vec3(ray.direction(), 4));
+        let crossings = nums(&shape.crossings(ray), 4);
+        rays.row(vec![name.to_string(), origin, direction, crossings]);
+        let mut hit = vec![name.to_string()];
+        hit.extend(match shape.hit(ray, Interval::AHEAD) {
             Some(h) => [vec3(h.point, 4), vec3(h.normal, 4), face(h.front_face)],
             None => ["miss", "-", "-"].map(String::from),
         });
-        table.row(row);
+        hits.row(hit);
     }
-    table.to_string()
+    format!("{rays}\n{hits}")
 }
 
 /// The side of the surface a ray arrives from.

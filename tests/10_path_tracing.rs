@@ -1780,25 +1780,29 @@ fn after(snap: &str, before: &str) -> f64 {
 /// the crossings, the hit point and the outward normal.
 fn lesson_07_row(shape: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     let snap = std::fs::read_to_string("tests/snapshots/07_intersections__numbers.snap").unwrap();
-    let line = snap
+    // The shape's row in the table of rays, then in the table of hits.
+    let mut rows = snap
         .lines()
-        .find(|l| l.split_whitespace().next() == Some(shape))
-        .unwrap_or_else(|| panic!("no row {shape}"));
+        .filter(|l| l.split_whitespace().next() == Some(shape));
+    let (ray, hit) = (rows.next(), rows.next());
+    let (Some(ray), Some(hit)) = (ray, hit) else {
+        panic!("no rows {shape}");
+    };
     let numbers = |s: &str| -> Vec<f64> {
         s.split(|c: char| c == ',' || c.is_whitespace())
             .filter(|x| !x.is_empty())
             .map(|x| x.parse().unwrap())
             .collect()
     };
-    // Origin, direction, crossings (not in brackets), hit point, normal.
-    let tuples: Vec<&str> = line
+    // Rays: origin, direction, then the crossings (not in brackets). Hits: the hit
+    // point and the normal.
+    let crossings = ray.split(')').nth(2).unwrap();
+    let tuples: Vec<&str> = hit
         .split('(')
         .skip(1)
         .map(|s| &s[..s.find(')').unwrap()])
         .collect();
-    let after_direction = line.split(')').nth(2).unwrap();
-    let crossings = &after_direction[..after_direction.find('(').unwrap()];
-    (numbers(crossings), numbers(tuples[2]), numbers(tuples[3]))
+    (numbers(crossings), numbers(tuples[0]), numbers(tuples[1]))
 }
 
 #[test]

@@ -5,7 +5,7 @@
 //! shear), so scale, rotation and translation all compose by multiplication.
 //!
 //! Every matrix below is written out row by row, exactly as the slides print it;
-//! `tests/01_transforms.rs` checks each one against glam's own constructors.
+//! `tests/lessons/lesson_01_transforms.rs` checks each one against glam's own constructors.
 
 use std::ops::Mul;
 

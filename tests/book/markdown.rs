@@ -1,4 +1,4 @@
-//! Markdown helpers shared by the book checks (`tests/book.rs`, `tests/book_numbers.rs`).
+//! Markdown helpers shared by the book checks (`includes`, `numbers`).
 
 /// An opening or closing code fence: (fence char, run length, info string).
 pub fn fence(line: &str) -> Option<(char, usize, &str)> {

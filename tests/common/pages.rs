@@ -1,5 +1,5 @@
 //! The book's pages and the tests' insta snapshots, read as text from the root of
-//! the crate.
+//! the crate, and the numbers a page quotes from them.
 
 use std::fs;
 use std::path::PathBuf;
@@ -42,4 +42,63 @@ pub fn after_header(snapshot: &str) -> &str {
     parts.next();
     parts.next();
     parts.next().expect("an insta snapshot has a header")
+}
+
+/// The first number in `phrase`, as printed: digits with an optional sign (`-` or
+/// `−`) and decimal point.
+pub fn first_number(phrase: &str) -> &str {
+    let is_sign = |c: char| c == '-' || c == '−';
+    let start = phrase
+        .char_indices()
+        .find(|&(i, c)| {
+            c.is_ascii_digit()
+                || (is_sign(c)
+                    && phrase[i + c.len_utf8()..].starts_with(|d: char| d.is_ascii_digit()))
+        })
+        .map(|(i, _)| i)
+        .unwrap_or_else(|| panic!("no number in {phrase:?}"));
+    let len = phrase[start..]
+        .char_indices()
+        .skip(1)
+        .find(|&(_, c)| !(c.is_ascii_digit() || c == '.'))
+        .map_or(phrase.len() - start, |(i, _)| i);
+    phrase[start..start + len].trim_end_matches('.')
+}
+
+/// The page `name` contains `phrase`, and the first number in it is `value` rounded
+/// to the decimals it shows ("0.07" for 0.06995, "−0.487" for -0.4871).
+pub fn assert_quotes(name: &str, phrase: &str, value: f64) {
+    let text = page(name);
+    assert!(
+        text.contains(phrase),
+        "chapters/{name} no longer says {phrase:?}"
+    );
+    let quoted = first_number(phrase);
+    let plain = quoted.replace('−', "-");
+    let decimals = plain.split_once('.').map_or(0, |(_, d)| d.len());
+    assert_eq!(
+        format!("{value:.decimals$}"),
+        plain,
+        "chapters/{name} quotes {quoted} in {phrase:?}; the value is {value}"
+    );
+}
+
+/// The number in `column` (0: the first after the label) of the row of a snapshot's
+/// table whose label is `label` (followed by at least two spaces).
+pub fn cell(snap: &str, label: &str, column: usize) -> f64 {
+    snap.lines()
+        .find_map(|line| {
+            let rest = line.strip_prefix(label)?;
+            rest.starts_with("  ").then_some(())?;
+            rest.split_whitespace().nth(column)?.parse().ok()
+        })
+        .unwrap_or_else(|| panic!("no row {label:?} with a column {column}"))
+}
+
+/// The number that follows `before` in a snapshot (up to a space or `;`).
+pub fn after(snap: &str, before: &str) -> f64 {
+    let start = snap.find(before).unwrap_or_else(|| panic!("no {before:?}")) + before.len();
+    let rest = &snap[start..];
+    let end = rest.find([' ', ';', '\n', ')']).unwrap_or(rest.len());
+    rest[..end].parse().unwrap()
 }

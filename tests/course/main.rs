@@ -13,6 +13,7 @@ mod examples;
 
 mod architecture;
 mod bvh;
+mod bvh_builds;
 mod lesson_11_book_numbers;
 mod lesson_11_fast_paths;
 mod lesson_11_geometry_charts;
@@ -20,3 +21,4 @@ mod lesson_11_lessons_chart;
 mod lesson_11_rendering_charts;
 mod lesson_11_scaling;
 mod porting;
+mod porting_shapes;

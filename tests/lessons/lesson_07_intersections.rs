@@ -1,15 +1,18 @@
-//! Lesson 07: ray / primitive intersection, and where the naive methods fail
-//! (STABILITY S1, S2, S4 to S8).
+//! Lesson 07: ray / primitive intersection. The lesson's own table (its snapshots),
+//! the naive and the robust method on its rays, every shape's hit points on their
+//! surface (a property over random rays), bad input, and the numbers the pages work
+//! out. The shapes one by one, with the STABILITY cases of each: `lesson_07_sphere`
+//! (S1, S2), `lesson_07_plane` (S3), `lesson_07_box` (S6, S8), `lesson_07_triangle`
+//! (S4, S5, S7), `lesson_07_quadrics` (S9), `lesson_07_instances`, `lesson_07_cylinder`.
 //!
 //! Expected values are worked out by hand (or in f64 from the same f32 inputs), not
 //! by the code under test. Failure rates are measured, never hard-coded: the tests
 //! assert that the naive method is wrong often and the robust one (almost) never.
 
 use crate::common;
+use crate::common::pages::assert_quotes;
 
 use crate::examples::intersections as lesson;
-use render_lessons::course::measure::Quality;
-use render_lessons::course::measure::triangle::{BoxCounts, box_cases, box_counts};
 
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
@@ -17,577 +20,7 @@ use render_lessons::Error;
 use render_lessons::course::diagram::cross_section;
 use render_lessons::error::Problem;
 use render_lessons::ray::{ClosedSpan, Interval, Ray};
-use render_lessons::shapes::{Aabb, Barycentric, Plane, Shape, Sphere, Triangle};
-
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
-
-fn unit_sphere() -> Sphere {
-    Sphere::new(Vec3::ZERO, 1.0).unwrap()
-}
-
-/// A pair of roots, or the entry and exit of a slab interval; `None` for a miss.
-type Pair = Option<(f32, f32)>;
-
-fn close(a: (f32, f32), b: (f32, f32), tol: f32) -> bool {
-    (a.0 - b.0).abs() <= tol && (a.1 - b.1).abs() <= tol
-}
-
-// ---------------------------------------------------------------- sphere
-
-#[test]
-fn sphere_known_answers_both_root_finders() {
-    let s = unit_sphere();
-    let cases: [([f32; 3], Pair); 4] = [
-        // Straight through: |z| = 1 at z = -5 + t, so t = 4 and 6.
-        ([0.0, 0.0, -5.0], Some((4.0, 6.0))),
-        // Tangent at (0, 1, 0): a double root at t = 5.
-        ([0.0, 1.0, -5.0], Some((5.0, 5.0))),
-        // Passes at distance 2: misses.
-        ([0.0, 2.0, -5.0], None),
-        // From the centre: one root behind, one ahead.
-        ([0.0, 0.0, 0.0], Some((-1.0, 1.0))),
-    ];
-    for (o, expected) in cases {
-        let r = ray(o, [0.0, 0.0, 1.0]);
-        for (name, got) in [
-            ("textbook", s.roots_textbook(&r).pair()),
-            ("stable", s.roots_stable(&r).pair()),
-        ] {
-            match (got, expected) {
-                (Some(g), Some(e)) => assert!(close(g, e, 1e-6), "{name} {o:?}: {g:?} vs {e:?}"),
-                (None, None) => {}
-                _ => panic!("{name} {o:?}: got {got:?}, expected {expected:?}"),
-            }
-        }
-    }
-}
-
-#[test]
-fn sphere_hit_nearest_in_range_and_normal() {
-    let s = unit_sphere();
-    let h = s
-        .hit(&ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
-        .unwrap();
-    assert_eq!(h.t, 4.0);
-    assert_eq!(h.point, Vec3::new(0.0, 0.0, -1.0));
-    assert_eq!(h.normal, Vec3::new(0.0, 0.0, -1.0));
-    assert!(h.front_face);
-    // With t_min past the first root, the exit is the nearest crossing; seen from inside.
-    let h = s
-        .hit(
-            &ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]),
-            Interval::new(4.5, 100.0),
-        )
-        .unwrap();
-    assert_eq!(h.t, 6.0);
-    assert_eq!(h.normal, Vec3::new(0.0, 0.0, 1.0));
-    assert!(!h.front_face);
-    // t_max before the sphere: no hit.
-    assert!(
-        s.hit(
-            &ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]),
-            Interval::new(0.0, 3.0)
-        )
-        .is_none()
-    );
-}
-
-#[test]
-fn sphere_behind_the_ray_is_not_hit() {
-    let s = unit_sphere();
-    let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]);
-    let (t0, t1) = s.roots_stable(&r).pair().unwrap();
-    assert!(close((t0, t1), (-6.0, -4.0), 1e-6));
-    assert!(s.hit(&r, Interval::AHEAD).is_none());
-    assert!(Shape::Sphere(s).hit(&r, Interval::AHEAD).is_none());
-}
-
-/// Hit/miss disagreements with the f64 reference, for both root finders, and the
-/// median |t - t_ref| / r of the stable near root, over an n x n grid of rays from the
-/// origin aimed over a 2.4 r square around a unit sphere at distance `dist` (S1).
-fn s1_disagreements(dist: f32, n: usize) -> (f64, f64, f64) {
-    let w = Vec3::new(0.3, 0.2, -1.0).normalize();
-    let centre = dist * w;
-    let sphere = Sphere::new(centre, 1.0).unwrap();
-    let u = w.cross(Vec3::Y).normalize();
-    let v = u.cross(w);
-    let (mut textbook_wrong, mut stable_wrong) = (0usize, 0usize);
-    let mut errors = Vec::new();
-    for i in 0..n {
-        for j in 0..n {
-            let su = -1.2 + 2.4 * (i as f32 + 0.5) / n as f32;
-            let sv = -1.2 + 2.4 * (j as f32 + 0.5) / n as f32;
-            let r = Ray::new(Vec3::ZERO, centre + su * u + sv * v).unwrap();
-            let reference = reference_roots(&r, centre, 1.0);
-            textbook_wrong +=
-                usize::from(sphere.roots_textbook(&r).pair().is_some() != reference.is_some());
-            let stable = sphere.roots_stable(&r).pair();
-            stable_wrong += usize::from(stable.is_some() != reference.is_some());
-            if let (Some(s), Some(e)) = (stable, reference) {
-                errors.push((s.0 as f64 - e.0).abs());
-            }
-        }
-    }
-    errors.sort_by(f64::total_cmp);
-    let total = (n * n) as f64;
-    let median = errors.get(errors.len() / 2).copied().unwrap_or(0.0);
-    (
-        textbook_wrong as f64 / total,
-        stable_wrong as f64 / total,
-        median,
-    )
-}
-
-/// The roots for the same f32 inputs, computed in f64 (independent code).
-fn reference_roots(r: &Ray, centre: Vec3, radius: f32) -> Option<(f64, f64)> {
-    let o = r.origin().as_dvec3();
-    let d = r.direction().as_dvec3();
-    let f = o - centre.as_dvec3();
-    let a = d.dot(d);
-    let t_mid = -f.dot(d) / a;
-    let l: DVec3 = f + t_mid * d;
-    let rr = radius as f64 * radius as f64;
-    let h2 = rr - l.dot(l);
-    if h2 < 0.0 {
-        return None;
-    }
-    let h = (h2 / a).sqrt();
-    Some((t_mid - h, t_mid + h))
-}
-
-#[test]
-fn s1_small_sphere_far_away_textbook_fails_stable_holds() {
-    let (tb3, st3, med3) = s1_disagreements(1e3, 100);
-    let (tb4, st4, med4) = s1_disagreements(1e4, 100);
-    eprintln!(
-        "S1 D/r=1e3: textbook wrong {:.3}%, stable wrong {:.3}%, stable median |dt| {med3:.2e}",
-        tb3 * 100.0,
-        st3 * 100.0
-    );
-    eprintln!(
-        "S1 D/r=1e4: textbook wrong {:.3}%, stable wrong {:.3}%, stable median |dt| {med4:.2e}",
-        tb4 * 100.0,
-        st4 * 100.0
-    );
-    assert!(
-        tb3 > 0.01,
-        "textbook should be wrong on > 1% at 1e3, was {tb3}"
-    );
-    assert!(
-        st3 < 1e-4,
-        "stable should be wrong on < 0.01% at 1e3, was {st3}"
-    );
-    assert!(med3 < 1e-3, "stable median error at 1e3: {med3}");
-    assert!(
-        tb4 > 0.2,
-        "textbook should be wrong on > 20% at 1e4, was {tb4}"
-    );
-    assert!(
-        st4 < 5e-3 && st4 * 50.0 < tb4,
-        "stable at 1e4: {st4} vs textbook {tb4}"
-    );
-}
-
-#[test]
-fn s2_origin_at_centre_and_on_surface() {
-    let c = Vec3::new(1.0, 2.0, 3.0);
-    let s = Sphere::new(c, 2.0).unwrap();
-    for d in [[0.0, 0.0, 1.0], [1.0, -2.0, 0.5], [-0.3, 0.0, 0.0]] {
-        // At the centre b = 0 exactly: sign(0) must be +1 or q = 0 and c/q = NaN.
-        let r = Ray::new(c, Vec3::from(d)).unwrap();
-        for roots in [s.roots_stable(&r).pair(), s.roots_textbook(&r).pair()] {
-            let (t0, t1) = roots.unwrap();
-            assert!(t0.is_finite() && t1.is_finite());
-            assert!(close((t0, t1), (-2.0, 2.0), 1e-6), "{d:?}: {t0} {t1}");
-        }
-    }
-    let on_surface = Vec3::new(1.0, 2.0, 1.0); // c - 2 z
-    // Towards the centre: 0 and 2r; away from it: -2r and 0.
-    let towards = Ray::new(on_surface, Vec3::Z).unwrap();
-    assert_eq!(s.roots_stable(&towards).pair(), Some((0.0, 4.0)));
-    let away = Ray::new(on_surface, -Vec3::Z).unwrap();
-    assert_eq!(s.roots_stable(&away).pair(), Some((-4.0, 0.0)));
-    // Tangent at the surface: b = 0 and c = 0, a double root at 0, no NaN.
-    let tangent = Ray::new(on_surface, Vec3::X).unwrap();
-    assert_eq!(s.roots_stable(&tangent).pair(), Some((0.0, 0.0)));
-    assert_eq!(s.roots_textbook(&tangent).pair(), Some((0.0, 0.0)));
-}
-
-// ---------------------------------------------------------------- plane
-
-#[test]
-fn plane_known_answers() {
-    // The plane x + y + z = 3, through (1, 1, 1).
-    let p = Plane::new(Vec3::ONE, Vec3::ONE).unwrap();
-    // Along +x: x = 3 at t = 3.
-    let h = p
-        .hit(&ray([0.0; 3], [1.0, 0.0, 0.0]), Interval::AHEAD)
-        .unwrap();
-    assert!((h.t - 3.0).abs() < 1e-6);
-    assert!((h.point - Vec3::new(3.0, 0.0, 0.0)).length() < 1e-6);
-    // Along (1, 1, 0)/sqrt 2: x = y = 1.5, at t = 1.5 sqrt 2 = 3 / sqrt 2.
-    let h = p
-        .hit(&ray([0.0; 3], [1.0, 1.0, 0.0]), Interval::AHEAD)
-        .unwrap();
-    assert!((h.t - 3.0 / 2f32.sqrt()).abs() < 1e-6);
-    assert!((h.point - Vec3::new(1.5, 1.5, 0.0)).length() < 1e-6);
-    // The origin lies behind the plane (x + y + z = 0 < 3): seen from the back.
-    assert!(!h.front_face);
-    assert!((h.normal - Vec3::ONE.normalize()).length() < 1e-6);
-    // From the front side.
-    let h = p.hit(&ray([5.0; 3], [-1.0; 3]), Interval::AHEAD).unwrap();
-    assert!(h.front_face);
-    assert!((h.t - 12.0 / 3f32.sqrt()).abs() < 1e-5); // (15 - 3) / sqrt 3
-}
-
-#[test]
-fn plane_parallel_ray_misses_without_nan() {
-    let p = Plane::new(Vec3::ZERO, Vec3::Y).unwrap();
-    for o in [[0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [3.0, -2.0, 1.0]] {
-        let r = ray(o, [1.0, 0.0, 1.0]);
-        assert_eq!(p.t(&r), None);
-        assert!(p.hit(&r, Interval::EVERYWHERE).is_none());
-    }
-    // Behind the origin: t = -2, outside (0, inf).
-    let r = ray([0.0, 2.0, 0.0], [0.0, 1.0, 0.0]);
-    assert_eq!(p.t(&r), Some(-2.0));
-    assert!(Shape::Plane(p).hit(&r, Interval::AHEAD).is_none());
-}
-
-// ---------------------------------------------------------------- box (S8)
-
-fn cube() -> Aabb {
-    Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0)).unwrap()
-}
-
-/// A slab test written the naive way round: `t0 = if t0 > t_near { t0 } else { t_near }`
-/// lets a NaN from 0 * inf replace the interval (kept to show the failure).
-fn naive_slab(b: &Aabb, r: &Ray, range: Interval) -> Slab {
-    let (mut t0, mut t1) = (range.min, range.max);
-    for i in 0..3 {
-        let inv = 1.0 / r.direction()[i];
-        let a = (b.min()[i] - r.origin()[i]) * inv;
-        let c = (b.max()[i] - r.origin()[i]) * inv;
-        let (near, far) = if a < c { (a, c) } else { (c, a) };
-        t0 = if t0 > near { t0 } else { near };
-        t1 = if t1 < far { t1 } else { far };
-        if t0 > t1 {
-            return None;
-        }
-    }
-    Some(ClosedSpan { t0, t1 })
-}
-
-/// What a slab test returns: the closed span `[t0, t1]` inside the box, or `None`.
-type Slab = Option<ClosedSpan>;
-
-/// The closed span `[t0, t1]` a slab test returns.
-fn closed(t0: f32, t1: f32) -> Slab {
-    Some(ClosedSpan { t0, t1 })
-}
-
-#[test]
-fn s8_slab_truth_table() {
-    let b = cube();
-    // (box, origin, direction, expected interval clipped to [0, inf))
-    let flat = Aabb::new(Vec3::new(-1.0, 0.0, -1.0), Vec3::new(1.0, 0.0, 1.0)).unwrap();
-    let table: [(Aabb, [f32; 3], [f32; 3], Slab); 10] = [
-        // In the top face's plane but outside in x: miss.
-        (b, [3.0, 1.0, -5.0], [0.0, 0.0, 1.0], None),
-        // In the plane z = 3, outside: miss.
-        (b, [-5.0, 1.0, 3.0], [1.0, 0.0, 0.0], None),
-        // A box of zero thickness, hit head on at y = 0: t = 1.
-        (flat, [0.5, 1.0, 0.5], [0.0, -1.0, 0.0], closed(1.0, 1.0)),
-        // Origin inside: from 0 to the exit at x = 1.
-        (b, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], closed(0.0, 1.0)),
-        // Box behind the origin: miss.
-        (b, [0.0, 0.0, 5.0], [0.0, 0.0, 1.0], None),
-        // Along the top face's plane, over the face: touches from z = -1 to 1.
-        (b, [0.0, 1.0, -5.0], [0.0, 0.0, 1.0], closed(4.0, 6.0)),
-        // Along an edge (two faces' planes at once).
-        (b, [1.0, 1.0, -5.0], [0.0, 0.0, 1.0], closed(4.0, 6.0)),
-        // Zero components, straight through.
-        (b, [0.5, -0.5, -5.0], [0.0, 0.0, 1.0], closed(4.0, 6.0)),
-        // Negative zero components: 1 / -0 = -inf must work too.
-        (b, [0.5, 0.5, 5.0], [-0.0, -0.0, -1.0], closed(4.0, 6.0)),
-        // Parallel to x, just outside in y: miss.
-        (b, [-5.0, 1.0 + 1e-6, 0.0], [1.0, 0.0, 0.0], None),
-    ];
-    for (bx, o, d, expected) in table {
-        let r = ray(o, d);
-        let got = bx.slab(&r, Interval::AHEAD);
-        assert_eq!(got, expected, "o = {o:?}, d = {d:?}");
-        let wide = bx.slab_conservative(&r, Interval::AHEAD);
-        assert_eq!(
-            wide.is_some(),
-            expected.is_some(),
-            "conservative, o = {o:?}"
-        );
-    }
-    // The naive comparison order gets the second case wrong: the NaN from the y slab
-    // (0 * inf) replaces t0, no later comparison can reject it, and the miss becomes
-    // a hit.
-    let r = ray([-5.0, 1.0, 3.0], [1.0, 0.0, 0.0]);
-    assert!(naive_slab(&b, &r, Interval::AHEAD).is_some());
-    assert!(b.slab(&r, Interval::AHEAD).is_none());
-}
-
-#[test]
-fn box_hit_normal_is_the_face_axis() {
-    let b = cube();
-    let h = b
-        .hit(&ray([0.2, 0.3, -5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
-        .unwrap();
-    assert_eq!(
-        (h.t, h.normal, h.front_face),
-        (4.0, Vec3::new(0.0, 0.0, -1.0), true)
-    );
-    assert_eq!(h.point, Vec3::new(0.2, 0.3, -1.0));
-    // From inside: the exit face, seen from the back.
-    let h = b
-        .hit(&ray([0.0; 3], [-1.0, 0.1, 0.0]), Interval::AHEAD)
-        .unwrap();
-    assert_eq!(h.normal, Vec3::new(-1.0, 0.0, 0.0));
-    assert!(!h.front_face);
-    assert_eq!(h.point.x, -1.0);
-    // Behind: none.
-    assert!(
-        Shape::Aabb(b)
-            .hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
-            .is_none()
-    );
-}
-
-#[test]
-fn gamma_matches_pbrt() {
-    let eps = f32::EPSILON as f64 / 2.0;
-    let g3 = 3.0 * eps / (1.0 - 3.0 * eps);
-    assert!((render_lessons::float::gamma(3) as f64 - g3).abs() < 1e-12);
-}
-
-// ---------------------------------------------------------------- triangle
-
-/// The closed bumpy sphere of STABILITY S4/S5, `n` x `n` segments: the same mesh
-/// lesson 11's chart 2 measures.
-fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
-    render_lessons::course::measure::triangle::bumpy_sphere(n, n)
-}
-
-/// How many of the rays from the origin towards `targets` hit no triangle at all, for
-/// Möller-Trumbore and for the watertight test.
-fn leaks(tris: &[Triangle], targets: &[Vec3]) -> (usize, usize) {
-    let (mut mt, mut wt) = (0, 0);
-    for &target in targets {
-        let r = Ray::new(Vec3::ZERO, target).unwrap();
-        mt += usize::from(
-            !tris
-                .iter()
-                .any(|t| t.moller_trumbore(&r, Interval::AHEAD).is_some()),
-        );
-        wt += usize::from(
-            !tris
-                .iter()
-                .any(|t| t.watertight(&r, Interval::AHEAD).is_some()),
-        );
-    }
-    (mt, wt)
-}
-
-fn mesh_triangles() -> (Vec<Vec3>, Vec<[usize; 3]>, Vec<Triangle>) {
-    let (vertices, indices) = bumpy_sphere(16);
-    let tris = indices
-        .iter()
-        .map(|&[a, b, c]| Triangle::new(vertices[a], vertices[b], vertices[c]).unwrap())
-        .collect();
-    (vertices, indices, tris)
-}
-
-#[test]
-fn bumpy_sphere_is_closed_and_outward() {
-    let (vertices, indices, tris) = mesh_triangles();
-    assert_eq!(vertices.len(), 2 + 15 * 16);
-    assert_eq!(tris.len(), 2 * 16 * 15);
-    let mut edges = std::collections::HashMap::new();
-    for t in &indices {
-        for k in 0..3 {
-            *edges
-                .entry((t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3])))
-                .or_insert(0) += 1;
-        }
-    }
-    assert!(
-        edges.values().all(|&c| c == 2),
-        "every edge shared by exactly two triangles"
-    );
-    for t in &tris {
-        let centroid = t.vertices().iter().sum::<Vec3>() / 3.0;
-        assert!(t.normal().dot(centroid) > 0.0, "wound outwards");
-    }
-    for v in &vertices {
-        assert!((1.0..=1.5).contains(&v.length()));
-    }
-}
-
-#[test]
-fn s4_s5_watertight_never_leaks_moller_trumbore_does() {
-    let (vertices, indices, tris) = mesh_triangles();
-    let (mt_v, wt_v) = leaks(&tris, &vertices);
-    let mut edges = std::collections::BTreeSet::new();
-    for t in &indices {
-        for k in 0..3 {
-            edges.insert((t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3])));
-        }
-    }
-    let midpoints: Vec<Vec3> = edges
-        .iter()
-        .map(|&(a, b)| (vertices[a] + vertices[b]) * 0.5)
-        .collect();
-    let (mt_e, wt_e) = leaks(&tris, &midpoints);
-    let pct = |k: usize, n: usize| 100.0 * k as f64 / n as f64;
-    eprintln!(
-        "S4 vertices: {} rays, Möller-Trumbore leaks {mt_v} ({:.1}%), watertight {wt_v}",
-        vertices.len(),
-        pct(mt_v, vertices.len())
-    );
-    eprintln!(
-        "S5 edge midpoints: {} rays, Möller-Trumbore leaks {mt_e} ({:.1}%), watertight {wt_e}",
-        midpoints.len(),
-        pct(mt_e, midpoints.len())
-    );
-    assert_eq!(wt_v, 0);
-    assert_eq!(wt_e, 0);
-    assert!(
-        pct(mt_v, vertices.len()) > 1.0,
-        "Möller-Trumbore should leak at vertices"
-    );
-    assert!(
-        pct(mt_e, midpoints.len()) > 1.0,
-        "Möller-Trumbore should leak at edges"
-    );
-}
-
-#[test]
-fn triangle_known_answers() {
-    // The unit right triangle in z = 0, seen from z = 5 looking down -z.
-    let t = Triangle::new(Vec3::ZERO, Vec3::X, Vec3::Y).unwrap();
-    let r = ray([0.25, 0.5, 5.0], [0.0, 0.0, -1.0]);
-    // b1 = x = 0.25, b2 = y = 0.5, b0 = 0.25, t = 5.
-    let crossing = Barycentric {
-        t: 5.0,
-        b: [0.25, 0.25, 0.5],
-    };
-    assert_eq!(t.moller_trumbore(&r, Interval::AHEAD), Some(crossing));
-    assert_eq!(t.watertight(&r, Interval::AHEAD), Some(crossing));
-    let h = t.hit(&r, Interval::AHEAD).unwrap();
-    assert_eq!(h.point, Vec3::new(0.25, 0.5, 0.0));
-    assert_eq!(h.normal, Vec3::Z);
-    assert!(h.front_face);
-    // Outside (x + y > 1), behind, and parallel: misses.
-    let outside = ray([0.75, 0.5, 5.0], [0.0, 0.0, -1.0]);
-    let behind = ray([0.25, 0.5, 5.0], [0.0, 0.0, 1.0]);
-    let parallel = ray([0.25, 0.25, 0.0], [1.0, 0.0, 0.0]);
-    for r in [outside, behind, parallel] {
-        assert!(t.moller_trumbore(&r, Interval::AHEAD).is_none());
-        assert!(t.watertight(&r, Interval::AHEAD).is_none());
-        assert!(Shape::Triangle(t).hit(&r, Interval::AHEAD).is_none());
-    }
-    // From below: back face, normal still +z.
-    let h = t
-        .hit(&ray([0.25, 0.5, -5.0], [0.0, 0.0, 1.0]), Interval::AHEAD)
-        .unwrap();
-    assert!(!h.front_face);
-    assert_eq!(h.normal, Vec3::Z);
-}
-
-#[test]
-fn s7_barycentric_point_stays_on_the_plane() {
-    // The unit triangle in the plane x + y + z = 1, hit from distance about 1e4.
-    let t = Triangle::new(Vec3::X, Vec3::Y, Vec3::Z).unwrap();
-    let off_plane = |p: Vec3| ((p.x as f64 + p.y as f64 + p.z as f64) - 1.0).abs() / 3f64.sqrt();
-    let mut rng = common::Rng::seeded(0x9E37_79B9_7F4A_7C15);
-    let (mut bary, mut ray_point) = (Vec::new(), Vec::new());
-    for _ in 0..1000 {
-        let (u, v) = (rng.next_f32(), rng.next_f32());
-        let (u, v) = if u + v > 1.0 {
-            (1.0 - u, 1.0 - v)
-        } else {
-            (u, v)
-        };
-        let aim = (1.0 - u - v) * Vec3::X + u * Vec3::Y + v * Vec3::Z;
-        let dir = Vec3::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, 0.0) + Vec3::ONE;
-        let o = aim + 1e4 * dir.normalize();
-        let r = Ray::new(o, aim - o).unwrap();
-        if let Some(h) = t.hit(&r, Interval::AHEAD) {
-            bary.push(off_plane(h.point));
-            ray_point.push(off_plane(r.at(h.t)));
-        }
-    }
-    assert!(
-        bary.len() > 900,
-        "most rays aimed inside should hit: {}",
-        bary.len()
-    );
-    let median = |v: &mut Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
-    };
-    let (bary_max, ray_max) = (
-        bary.iter().cloned().fold(0.0, f64::max),
-        ray_point.iter().cloned().fold(0.0, f64::max),
-    );
-    let (bary_med, ray_med) = (median(&mut bary), median(&mut ray_point));
-    eprintln!(
-        "S7: barycentric off-plane median {bary_med:.1e} max {bary_max:.1e}; o + t d median {ray_med:.1e} max {ray_max:.1e}"
-    );
-    assert!(
-        bary_max < 1e-6,
-        "barycentric point off the plane by {bary_max}"
-    );
-    assert!(
-        ray_med > 1e-5,
-        "o + t d should be visibly off the plane: {ray_med}"
-    );
-    assert!(ray_med > 100.0 * bary_med.max(1e-9));
-    // The numbers the S7 pages print: o + t d's median and worst distance from the
-    // plane, then the barycentric point's (no sine or cosine: the same everywhere).
-    let printed = format!("{ray_med:.1e} {ray_max:.1e} {bary_med:.1e} {bary_max:.1e}");
-    assert_eq!(printed, "2.8e-4 2.3e-3 9.7e-9 4.3e-8");
-    // "About 29 000 times closer": the ratio of the two medians, to two digits.
-    let ratio = format!("{:.1e}", ray_med / bary_med);
-    assert!(ratio == "2.8e4" || ratio == "2.9e4", "{ratio}");
-    let printed_ratio = 2.8e-4 / 9.7e-9;
-    assert_eq!((printed_ratio / 1000.0f64).round() * 1000.0, 29_000.0);
-    // The exercise on S6's conservative slab: gamma_3, the factor 1 + 2 gamma_3, and
-    // how far it moves a t_far of 100.
-    let g3 = render_lessons::float::gamma(3);
-    assert_eq!(
-        format!("{g3:.2e} {:.1e} {:.1e}", 2.0 * g3, 200.0 * g3),
-        "1.79e-7 3.6e-7 3.6e-5"
-    );
-}
-
-#[test]
-fn s6_conservative_box_never_rejects_its_own_triangle() {
-    // The cases of lesson 11's S6 finding: rays aimed exactly at a vertex of random
-    // triangles, kept when the watertight test hits, with the triangle's f32 box.
-    let cases = box_cases(Quality::Quick).unwrap();
-    let BoxCounts {
-        rays: tested,
-        plain: naive_miss,
-        conservative: conservative_miss,
-    } = box_counts(&cases);
-    eprintln!(
-        "S6: {tested} vertex hits; plain slab rejects {naive_miss}, conservative {conservative_miss}"
-    );
-    assert!(tested > 1000);
-    assert_eq!(conservative_miss, 0);
-    assert!(
-        naive_miss > 0,
-        "plain slab should reject some of its own triangles"
-    );
-}
+use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 
 // ---------------------------------------------------------------- bad input
 
@@ -854,131 +287,6 @@ fn figures_draw() {
     }
 }
 
-/// STABILITY S3: smallpt's left wall, a sphere of radius 1e5 centred at
-/// (1e5 + 1, 40.8, 81.6), against the same wall as the plane x = 1. Rays from inside
-/// the room hit the wall; cosine-distributed bounce rays leave the hit point with
-/// smallpt's t > 1e-4. No bounce can hit a flat wall again; how many do? Returns the
-/// self-hits, the bounce rays and the wall's hit points.
-fn s3_wall(wall: Shape) -> (u32, u32, Vec<Vec3>) {
-    use render_lessons::basis::Basis;
-    use render_lessons::sampling::{cosine_hemisphere, grid};
-    let eye = Vec3::new(50.0, 40.0, 80.0);
-    let (mut self_hits, mut total, mut points) = (0, 0, Vec::new());
-    for aim in grid(16) {
-        let target = Vec3::new(1.0, 10.0 + 60.0 * aim.x, 20.0 + 120.0 * aim.y);
-        let Some(hit) = wall.hit(
-            &Ray::new(eye, target - eye).unwrap(),
-            Interval::new(1e-4, f32::INFINITY),
-        ) else {
-            continue;
-        };
-        points.push(hit.point);
-        let frame = Basis::around(hit.normal);
-        for u in grid(8) {
-            let bounce = Ray::new(hit.point, frame.to_world(cosine_hemisphere(u))).unwrap();
-            total += 1;
-            self_hits += u32::from(
-                wall.hit(&bounce, Interval::new(1e-4, f32::INFINITY))
-                    .is_some(),
-            );
-        }
-    }
-    (self_hits, total, points)
-}
-
-#[test]
-fn s3_a_wall_modelled_as_a_huge_sphere_hits_itself_in_f32_a_plane_does_not() {
-    let (centre, radius) = (Vec3::new(1e5 + 1.0, 40.8, 81.6), 1e5);
-    let sphere = Shape::Sphere(Sphere::new(centre, radius).unwrap());
-    let plane = Shape::Plane(Plane::new(Vec3::new(1.0, 0.0, 0.0), Vec3::X).unwrap());
-    let (sphere_hits, total, sphere_points) = s3_wall(sphere);
-    let (plane_hits, _, plane_points) = s3_wall(plane);
-    let off_plane = |points: &[Vec3]| points.iter().map(|p| (p.x - 1.0).abs()).fold(0.0, f32::max);
-    let (sphere_off, plane_off) = (off_plane(&sphere_points), off_plane(&plane_points));
-    // In f64, how far the exact sphere bulges past x = 1 at the hit points' y and z
-    // (curvature, not error), and how far the f32 hit points lie from the exact
-    // sphere (the rounding error).
-    let c = centre.as_dvec3();
-    let r = f64::from(radius);
-    let (mut bulge, mut off_sphere) = (0.0f64, 0.0f64);
-    for p in sphere_points.iter().map(|p| p.as_dvec3()) {
-        let lateral = (p.y - c.y).powi(2) + (p.z - c.z).powi(2);
-        bulge = bulge.max(c.x - (r * r - lateral).sqrt() - 1.0);
-        off_sphere = off_sphere.max(((p - c).length() - r).abs());
-    }
-    eprintln!(
-        "S3: sphere wall {sphere_hits}/{total} bounces hit their own wall, hit points up to {sphere_off:.1e} off x = 1 \
-         (the exact sphere bulges {bulge:.1e} past it there), up to {off_sphere:.1e} off the exact sphere; \
-         plane wall {plane_hits}/{total}, up to {plane_off:.1e} off"
-    );
-    assert_eq!(total, 256 * 64, "16 384 bounce rays");
-    // The count the pages print, 1728 (10.5 %), measured on x86-64; another libm's
-    // sin and cos may move a few bounce directions, hence the 1 % slack.
-    assert!(
-        sphere_hits.abs_diff(1728) <= 17,
-        "1728 of 16 384 bounces hit the sphere wall again: {sphere_hits}"
-    );
-    assert_eq!(format!("{:.1}", 100.0 * 1728.0 / 16384.0), "10.5");
-    assert!(
-        (0.0225..0.0235).contains(&sphere_off),
-        "hit points up to 2.3e-2 off x = 1: {sphere_off}"
-    );
-    assert_eq!(format!("{bulge:.1e}"), "2.1e-2", "the sphere's own bulge");
-    // The hit points need no sine or cosine, so this holds on every platform.
-    assert_eq!(
-        format!("{off_sphere:.1e}"),
-        "8.5e-3",
-        "f32 hit points off the exact sphere by about eps R"
-    );
-    assert_eq!(plane_hits, 0);
-    assert_eq!(
-        plane_off, 0.0,
-        "a plane's hit point is projected onto the plane"
-    );
-}
-
-/// The rays along the six faces of the cube [-1, 1]^3, each with its zero direction
-/// components of sign `zero` (+0.0 or -0.0): the origin lies in the face's plane, 5
-/// units before the box along the next axis, in the middle of the third.
-fn rays_along_faces(zero: f32) -> Vec<Ray> {
-    let mut rays = Vec::new();
-    for axis in 0..3 {
-        for side in [-1.0, 1.0] {
-            let (along, across) = ((axis + 1) % 3, (axis + 2) % 3);
-            let (mut o, mut d) = (Vec3::ZERO, Vec3::ZERO);
-            o[axis] = side;
-            o[along] = -5.0;
-            d[axis] = zero;
-            d[across] = zero;
-            d[along] = 1.0;
-            rays.push(Ray::new(o, d).unwrap());
-        }
-    }
-    rays
-}
-
-#[test]
-fn s8_a_ray_along_any_face_hits_for_either_sign_of_zero() {
-    // The closed box is hit by a ray running in a face's plane over the face, from
-    // t = 4 to 6, whether that direction component is +0 or -0.
-    let b = cube();
-    for zero in [0.0f32, -0.0] {
-        for r in rays_along_faces(zero) {
-            let (o, d) = (r.origin(), r.direction());
-            assert_eq!(
-                b.slab(&r, Interval::AHEAD),
-                closed(4.0, 6.0),
-                "o {o}, d {d:?}"
-            );
-            let wide = b.slab_conservative(&r, Interval::AHEAD);
-            assert!(wide.is_some(), "conservative, o {o}, d {d:?}");
-            let hit = Shape::Aabb(b).hit(&r, Interval::AHEAD);
-            assert_eq!(hit.map(|h| h.t), Some(4.0), "hit, o {o}, d {d:?}");
-            assert_eq!(b.crossings(&r).as_slice(), [4.0, 6.0], "crossings, o {o}");
-        }
-    }
-}
-
 /// The numbers lesson 07's pages work out by hand for the lesson's five rays, and its
 /// exercises' answers, computed again (in `f64` where the page's steps are exact).
 #[test]
@@ -1098,4 +406,67 @@ fn lesson_07_worked_numbers() {
         .pair()
         .unwrap();
     assert_eq!(format!("{t0:.0} {t1:.0}"), "9999 10001");
+}
+
+/// The numbers of one row of lesson 07's table (snapshot `lessons__lesson_07_intersections__numbers`):
+/// the crossings, the hit point and the outward normal.
+fn lesson_07_row(shape: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let snap = common::pages::snapshot(module_path!(), "numbers");
+    let line = snap
+        .lines()
+        .find(|l| l.split_whitespace().next() == Some(shape))
+        .unwrap_or_else(|| panic!("no row {shape}"));
+    let numbers = |s: &str| -> Vec<f64> {
+        s.split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|x| !x.is_empty())
+            .map(|x| x.parse().unwrap())
+            .collect()
+    };
+    // Origin, direction, crossings (not in brackets), hit point, normal.
+    let tuples: Vec<&str> = line
+        .split('(')
+        .skip(1)
+        .map(|s| &s[..s.find(')').unwrap()])
+        .collect();
+    let after_direction = line.split(')').nth(2).unwrap();
+    let crossings = &after_direction[..after_direction.find('(').unwrap()];
+    (numbers(crossings), numbers(tuples[2]), numbers(tuples[3]))
+}
+
+#[test]
+fn lesson_07_pages_quote_the_intersections_snapshot() {
+    let (sphere, _, _) = lesson_07_row("sphere");
+    let page = "07_intersections.md";
+    assert_quotes(page, "2.134$ and $t = 3.866$. Two", sphere[0]);
+    assert_quotes(page, "3.866$. Two crossings", sphere[1]);
+    assert_quotes(page, "2.134$ and $3.866$ above", sphere[0]);
+    assert_quotes(page, "3.866$ above", sphere[1]);
+    let (plane, hit, normal) = lesson_07_row("plane");
+    assert_quotes(page, r"4.2426$, the box's", plane[0]);
+    let (boxed, _, _) = lesson_07_row("box");
+    assert_quotes(page, "2.236, 3.354]", boxed[0]);
+    assert_quotes(page, "3.354]$", boxed[1]);
+    let (triangle, _, _) = lesson_07_row("triangle");
+    assert_quotes(page, "3.015$, the paraboloid's", triangle[0]);
+    let page = "07_2_plane.md";
+    assert_quotes(page, r"4.2426$, at the point", plane[0]);
+    assert_quotes(page, "4.243$; the normal", plane[0]);
+    assert_quotes(page, "4.243, with the normal", plane[0]);
+    assert_quotes(page, "4.2426$ and the hit point", plane[0]);
+    assert_eq!(hit, [1.0, -1.0, 0.0], "the page's (1, -1, 0)");
+    assert_quotes(page, "-0.4472, -0.8944, 0)$", -normal[0]);
+    assert_quotes(page, "-0.8944, 0)$", -normal[1]);
+    let (paraboloid, hit, normal) = lesson_07_row("paraboloid");
+    let page = "07_5_quadrics.md";
+    assert_quotes(page, "0.5402$ and $3.7025$", paraboloid[0]);
+    assert_quotes(page, "3.7025$. The first", paraboloid[1]);
+    assert_quotes(page, "-1.618, 0, 2.618)$", hit[0]);
+    assert_quotes(page, "2.618)$,", hit[2]);
+    assert_quotes(page, "-0.9554, 0, -0.2952)$", normal[0]);
+    assert_quotes(page, "-0.2952)$: the", normal[2]);
+    // The figure's label has 3 decimals, the table 4: round the exact root, which the
+    // table agrees with, rather than the table's rounding of it.
+    let exact = (3.0 + 5.0f64.sqrt()) / 2.0f64.sqrt();
+    assert!((exact - paraboloid[1]).abs() < 1e-4);
+    assert_quotes(page, "3.702; the normal", exact);
 }

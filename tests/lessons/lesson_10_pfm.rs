@@ -147,3 +147,27 @@ fn a_file_s_errors_name_the_file() {
     assert!(matches!(err, Error::File { .. }), "{err:?}");
     assert_eq!(err.param(), missing.display().to_string());
 }
+
+#[test]
+fn pfm_has_its_header_and_rows_from_the_bottom() {
+    let img = render_lessons::framebuffer::Framebuffer::from_fn(2, 2, |x, y| {
+        Vec3::new(x as f32, y as f32, 0.5)
+    })
+    .unwrap();
+    let bytes = render_lessons::framebuffer::pfm::pfm_bytes(&img).unwrap();
+    let header = b"PF\n2 2\n-1.0\n";
+    assert_eq!(&bytes[..header.len()], header);
+    assert_eq!(bytes.len(), header.len() + 2 * 2 * 12);
+    let first = f32::from_le_bytes(
+        bytes[header.len() + 4..header.len() + 8]
+            .try_into()
+            .unwrap(),
+    );
+    assert_eq!(first, 1.0, "the first row written is the bottom row, y = 1");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("x.pfm");
+    render_lessons::framebuffer::pfm::save_pfm(&path, &img).unwrap();
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
+    let nan = render_lessons::framebuffer::Framebuffer::from_fn(1, 1, |_, _| Vec3::NAN).unwrap();
+    assert!(render_lessons::framebuffer::pfm::pfm_bytes(&nan).is_err());
+}

@@ -15,6 +15,7 @@
 //!
 //! Standard library only.
 
+use crate::common::pages::rust_files;
 use std::fs;
 use std::path::Path;
 
@@ -119,11 +120,9 @@ fn every_quantified_claim_names_its_test() {
         .filter(|p| p.ends_with(".md"))
         .collect();
     let read = |file: &str| fs::read_to_string(root.join(file)).ok();
-    let mut files = Vec::new();
-    rust_files(&root.join("tests"), &mut files);
-    let all_tests: String = files
-        .iter()
-        .map(|f| fs::read_to_string(f).unwrap_or_default())
+    let all_tests: String = rust_files(root, "tests")
+        .into_iter()
+        .map(|(_, text)| text)
         .collect();
     let mut problems = Vec::new();
     for page in pages {
@@ -136,20 +135,6 @@ fn every_quantified_claim_names_its_test() {
         problems.len(),
         problems.join("\n")
     );
-}
-
-/// Every `.rs` file under `dir`, recursively.
-fn rust_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
-    let Ok(entries) = fs::read_dir(dir) else {
-        return;
-    };
-    for path in entries.flatten().map(|e| e.path()) {
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
 }
 
 /// The references to tests in `text` that do not resolve: `tests/FILE.rs` that is

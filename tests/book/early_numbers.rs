@@ -4,9 +4,8 @@
 //!
 //! Standard library, glam and the crate only; the chapters are read as text.
 
-use crate::notation::{
-    assert_says, cell, chapter, columns, flat, line_starting, read, snapshot, summary_pages,
-};
+use crate::common::pages::{page as chapter, read, snapshot_body};
+use crate::notation::{assert_says, cell, columns, flat, line_starting, summary_pages};
 
 use glam::{Vec3, Vec4};
 use render_lessons::mesh::tessellate::{FLOOR_SIZE, tessellate};
@@ -33,7 +32,7 @@ fn chapter_01_the_sum_of_two_points_divides_to_their_midpoint() {
 
 #[test]
 fn chapter_01_says_what_its_table_header_said() {
-    let table = snapshot("lessons__lesson_01_transforms__numbers");
+    let table = snapshot_body("lessons::lesson_01_transforms", "numbers");
     assert!(table.starts_with(
         "The slides' matrices, angle 30 degrees, applied to\nthe point (1.000, 2.000, 3.000) \
          (w = 1) and the vector (1.000, 2.000, 3.000) (w = 0)\n"
@@ -63,7 +62,7 @@ fn chapter_01_says_what_its_table_header_said() {
 
 #[test]
 fn chapters_03_to_06_say_what_their_table_headers_said() {
-    let ortho = snapshot("lessons__lesson_03_ortho_camera__numbers");
+    let ortho = snapshot_body("lessons::lesson_03_ortho_camera", "numbers");
     assert!(ortho.starts_with(
         "Orthographic camera: plane [-8.00, 8.00] x [-6.00, 6.00], 4 x 3 pixels, row 0 on top\n"
     ));
@@ -72,7 +71,7 @@ fn chapters_03_to_06_say_what_their_table_headers_said() {
         "For the plane $[-8, 8]\\times[-6, 6]$ cut into $4\\times 3$ pixels, row 0 at the top",
     );
 
-    let placed = snapshot("lessons__lesson_05_arbitrary_ortho_camera__numbers");
+    let placed = snapshot_body("lessons::lesson_05_arbitrary_ortho_camera", "numbers");
     assert!(placed.starts_with(
         "Camera basis from p = (6.000, 0.000, 6.000),\nd = (-1.000, 0.000, -1.000), \
          k = (0.000, 1.000, 0.000)\n"
@@ -92,7 +91,7 @@ fn chapters_03_to_06_say_what_their_table_headers_said() {
     assert_eq!(cell(&placed, "(0, 0)", 2), "(1.757, 4.000, 10.243)");
     assert_says("05_arbitrary_ortho_camera.md", "= (1.757, 4, 10.243)");
 
-    let pinhole = snapshot("lessons__lesson_06_pinhole_camera__numbers");
+    let pinhole = snapshot_body("lessons::lesson_06_pinhole_camera", "numbers");
     assert_eq!(
         line_starting(&pinhole, "Placed:"),
         "Placed: p=(0.000, 3.000, 6.000), d=(0.000, -1.000, -2.000), k=(0.000, 1.000, 0.000)"
@@ -112,7 +111,7 @@ fn chapters_03_to_06_say_what_their_table_headers_said() {
 
 #[test]
 fn chapter_08_quotes_its_coverage_table() {
-    let table = snapshot("lessons__lesson_08_ray_casting__numbers");
+    let table = snapshot_body("lessons::lesson_08_ray_casting", "numbers");
     assert!(table.starts_with("Shadowless ray casting, 480 x 270 pixels"));
     let count = |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
     for column in [1, 2] {
@@ -141,7 +140,7 @@ fn chapter_08_quotes_its_coverage_table() {
 
 #[test]
 fn chapter_08_quotes_its_pixel_and_acne_tables() {
-    let pixels = snapshot("lessons__lesson_08_ray_casting__lambert_pixels");
+    let pixels = snapshot_body("lessons::lesson_08_ray_casting", "lambert_pixels");
     let colour = |name: &str| -> Vec3 {
         let c = cell(&pixels, name, 2);
         let v: Vec<f32> = c
@@ -170,7 +169,7 @@ fn chapter_08_quotes_its_pixel_and_acne_tables() {
     assert_eq!(format!("{:.3}", lit.x), "1.206");
     assert_says("08_1_light_and_shadows.md", "reaches $1.206$, more than 1");
 
-    let acne = snapshot("lessons__lesson_08_ray_casting__acne");
+    let acne = snapshot_body("lessons::lesson_08_ray_casting", "acne");
     let fixed = columns(line_starting(&acne, "t > 1e-4 (fixed)"));
     let scaled = columns(line_starting(&acne, "scaled offset"));
     assert_eq!(&fixed[1..], ["2797", "2.16%"]);
@@ -189,7 +188,7 @@ fn chapter_08_quotes_its_pixel_and_acne_tables() {
 
 #[test]
 fn chapter_09_quotes_its_comparison_table() {
-    let table = snapshot("lessons__lesson_09_rasterization__numbers");
+    let table = snapshot_body("lessons::lesson_09_rasterization", "numbers");
     let number = |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
     // The counts of step "the numbers" and of the speed paragraph.
     assert_eq!(

@@ -17,9 +17,10 @@
 //!
 //! Standard library only.
 
+use crate::common::pages::rust_files;
 use std::collections::BTreeSet;
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Names from outside the crate that the book may put in backticks: Rust's primitive
 /// types and standard library, glam's matrices, and the float methods the lessons
@@ -76,23 +77,6 @@ const FOREIGN: &[&str] = &[
     // The header of a PFM file, which lesson 10 writes.
     "PF",
 ];
-
-/// Every `.rs` file under `dir`, recursively.
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(entries) = fs::read_dir(dir) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        let path = entry.path();
-        if path.is_dir() {
-            if path.file_name().is_some_and(|n| n != "target") {
-                rust_files(&path, out);
-            }
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-}
 
 /// `text` with its `//` comments removed (strings are kept: a name only in a string
 /// still counts, which errs on the side of passing).
@@ -156,19 +140,14 @@ fn declared(text: &str, bindings: bool) -> BTreeSet<String> {
 
 /// Every name the crate's sources declare, and their file stems (modules).
 fn crate_names(root: &Path) -> BTreeSet<String> {
-    let mut files = Vec::new();
-    for dir in ["src", "examples", "book/figures/src", "tests", "benches"] {
-        rust_files(&root.join(dir), &mut files);
-    }
     let mut names = BTreeSet::new();
-    for file in files {
-        if let Some(stem) = file.file_stem() {
-            names.insert(stem.to_string_lossy().into_owned());
+    for dir in ["src", "examples", "book/figures/src", "tests", "benches"] {
+        for (file, text) in rust_files(root, dir) {
+            if let Some(stem) = Path::new(&file).file_stem() {
+                names.insert(stem.to_string_lossy().into_owned());
+            }
+            names.extend(declared(&text, true));
         }
-        names.extend(declared(
-            &fs::read_to_string(&file).unwrap_or_default(),
-            true,
-        ));
     }
     for entry in fs::read_dir(root.join("src"))
         .into_iter()

@@ -5,23 +5,10 @@
 //!
 //! Standard library, glam and the crate only; the chapters are read as text.
 
+use crate::common::pages::page as chapter;
 use std::collections::HashSet;
-use std::fs;
-use std::path::PathBuf;
 
 // ---- reading the book ----------------------------------------------------------
-
-pub(crate) fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-pub(crate) fn read(relative: &str) -> String {
-    fs::read_to_string(root().join(relative)).unwrap_or_else(|e| panic!("{relative}: {e}"))
-}
-
-pub(crate) fn chapter(file: &str) -> String {
-    read(&format!("chapters/{file}"))
-}
 
 /// The pages of `SUMMARY.md`, in the order of the book.
 pub(crate) fn summary_pages() -> Vec<String> {
@@ -53,18 +40,6 @@ pub(crate) fn assert_says(file: &str, phrase: &str) {
         flat(&chapter(file)).contains(&flat(phrase)),
         "{file} should say `{phrase}`"
     );
-}
-
-/// A snapshot's text after its insta header (the second `---` line).
-pub(crate) fn snapshot(name: &str) -> String {
-    let text = read(&format!("tests/lessons/snapshots/{name}.snap"));
-    let mut parts = text.splitn(3, "---\n");
-    parts.next();
-    parts.next();
-    parts
-        .next()
-        .expect("an insta snapshot has a header")
-        .to_string()
 }
 
 /// The line of `text` that starts with `start`.

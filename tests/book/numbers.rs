@@ -15,10 +15,11 @@
 //!
 //! Standard library only.
 
+use crate::common::pages::rust_files;
 use crate::markdown;
 use crate::printed::{Printed, numbers, printed, supports};
 use crate::quotes::{QUOTES, source};
-use crate::sources::{included, included_text, rust_files, snapshot_path, test_sources};
+use crate::sources::{included, included_text, snapshot_beside, test_sources};
 
 use markdown::fence;
 use std::fs;
@@ -271,7 +272,7 @@ fn every_number_the_book_states_comes_from_a_source() {
     let read = |rel: &str| fs::read_to_string(chapters.join(rel)).ok();
     let mut code = Vec::new();
     for dir in ["tests", "benches", "src", "examples"] {
-        rust_files(root, Path::new(dir), &mut code);
+        code.extend(rust_files(root, dir));
     }
     // The measurements of `cargo bench`, by their anchors.
     let benchmarks = fs::read_to_string(root.join("BENCHMARKS.md")).unwrap_or_default();
@@ -384,15 +385,15 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
     );
     // Where insta keeps a test's snapshots: beside its file, named by module path.
     assert_eq!(
-        snapshot_path("tests/lessons/lesson_07_intersections.rs", "numbers"),
+        snapshot_beside("tests/lessons/lesson_07_intersections.rs", "numbers"),
         "tests/lessons/snapshots/lessons__lesson_07_intersections__numbers.snap"
     );
     assert_eq!(
-        snapshot_path("tests/lessons/main.rs", "a"),
+        snapshot_beside("tests/lessons/main.rs", "a"),
         "tests/lessons/snapshots/lessons__a.snap"
     );
     assert_eq!(
-        snapshot_path("src/course/report.rs", "a"),
+        snapshot_beside("src/course/report.rs", "a"),
         "src/course/snapshots/render_lessons__course__report__a.snap"
     );
 }

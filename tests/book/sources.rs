@@ -6,8 +6,6 @@ use crate::markdown;
 use crate::printed::anchored_lines;
 
 use markdown::fence;
-use std::fs;
-use std::path::Path;
 
 /// The body of `fn name(` in a Rust file, braces matched, or a `const name` up to
 /// its `;` (a bench's image size, a chart's distances), or `None`.
@@ -75,7 +73,7 @@ pub(crate) fn named_functions(text: &str) -> Vec<(Option<String>, String)> {
 /// (`tests/lessons/lesson_07_intersections.rs`, `numbers` ->
 /// `tests/lessons/snapshots/lessons__lesson_07_intersections__numbers.snap`; a file of
 /// `src/` is a module of `render_lessons`).
-pub(crate) fn snapshot_path(path: &str, name: &str) -> String {
+pub(crate) fn snapshot_beside(path: &str, name: &str) -> String {
     let (dir, file) = path.rsplit_once('/').unwrap_or(("", path));
     let stem = file.trim_end_matches(".rs");
     let mut modules: Vec<&str> = dir.split('/').skip(1).collect();
@@ -91,7 +89,7 @@ pub(crate) fn snapshot_path(path: &str, name: &str) -> String {
 /// What a page's numbers may come from in code: the body of each function it
 /// names (see [`named_functions`]) and the snapshots that body asserts. `code`
 /// holds (path, text) for every Rust file of the project; `snapshot`
-/// reads a snapshot by its path (see [`snapshot_path`]).
+/// reads a snapshot by its path (see [`snapshot_beside`]).
 pub(crate) fn test_sources(
     text: &str,
     code: &[(String, String)],
@@ -116,7 +114,7 @@ pub(crate) fn test_sources(
             for call in body.split("assert_snapshot!(").skip(1) {
                 let quoted = call.trim_start().strip_prefix('"');
                 if let Some(snap) = quoted.and_then(|q| q.split('"').next())
-                    && let Some(s) = snapshot(&snapshot_path(path, snap))
+                    && let Some(s) = snapshot(&snapshot_beside(path, snap))
                 {
                     out.push_str(&s);
                 }
@@ -188,22 +186,4 @@ pub(crate) fn included_text(text: &str, read: &dyn Fn(&str) -> Option<String>) -
         .into_iter()
         .map(|i| i.code + &i.comments)
         .collect()
-}
-
-/// Every `.rs` file under `root/dir`, as (path relative to `root`, text).
-pub(crate) fn rust_files(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
-    let Ok(entries) = fs::read_dir(root.join(dir)) else {
-        return;
-    };
-    let mut paths: Vec<_> = entries.flatten().map(|e| e.path()).collect();
-    paths.sort();
-    for path in paths {
-        let relative = dir.join(path.file_name().unwrap_or_default());
-        if path.is_dir() {
-            rust_files(root, &relative, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            let text = fs::read_to_string(&path).unwrap_or_default();
-            out.push((relative.to_string_lossy().replace('\\', "/"), text));
-        }
-    }
 }

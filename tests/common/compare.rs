@@ -61,13 +61,14 @@ impl Gap for Mat4 {
 }
 
 /// `a` and `b` differ by at most `tol` in every component (NaN is never close).
-pub fn close<T: Gap>(a: T, b: T, tol: f64) -> bool {
-    a.gap(b) <= tol
+pub fn close<T: Gap>(a: T, b: T, tol: impl Into<f64>) -> bool {
+    a.gap(b) <= tol.into()
 }
 
 /// Panics, naming both values and the tolerance, unless [`close`].
 #[track_caller]
-pub fn assert_close<T: Gap>(got: T, want: T, tol: f64) {
+pub fn assert_close<T: Gap>(got: T, want: T, tol: impl Into<f64>) {
+    let tol = tol.into();
     assert!(
         close(got, want, tol),
         "got {got:?}, want {want:?} (tolerance {tol:e})"

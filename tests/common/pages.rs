@@ -2,7 +2,7 @@
 //! the crate, and the numbers a page quotes from them.
 
 use std::fs;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The root of the crate (where `Cargo.toml` is).
 pub fn root() -> PathBuf {
@@ -34,6 +34,12 @@ pub fn snapshot_path(module: &str, name: &str) -> String {
 /// included.
 pub fn snapshot(module: &str, name: &str) -> String {
     read(&snapshot_path(module, name))
+}
+
+/// The snapshot `name` of the module `module` after its insta header: what the
+/// test asserted.
+pub fn snapshot_body(module: &str, name: &str) -> String {
+    after_header(&snapshot(module, name)).to_string()
 }
 
 /// A snapshot's text after its insta header (the second `---` line).
@@ -101,4 +107,49 @@ pub fn after(snap: &str, before: &str) -> f64 {
     let rest = &snap[start..];
     let end = rest.find([' ', ';', '\n', ')']).unwrap_or(rest.len());
     rest[..end].parse().unwrap()
+}
+
+/// A number as the pages print it in math: `$3.2\cdot 10^{-7}$`.
+pub fn sci(x: f64) -> String {
+    let s = format!("{x:.1e}");
+    let (mantissa, exponent) = s.split_once('e').unwrap();
+    format!("${mantissa}\\cdot 10^{{{exponent}}}$")
+}
+
+/// Panics unless the page `name` contains `phrase`: a measured number the page quotes,
+/// formatted from this file's measurement.
+pub fn assert_page_says(name: &str, phrase: &str) {
+    let text = std::fs::read_to_string(format!("chapters/{name}")).unwrap();
+    assert!(
+        text.contains(phrase),
+        "chapters/{name} no longer says {phrase:?}: the measurement changed, or the text"
+    );
+}
+
+/// Every `.rs` file under `root/dir`, recursively, in order, as (its path from `root`
+/// with `/` between the parts, its text); `target` and `node_modules` folders are not
+/// sources and are skipped.
+pub fn rust_files(root: &Path, dir: &str) -> Vec<(String, String)> {
+    fn walk(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
+        let Ok(entries) = fs::read_dir(root.join(dir)) else {
+            return;
+        };
+        let mut paths: Vec<_> = entries.flatten().map(|e| e.path()).collect();
+        paths.sort();
+        for path in paths {
+            let name = path.file_name().unwrap_or_default();
+            let relative = dir.join(name);
+            if path.is_dir() {
+                if name != "target" && name != "node_modules" {
+                    walk(root, &relative, out);
+                }
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = fs::read_to_string(&path).unwrap_or_default();
+                out.push((relative.to_string_lossy().replace('\\', "/"), text));
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(root, Path::new(dir), &mut out);
+    out
 }

@@ -8,6 +8,7 @@
 
 use crate::common;
 use common::Rng;
+use render_lessons::course::measure::triangle::bumpy_sphere;
 use std::collections::BTreeSet;
 
 use glam::{Mat4, Vec3};
@@ -221,16 +222,10 @@ fn same_hits_as_the_list_with_a_plane_and_a_quadric() {
     assert_same_answers(&scene, &rays);
 }
 
-/// The closed bumpy sphere of STABILITY S4/S5, `n` x `n` segments: the same mesh
-/// lesson 11's chart 2 measures.
-fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
-    render_lessons::course::measure::triangle::bumpy_sphere(n, n)
-}
-
 #[test]
 fn watertight_through_the_tree_no_leaks_at_vertices_or_edges() {
     for n in [16, 32] {
-        let (vertices, indices) = bumpy_sphere(n);
+        let (vertices, indices) = bumpy_sphere(n, n);
         let objects = indices
             .iter()
             .map(|&[a, b, c]| {

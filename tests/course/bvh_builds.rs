@@ -6,6 +6,7 @@
 
 use crate::bvh::{assert_same_answers, mesh_objects, object, random_rays, random_soup, scene};
 use crate::common;
+use crate::common::bits;
 use crate::examples::speed_vs_accuracy as lesson11;
 use common::Rng;
 use render_lessons::scenes::{TEAPOT_OBJ, asset_path, mesh_on_the_floor};
@@ -209,7 +210,7 @@ fn structural_invariants_and_sah_beats_the_median_on_100k_triangles() {
 }
 
 /// 4 samples per pixel of the default path tracer, each pixel's bits.
-fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) -> Vec<[u32; 3]> {
+fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) -> Vec<Vec<u32>> {
     use render_lessons::pathtrace::{Accumulator, PixelSampling, Settings};
     let settings = Settings::default();
     let image = Accumulator::new(camera, 7)
@@ -217,7 +218,7 @@ fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) 
         .unwrap();
     (0..image.height())
         .flat_map(|y| (0..image.width()).map(move |x| (x, y)))
-        .map(|(x, y)| image.get(x, y).unwrap().to_array().map(f32::to_bits))
+        .map(|(x, y)| bits(&image.get(x, y).unwrap()))
         .collect()
 }
 
@@ -263,8 +264,8 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
     let through_list = path_traced(&list, &camera);
     assert_eq!(path_traced(&tree, &camera), through_list);
     // Not a blank image: most pixels see the torus or the lit floor, not the sky.
-    let sky = Vec3::splat(0.1).to_array().map(f32::to_bits);
-    let seen = through_list.iter().filter(|&&p| p != sky).count();
+    let sky = bits(&Vec3::splat(0.1));
+    let seen = through_list.iter().filter(|&p| *p != sky).count();
     assert!(seen > through_list.len() / 2, "{seen} pixels see the scene");
 }
 

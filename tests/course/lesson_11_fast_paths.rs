@@ -9,7 +9,7 @@
 //! in `tests/lessons/lesson_06_pinhole_camera.rs`.
 
 use crate::common;
-use common::Rng;
+use common::{Rng, bits};
 use glam::Vec3;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
@@ -17,19 +17,9 @@ use render_lessons::render::render;
 use render_lessons::scene::{Intersect, Object, Scene, SceneHit};
 use render_lessons::scenes::{still_life, still_life_pinhole};
 use render_lessons::shapes::{
-    Aabb, Cylinder, Hit, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
+    Aabb, Cylinder, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
 };
 use render_lessons::transform::Transform;
-
-/// Every bit of a hit, so that -0 and 0 (and NaN payloads) count as different.
-fn bits(hit: &Hit) -> Vec<u32> {
-    let v = |v: Vec3| v.to_array().map(f32::to_bits);
-    let mut out = vec![hit.t.to_bits(), u32::from(hit.front_face)];
-    out.extend(v(hit.point));
-    out.extend(v(hit.normal));
-    out.extend(v(hit.error));
-    out
-}
 
 /// The lecture's loop, written out: every shape asked for its hit in the list's
 /// order, each hit shrinking the range, so the first of equal hits wins.
@@ -172,11 +162,7 @@ fn the_still_lifes_image_made_row_by_row_is_the_lectures_pixel_loop_bit_for_bit(
                 None => scene.background(),
             };
             let pixel = fast.get(x, y).unwrap();
-            assert_eq!(
-                pixel.to_array().map(f32::to_bits),
-                readable.to_array().map(f32::to_bits),
-                "pixel ({x}, {y})"
-            );
+            assert_eq!(bits(&pixel), bits(&readable), "pixel ({x}, {y})");
         }
     }
 }

@@ -22,6 +22,7 @@
     reason = "RTC's published values are quoted as printed, 0.70711 included"
 )]
 
+use crate::common::assert_close;
 use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
 use glam::{Mat4, Vec3};
@@ -34,33 +35,8 @@ use render_lessons::transform::{Transform, from_rows};
 /// RTC's `equal`: |a - b| < EPSILON = 1e-4.
 pub(crate) const RTC_EPSILON: f32 = 1e-4;
 
-pub(crate) fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
-
 pub(crate) fn v(x: f32, y: f32, z: f32) -> Vec3 {
     Vec3::new(x, y, z)
-}
-
-#[track_caller]
-pub(crate) fn close(got: f32, want: f32, tol: f32) {
-    assert!(
-        (got - want).abs() < tol,
-        "got {got}, want {want} (tolerance {tol})"
-    );
-}
-
-#[track_caller]
-pub(crate) fn close3(got: Vec3, want: Vec3, tol: f32) {
-    assert!(
-        (got - want).abs().max_element() < tol,
-        "got {got}, want {want} (tolerance {tol})"
-    );
-}
-
-#[track_caller]
-pub(crate) fn close_mat(got: Mat4, want: Mat4, tol: f32) {
-    assert!(got.abs_diff_eq(want, tol), "got {got}\nwant {want}");
 }
 
 #[track_caller]
@@ -73,7 +49,7 @@ pub(crate) fn crossings(shape: &Shape, r: &Ray, want: &[f32]) {
         &xs[..]
     );
     for (&t, &w) in xs.iter().zip(want) {
-        close(t, w, RTC_EPSILON);
+        assert_close(t, w, RTC_EPSILON);
     }
 }
 
@@ -90,13 +66,13 @@ fn rtc_chained_transformations_apply_the_rightmost_first() {
     let b = Transform::scale(5.0, 5.0, 5.0);
     let c = Transform::translation(10.0, 5.0, 7.0);
     let p2 = a.point(p);
-    close3(p2, v(1.0, -1.0, 0.0), 1e-6);
+    assert_close(p2, v(1.0, -1.0, 0.0), 1e-6);
     let p3 = b.point(p2);
-    close3(p3, v(5.0, -5.0, 0.0), 1e-5);
-    close3(c.point(p3), v(15.0, 0.0, 7.0), 1e-5);
+    assert_close(p3, v(5.0, -5.0, 0.0), 1e-5);
+    assert_close(c.point(p3), v(15.0, 0.0, 7.0), 1e-5);
 
     let t = c * b * a;
-    close3(t.point(p), v(15.0, 0.0, 7.0), 1e-5);
+    assert_close(t.point(p), v(15.0, 0.0, 7.0), 1e-5);
     // The same product as the method chain in the order of application, bit for bit.
     assert_eq!(t, a.then(b).then(c));
 }
@@ -134,7 +110,7 @@ fn rtc_default_orientation_is_the_identity() {
 #[test]
 fn rtc_looking_down_positive_z_is_a_mirror_in_x_and_z() {
     let t = view(Vec3::ZERO, v(0.0, 0.0, 1.0), Vec3::Y);
-    close_mat(t.matrix(), Transform::scale(-1.0, 1.0, -1.0).matrix(), 1e-7);
+    assert_close(t.matrix(), Transform::scale(-1.0, 1.0, -1.0).matrix(), 1e-7);
 }
 
 /// RTC: "The view transformation moves the world": from (0, 0, 8) to the origin is
@@ -142,7 +118,7 @@ fn rtc_looking_down_positive_z_is_a_mirror_in_x_and_z() {
 #[test]
 fn rtc_view_transformation_moves_the_world() {
     let t = view(v(0.0, 0.0, 8.0), Vec3::ZERO, Vec3::Y);
-    close_mat(
+    assert_close(
         t.matrix(),
         Transform::translation(0.0, 0.0, -8.0).matrix(),
         1e-7,
@@ -169,7 +145,7 @@ fn rtc_arbitrary_view_transformation_normalised() {
         [-3.0 / s70, 5.0 / s70, -6.0 / s70, 0.0],
         [0.0, 0.0, 0.0, 1.0],
     ]);
-    close_mat(t.matrix(), want, 2e-6);
+    assert_close(t.matrix(), want, 2e-6);
 
     let rtc = from_rows([
         [-0.50709, 0.50709, 0.67612, -2.36643],
@@ -178,15 +154,15 @@ fn rtc_arbitrary_view_transformation_normalised() {
         [0.0, 0.0, 0.0, 1.0],
     ]);
     let left_length = rtc.row(0).truncate().length();
-    close(left_length, 0.98561, RTC_EPSILON);
+    assert_close(left_length, 0.98561, RTC_EPSILON);
     for row in 0..2 {
         let got = t.matrix().row(row);
-        close3(
+        assert_close(
             got.truncate(),
             rtc.row(row).truncate() / left_length,
             RTC_EPSILON,
         );
-        close(got.w, rtc.row(row).w / left_length, RTC_EPSILON);
+        assert_close(got.w, rtc.row(row).w / left_length, RTC_EPSILON);
     }
     assert!(t.matrix().row(2).abs_diff_eq(rtc.row(2), RTC_EPSILON));
 }
@@ -196,19 +172,19 @@ fn camera_to_world_undoes_world_to_camera() {
     let frame = Frame::look_at(v(1.0, 3.0, 2.0), v(4.0, -2.0, 8.0), v(1.0, 1.0, 0.0)).unwrap();
     let to_world = frame.camera_to_world();
     let to_camera = frame.world_to_camera().unwrap();
-    close_mat((to_world * to_camera).matrix(), Mat4::IDENTITY, 1e-5);
-    close_mat((to_camera * to_world).matrix(), Mat4::IDENTITY, 1e-5);
+    assert_close((to_world * to_camera).matrix(), Mat4::IDENTITY, 1e-5);
+    assert_close((to_camera * to_world).matrix(), Mat4::IDENTITY, 1e-5);
     // The eye is the camera's origin, and the camera looks down its -Z.
     assert_eq!(to_world.point(Vec3::ZERO), v(1.0, 3.0, 2.0));
-    close3(
+    assert_close(
         to_world.vector(Vec3::NEG_Z),
         v(3.0, -5.0, 6.0).normalize(),
         1e-6,
     );
     // And both agree with the Frame's own point maps.
     let p = v(-2.0, 0.5, 7.0);
-    close3(to_camera.point(p), frame.point_to_camera(p), 1e-5);
-    close3(to_world.point(p), frame.point_to_world(p), 1e-5);
+    assert_close(to_camera.point(p), frame.point_to_camera(p), 1e-5);
+    assert_close(to_world.point(p), frame.point_to_world(p), 1e-5);
 }
 
 /// The rasterizer's view matrix is the frame's, bit for bit.
@@ -250,8 +226,8 @@ fn rtc_pixel_size() {
         )
         .unwrap();
         let size = c.film().pixel_size();
-        close(size.x, 0.01, 1e-6);
-        close(size.y, 0.01, 1e-6);
+        assert_close(size.x, 0.01, 1e-6);
+        assert_close(size.y, 0.01, 1e-6);
         assert_eq!(c.screen_distance(), 1.0);
     }
 }
@@ -273,8 +249,8 @@ fn rtc_camera(eye: Vec3, target: Vec3) -> PinholeCamera {
 #[test]
 fn rtc_ray_through_the_centre_of_the_canvas() {
     let r = rtc_camera(Vec3::ZERO, Vec3::NEG_Z).ray(100, 50);
-    close3(r.origin(), Vec3::ZERO, 1e-7);
-    close3(r.direction(), Vec3::NEG_Z, 1e-6);
+    assert_close(r.origin(), Vec3::ZERO, 1e-7);
+    assert_close(r.direction(), Vec3::NEG_Z, 1e-6);
 }
 
 /// RTC: "Constructing a ray through a corner of the canvas": pixel (0, 0) gives the
@@ -285,9 +261,9 @@ fn rtc_ray_through_the_centre_of_the_canvas() {
 #[test]
 fn rtc_ray_through_a_corner_of_the_canvas_x_negated() {
     let r = rtc_camera(Vec3::ZERO, Vec3::NEG_Z).ray(0, 0);
-    close3(r.origin(), Vec3::ZERO, 1e-7);
-    close3(r.direction(), v(-0.66519, 0.33259, -0.66851), RTC_EPSILON);
-    close3(
+    assert_close(r.origin(), Vec3::ZERO, 1e-7);
+    assert_close(r.direction(), v(-0.66519, 0.33259, -0.66851), RTC_EPSILON);
+    assert_close(
         r.direction(),
         v(-200.0, 100.0, -201.0) / 90401f32.sqrt(),
         1e-6,
@@ -301,7 +277,7 @@ fn rtc_ray_through_a_corner_of_the_canvas_x_negated() {
 fn rtc_corner_ray_is_our_mirrored_column() {
     let c = rtc_camera(Vec3::ZERO, Vec3::NEG_Z);
     let r = c.ray(c.film().width() - 1, 0);
-    close3(r.direction(), v(0.66519, 0.33259, -0.66851), RTC_EPSILON);
+    assert_close(r.direction(), v(0.66519, 0.33259, -0.66851), RTC_EPSILON);
 }
 
 /// RTC: "Constructing a ray when the camera is transformed": the camera's transform
@@ -313,15 +289,15 @@ fn rtc_ray_when_the_camera_is_transformed() {
     let eye = v(0.0, 2.0, -5.0);
     let c = rtc_camera(eye, eye + v(1.0, 0.0, -1.0));
     let rtc_transform = Transform::rotation_y(FRAC_PI_4) * Transform::translation(0.0, -2.0, 5.0);
-    close_mat(
+    assert_close(
         c.frame().world_to_camera().unwrap().matrix(),
         rtc_transform.matrix(),
         1e-6,
     );
     let r = c.ray(100, 50);
-    close3(r.origin(), eye, 1e-6);
+    assert_close(r.origin(), eye, 1e-6);
     let h = 2f32.sqrt() / 2.0;
-    close3(r.direction(), v(h, 0.0, -h), 1e-6);
+    assert_close(r.direction(), v(h, 0.0, -h), 1e-6);
 }
 
 /// This crate's conventions, for the record: from the default camera the top-left
@@ -332,8 +308,8 @@ fn top_left_pixel_looks_left_up_and_away() {
     let d = c.ray(0, 0).direction();
     assert!(d.x < 0.0 && d.y > 0.0 && d.z < 0.0, "{d}");
     // 60 degrees vertically: the top edge of the screen at distance 1 is tan(30 deg) up.
-    close(c.film().y_extent().1, (PI / 6.0).tan(), 1e-6);
-    close(c.film().x_extent().1, (PI / 6.0).tan() * 4.0 / 3.0, 1e-6);
+    assert_close(c.film().y_extent().1, (PI / 6.0).tan(), 1e-6);
+    assert_close(c.film().x_extent().1, (PI / 6.0).tan() * 4.0 / 3.0, 1e-6);
 }
 
 #[test]

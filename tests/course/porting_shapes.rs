@@ -8,7 +8,8 @@
     reason = "RTC's published values are quoted as printed, 0.70711 included"
 )]
 
-use crate::porting::{RTC_EPSILON, close, close3, crossings, ray, v};
+use crate::common::{assert_close, cube, ray, unit_sphere};
+use crate::porting::{RTC_EPSILON, crossings, v};
 use std::f32::consts::{FRAC_PI_2, PI};
 
 use glam::Vec3;
@@ -19,15 +20,11 @@ use render_lessons::transform::Transform;
 // ---------------------------------------------------------------------------------
 // Spheres and instances (RTC ch. 5 and 6).
 
-fn unit_sphere() -> Shape {
-    Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap())
-}
-
 /// RTC ch. 5: a ray at (0, 0, -5) along +z crosses at 4 and 6; tangent at (0, 1, -5):
 /// 5 twice; at (0, 2, -5) misses; from the centre: -1 and 1; sphere behind: -6, -4.
 #[test]
 fn rtc_sphere_crossings() {
-    let s = unit_sphere();
+    let s = Shape::from(unit_sphere());
     crossings(&s, &ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]), &[4.0, 6.0]);
     crossings(&s, &ray([0.0, 1.0, -5.0], [0.0, 0.0, 1.0]), &[5.0, 5.0]);
     crossings(&s, &ray([0.0, 2.0, -5.0], [0.0, 0.0, 1.0]), &[]);
@@ -39,14 +36,14 @@ fn rtc_sphere_crossings() {
 /// (sqrt3/3, sqrt3/3, sqrt3/3) is that point, of unit length.
 #[test]
 fn rtc_sphere_normals() {
-    let s = unit_sphere();
+    let s = Shape::from(unit_sphere());
     for axis in [Vec3::X, Vec3::Y, Vec3::Z] {
         assert_eq!(s.normal_at(axis), axis);
     }
     let k = 3f32.sqrt() / 3.0;
     let n = s.normal_at(Vec3::splat(k));
-    close3(n, Vec3::splat(k), 1e-6);
-    close(n.length(), 1.0, 1e-6);
+    assert_close(n, Vec3::splat(k), 1e-6);
+    assert_close(n.length(), 1.0, 1e-6);
 }
 
 /// RTC ch. 5: "Intersecting a scaled sphere with a ray" (scaling(2, 2, 2)): 3 and 7;
@@ -54,9 +51,14 @@ fn rtc_sphere_normals() {
 #[test]
 fn rtc_transformed_sphere_crossings() {
     let r = ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]);
-    let scaled = Instance::new(unit_sphere(), Transform::scale(2.0, 2.0, 2.0)).unwrap();
+    let scaled =
+        Instance::new(Shape::from(unit_sphere()), Transform::scale(2.0, 2.0, 2.0)).unwrap();
     crossings(&Shape::Instance(Box::new(scaled)), &r, &[3.0, 7.0]);
-    let moved = Instance::new(unit_sphere(), Transform::translation(5.0, 0.0, 0.0)).unwrap();
+    let moved = Instance::new(
+        Shape::from(unit_sphere()),
+        Transform::translation(5.0, 0.0, 0.0),
+    )
+    .unwrap();
     crossings(&Shape::Instance(Box::new(moved)), &r, &[]);
 }
 
@@ -66,16 +68,22 @@ fn rtc_transformed_sphere_crossings() {
 /// (0, 0.97014, -0.24254). The product is written as in the book.
 #[test]
 fn rtc_transformed_sphere_normals() {
-    let moved = Instance::new(unit_sphere(), Transform::translation(0.0, 1.0, 0.0)).unwrap();
-    close3(
+    let moved = Instance::new(
+        Shape::from(unit_sphere()),
+        Transform::translation(0.0, 1.0, 0.0),
+    )
+    .unwrap();
+    assert_close(
         moved.normal_at(v(0.0, 1.70711, -0.70711)),
         v(0.0, 0.70711, -0.70711),
         RTC_EPSILON,
     );
     let m = Transform::scale(1.0, 0.5, 1.0) * Transform::rotation_z(PI / 5.0);
-    let shape = Shape::Instance(Box::new(Instance::new(unit_sphere(), m).unwrap()));
+    let shape = Shape::Instance(Box::new(
+        Instance::new(Shape::from(unit_sphere()), m).unwrap(),
+    ));
     let h = 2f32.sqrt() / 2.0;
-    close3(
+    assert_close(
         shape.normal_at(v(0.0, h, -h)),
         v(0.0, 0.97014, -0.24254),
         RTC_EPSILON,
@@ -103,14 +111,10 @@ fn rtc_plane() {
 // ---------------------------------------------------------------------------------
 // Cubes (RTC ch. 12): the box from (-1, -1, -1) to (1, 1, 1).
 
-fn cube() -> Shape {
-    Shape::Aabb(Aabb::new(Vec3::splat(-1.0), Vec3::ONE).unwrap())
-}
-
 /// RTC: "A ray intersects a cube": through each face, 4 and 6; from inside, -1 and 1.
 #[test]
 fn rtc_cube_crossings() {
-    let c = cube();
+    let c = Shape::from(cube());
     let cases = [
         ([5.0, 0.5, 0.0], [-1.0, 0.0, 0.0], [4.0, 6.0]),
         ([-5.0, 0.5, 0.0], [1.0, 0.0, 0.0], [4.0, 6.0]),
@@ -128,7 +132,7 @@ fn rtc_cube_crossings() {
 /// RTC: "A ray misses a cube".
 #[test]
 fn rtc_cube_misses() {
-    let c = cube();
+    let c = Shape::from(cube());
     let cases = [
         ([-2.0, 0.0, 0.0], [0.2673, 0.5345, 0.8018]),
         ([0.0, -2.0, 0.0], [0.8018, 0.2673, 0.5345]),
@@ -146,7 +150,7 @@ fn rtc_cube_misses() {
 /// (-1, -1, -1) -> -x: ties go to x).
 #[test]
 fn rtc_cube_normals() {
-    let c = cube();
+    let c = Shape::from(cube());
     let cases = [
         (v(1.0, 0.5, -0.8), v(1.0, 0.0, 0.0)),
         (v(-1.0, -0.2, 0.9), v(-1.0, 0.0, 0.0)),
@@ -258,7 +262,7 @@ fn rtc_cylinder_normals() {
         (v(-1.0, 1.0, 0.0), v(-1.0, 0.0, 0.0)),
     ];
     for (p, n) in cases {
-        close3(c.normal_at(p), n, 1e-7);
+        assert_close(c.normal_at(p), n, 1e-7);
     }
 }
 
@@ -282,11 +286,11 @@ fn cylinder_along_x_two_ways() {
     for c in [&along, &placed] {
         crossings(c, &r, &[6.80798, 7.08872]);
         let hit = c.hit(&r, Interval::AHEAD).unwrap();
-        close(hit.t, 6.80798, RTC_EPSILON);
+        assert_close(hit.t, 6.80798, RTC_EPSILON);
         // On the surface: y^2 + z^2 = 1, and the normal is (0, y, z).
         let p = hit.point;
-        close(p.y * p.y + p.z * p.z, 1.0, 1e-5);
-        close3(c.normal_at(p), v(0.0, p.y, p.z), 1e-5);
+        assert_close(p.y * p.y + p.z * p.z, 1.0, 1e-5);
+        assert_close(c.normal_at(p), v(0.0, p.y, p.z), 1e-5);
     }
 
     let wide = Shape::Quadric(Quadric::cylinder_along(v(-3.0, 0.0, 0.0), 2.0).unwrap());
@@ -342,9 +346,9 @@ fn rtc_cone_crossings() {
         disc.abs() < 1e-6 * (b as f64).powi(2),
         "discriminant {disc}"
     );
-    close3(r.at(5.0 * 3f32.sqrt()), v(5.0, 5.0, 0.0), 1e-5);
+    assert_close(r.at(5.0 * 3f32.sqrt()), v(5.0, 5.0, 0.0), 1e-5);
     for &t in c.crossings(&r).iter() {
-        close(t, 8.66025, 1e-3);
+        assert_close(t, 8.66025, 1e-3);
     }
 
     crossings(
@@ -366,12 +370,12 @@ fn rtc_cone_parallel_to_a_generator_one_crossing_corrected() {
     let r = ray([0.0, 0.0, -1.0], [0.0, 1.0, 1.0]);
     crossings(&c, &r, &[0.70711]);
     let p = r.at(c.crossings(&r)[0]);
-    close3(p, v(0.0, 0.5, -0.5), 1e-6);
+    assert_close(p, v(0.0, 0.5, -0.5), 1e-6);
     let Shape::Quadric(q) = &c else {
         unreachable!()
     };
-    close(q.value(p), 0.0, 1e-6);
-    close(q.value(r.at(0.35355)).abs(), 0.5, 1e-4);
+    assert_close(q.value(p), 0.0, 1e-6);
+    assert_close(q.value(r.at(0.35355)).abs(), 0.5, 1e-4);
 }
 
 /// RTC: "Computing the normal vector on a cone": zero at the apex. RTC's other two
@@ -383,12 +387,12 @@ fn rtc_cone_parallel_to_a_generator_one_crossing_corrected() {
 fn rtc_cone_normals() {
     let c = rtc_cone();
     assert_eq!(c.normal_at(Vec3::ZERO), Vec3::ZERO);
-    close3(
+    assert_close(
         c.normal_at(v(1.0, 2f32.sqrt(), 1.0)),
         v(1.0, -(2f32.sqrt()), 1.0) / 2.0,
         1e-6,
     );
-    close3(
+    assert_close(
         c.normal_at(v(-1.0, -1.0, 0.0)),
         v(-1.0, 1.0, 0.0).normalize(),
         1e-6,
@@ -460,9 +464,9 @@ fn every_shape_crossings_agree_with_hit_and_normal_at() {
             assert_eq!(first_ahead.is_some(), hit.is_some(), "{name} {i} {j}");
             let Some(hit) = hit else { continue };
             hits += 1;
-            close(hit.t, first_ahead.unwrap(), 1e-5 * hit.t.max(1.0));
-            close3(shape.normal_at(hit.point), hit.normal, 1e-4);
-            close(shape.normal_at(hit.point).length(), 1.0, 1e-5);
+            assert_close(hit.t, first_ahead.unwrap(), 1e-5 * hit.t.max(1.0));
+            assert_close(shape.normal_at(hit.point), hit.normal, 1e-4);
+            assert_close(shape.normal_at(hit.point).length(), 1.0, 1e-5);
         }
         assert!(hits > 0, "{name}: no ray hit; the test would prove nothing");
     }

@@ -1,6 +1,6 @@
 //! Lesson 03: the orthographic camera at the origin.
 
-use crate::common;
+use crate::common::{self, slide_camera};
 use crate::examples::ortho_camera as lesson;
 
 use clap::Parser;
@@ -10,10 +10,6 @@ use render_lessons::Error;
 use render_lessons::camera::{Film, OrthoCamera};
 use render_lessons::error::Problem;
 use render_lessons::limits::MAX_RESOLUTION;
-
-fn slide_camera() -> OrthoCamera {
-    OrthoCamera::at_origin(Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap())
-}
 
 #[test]
 fn numbers() {
@@ -180,17 +176,4 @@ fn mine_draws_the_origin_image_with_the_given_pixel_to_plane() {
     let film = Film::new(32, 24, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
     let mine = lesson::my_origin_image(&film, reference).unwrap();
     assert_eq!(mine, lesson::origin_image(&film).unwrap());
-}
-
-#[cfg(not(feature = "exercises"))]
-#[test]
-fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
-    let message = render_lessons::course::mine::my_pixel_to_plane()
-        .unwrap_err()
-        .to_string();
-    assert!(
-        message.contains("cargo run --features exercises --example 03_ortho_camera -- --mine"),
-        "{message}"
-    );
-    assert_eq!(message.lines().count(), 1, "{message}");
 }

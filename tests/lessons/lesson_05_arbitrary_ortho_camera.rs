@@ -1,6 +1,6 @@
 //! Lesson 05: the arbitrary orthographic camera, its basis, the slide erratum and S10.
 
-use crate::common;
+use crate::common::{self, slide_film};
 use crate::examples::arbitrary_ortho_camera as lesson;
 
 use clap::Parser;
@@ -8,7 +8,7 @@ use glam::{Mat3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::basis::Basis;
-use render_lessons::camera::{Film, Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide};
+use render_lessons::camera::{Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide};
 use render_lessons::error::Problem;
 
 /// The example's camera, from its default flags.
@@ -36,7 +36,7 @@ fn origin_looking_down_minus_z_with_up_y_is_the_identity() {
 #[test]
 fn erratum_the_slides_w_makes_the_camera_look_backwards() {
     let d = Vec3::new(-1.0, 0.0, -1.0);
-    let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
+    let film = slide_film();
     let slide = camera_basis_as_on_slide(d, Vec3::Y).unwrap();
     let slide_camera = OrthoCamera::new(film, Frame::from_basis(Vec3::ZERO, slide));
     let ours = OrthoCamera::new(film, Frame::look(Vec3::ZERO, d, Vec3::Y).unwrap());
@@ -68,7 +68,7 @@ proptest! {
     #[test]
     fn every_world_ray_is_parallel_to_d(d in common::direction(), k in common::direction(), px in 0u32..4, py in 0u32..3) {
         prop_assume!(d.normalize().cross(k.normalize()).length() > 1e-3);
-        let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
+        let film = slide_film();
         let cam = OrthoCamera::new(film, Frame::look(Vec3::new(1.0, 2.0, 3.0), d, k).unwrap());
         let ray = cam.ray(px, py);
         prop_assert!((ray.direction() - d.normalize()).length() < 1e-5);

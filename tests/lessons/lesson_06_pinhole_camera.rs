@@ -1,6 +1,6 @@
 //! Lesson 06: the pinhole camera, the slide erratum, and handedness (S11) for both cameras.
 
-use crate::common;
+use crate::common::{self, bits, slide_film};
 use crate::examples::pinhole_camera as lesson;
 
 use clap::Parser;
@@ -11,17 +11,16 @@ use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Problem;
 use render_lessons::ray::Ray;
 
-fn film() -> Film {
-    Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap()
-}
-
 /// The example's flags with `extra` added, the frame they give and its two 4 x 3 cameras
 /// (at the origin, and placed by the frame).
 fn example(extra: &[&str]) -> (lesson::Args, Frame, PinholeCamera, PinholeCamera) {
     let args = lesson::Args::parse_from([&["06_pinhole_camera"], extra].concat());
     let frame = Frame::look(args.position, args.direction, args.up).unwrap();
     let [at_origin, placed] = lesson::cameras(args.screen_distance, frame).unwrap();
-    assert_eq!(at_origin, PinholeCamera::at_origin(film(), 8.0).unwrap());
+    assert_eq!(
+        at_origin,
+        PinholeCamera::at_origin(slide_film(), 8.0).unwrap()
+    );
     (args, frame, at_origin, placed)
 }
 
@@ -39,7 +38,7 @@ fn screen_point_is_c_plus_u_a_plus_v_b() {
     let a = Vec3::X * 16.0;
     let b = Vec3::Y * 12.0;
     let c = -8.0 * Vec3::X - 6.0 * Vec3::Y - s * Vec3::Z;
-    let cam = PinholeCamera::at_origin(film(), s).unwrap();
+    let cam = PinholeCamera::at_origin(slide_film(), s).unwrap();
     for py in 0..3u32 {
         for px in 0..4u32 {
             let y_from_bottom = 2 - py; // the slides count rows from the bottom
@@ -58,7 +57,9 @@ fn screen_point_is_c_plus_u_a_plus_v_b() {
 #[test]
 fn pixel_0_0_ray_by_hand() {
     // Screen point (-6, 4, -8); |(-6, 4, -8)| = sqrt(116).
-    let ray = PinholeCamera::at_origin(film(), 8.0).unwrap().ray(0, 0);
+    let ray = PinholeCamera::at_origin(slide_film(), 8.0)
+        .unwrap()
+        .ray(0, 0);
     assert_eq!(ray.origin(), Vec3::ZERO);
     let expected = Vec3::new(-6.0, 4.0, -8.0) / 116f32.sqrt();
     assert!((ray.direction() - expected).length() < 1e-6);
@@ -67,8 +68,8 @@ fn pixel_0_0_ray_by_hand() {
 #[test]
 fn erratum_the_slides_repeated_orthographic_rays_are_parallel() {
     // Literally as on the arbitrary-pinhole slide: origin (x, y, 0), direction (0, 0, -1).
-    let literal = OrthoCamera::at_origin(film());
-    let pinhole = PinholeCamera::at_origin(film(), 8.0).unwrap();
+    let literal = OrthoCamera::at_origin(slide_film());
+    let pinhole = PinholeCamera::at_origin(slide_film(), 8.0).unwrap();
     let (a, b) = (literal.ray(0, 0), literal.ray(3, 2));
     assert_eq!(
         a.direction(),
@@ -120,18 +121,20 @@ fn s11_right_is_right_and_up_is_up_for_both_cameras() {
 #[test]
 fn bad_screen_distance_is_named() {
     assert_eq!(
-        PinholeCamera::at_origin(film(), 0.0),
+        PinholeCamera::at_origin(slide_film(), 0.0),
         Err(Error::Value {
             param: "screen distance",
             problem: Problem::NotPositive { value: 0.0 }
         })
     );
     assert_eq!(
-        PinholeCamera::at_origin(film(), -2.0).unwrap_err().param(),
+        PinholeCamera::at_origin(slide_film(), -2.0)
+            .unwrap_err()
+            .param(),
         "screen distance"
     );
     assert_eq!(
-        PinholeCamera::at_origin(film(), f32::NAN),
+        PinholeCamera::at_origin(slide_film(), f32::NAN),
         Err(Error::Value {
             param: "screen distance",
             problem: Problem::NotFinite
@@ -230,25 +233,6 @@ fn mine_draws_the_pinhole_view_with_the_given_pinhole_ray() {
     }
 }
 
-#[cfg(not(feature = "exercises"))]
-#[test]
-fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
-    let message = render_lessons::course::mine::my_pinhole_ray()
-        .unwrap_err()
-        .to_string();
-    assert!(
-        message.contains("cargo run --features exercises --example 06_pinhole_camera -- --mine"),
-        "{message}"
-    );
-    assert_eq!(message.lines().count(), 1, "{message}");
-}
-
-/// The bits of a ray, so that -0 and 0 count as different.
-fn bits(ray: &render_lessons::ray::Ray) -> [u32; 6] {
-    let (o, d) = (ray.origin(), ray.direction());
-    [o.x, o.y, o.z, d.x, d.y, d.z].map(f32::to_bits)
-}
-
 #[test]
 fn row_rays_are_the_slides_rays_bit_for_bit() {
     // Lesson 08's camera, a camera at the origin (p = 0: B 0 + p is then -0 or 0 by
@@ -258,9 +242,9 @@ fn row_rays_are_the_slides_rays_bit_for_bit() {
             .unwrap()
             .pinhole()
             .unwrap(),
-        PinholeCamera::at_origin(film(), 8.0).unwrap(),
+        PinholeCamera::at_origin(slide_film(), 8.0).unwrap(),
         PinholeCamera::new(
-            film(),
+            slide_film(),
             3.0,
             Frame::look(
                 Vec3::new(-0.0, 0.0, -0.0),
@@ -280,10 +264,10 @@ fn row_rays_are_the_slides_rays_bit_for_bit() {
         )
         .unwrap(),
     ];
-    let ortho = Camera::from(OrthoCamera::new(film(), *cameras[2].frame()));
-    for py in 0..film().height() {
+    let ortho = Camera::from(OrthoCamera::new(slide_film(), *cameras[2].frame()));
+    for py in 0..slide_film().height() {
         let mut rays = ortho.row(py);
-        for px in 0..film().width() {
+        for px in 0..slide_film().width() {
             assert_eq!(bits(&rays.next_ray()), bits(&ortho.ray(px, py)));
         }
     }

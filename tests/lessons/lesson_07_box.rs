@@ -2,6 +2,7 @@
 //! face for either sign of zero (STABILITY S8), the face normal, pbrt's gamma, and
 //! the conservative slab that never rejects its own triangle's box (S6).
 
+use crate::common::{cube, ray};
 use render_lessons::course::measure::Quality;
 use render_lessons::course::measure::triangle::{BoxCounts, box_cases, box_counts};
 
@@ -9,15 +10,7 @@ use glam::Vec3;
 use render_lessons::ray::{ClosedSpan, Interval, Ray};
 use render_lessons::shapes::{Aabb, Shape};
 
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
-
 // ---------------------------------------------------------------- box (S8)
-
-fn cube() -> Aabb {
-    Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0)).unwrap()
-}
 
 /// A slab test written the naive way round: `t0 = if t0 > t_near { t0 } else { t_near }`
 /// lets a NaN from 0 * inf replace the interval (kept to show the failure).

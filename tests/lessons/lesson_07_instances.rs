@@ -2,55 +2,23 @@
 //! scaled and translated sphere is the ellipsoid, the normal is transformed by the
 //! inverse transpose, and t stays the world distance.
 
+use crate::common::pages::{assert_page_says, sci};
+use crate::common::{ray, unit_sphere};
+use crate::lesson_07_quadrics::{gradient_fd, p64};
 use glam::{DVec3, Vec3};
 use render_lessons::ray::{Interval, Ray};
-use render_lessons::shapes::{Instance, Quadric, Shape, Sphere};
+use render_lessons::shapes::{Instance, Quadric, Shape};
 use render_lessons::transform::Transform;
 
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
-
-/// The gradient of x^T Q x at p by central differences in f64 (h = 1e-4; exact for a
-/// quadratic up to rounding).
-fn gradient_fd(f: impl Fn(DVec3) -> f64, p: DVec3) -> DVec3 {
-    let h = 1e-4;
-    let dx = |e: DVec3| (f(p + h * e) - f(p - h * e)) / (2.0 * h);
-    DVec3::new(dx(DVec3::X), dx(DVec3::Y), dx(DVec3::Z))
-}
-
-fn p64(v: Vec3) -> DVec3 {
-    v.as_dvec3()
-}
-
-/// A number as the pages print it in math: `$3.2\cdot 10^{-7}$`.
-fn sci(x: f64) -> String {
-    let s = format!("{x:.1e}");
-    let (mantissa, exponent) = s.split_once('e').unwrap();
-    format!("${mantissa}\\cdot 10^{{{exponent}}}$")
-}
-
-/// Panics unless the page `name` contains `phrase`: a measured number the page quotes,
-/// formatted from this file's measurement.
-fn assert_page_says(name: &str, phrase: &str) {
-    let text = std::fs::read_to_string(format!("chapters/{name}")).unwrap();
-    assert!(
-        text.contains(phrase),
-        "chapters/{name} no longer says {phrase:?}: the measurement changed, or the text"
-    );
-}
-
 // ---------------------------------------------------------------- instances
-
-fn unit_sphere() -> Shape {
-    Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap())
-}
 
 #[test]
 fn scaled_translated_sphere_is_the_ellipsoid() {
     let shift = Vec3::new(1.0, -2.0, 3.0);
     let m = Transform::scale(2.0, 1.0, 1.0).then(Transform::translation(shift.x, shift.y, shift.z));
-    let inst = Shape::Instance(Box::new(Instance::new(unit_sphere(), m).unwrap()));
+    let inst = Shape::Instance(Box::new(
+        Instance::new(Shape::from(unit_sphere()), m).unwrap(),
+    ));
     let e = Quadric::ellipsoid(Vec3::new(2.0, 1.0, 1.0)).unwrap();
     let mut hits = 0;
     for i in 0..10 {
@@ -94,7 +62,7 @@ fn instance_normal_is_the_inverse_transpose_one() {
     // Unit sphere stretched to x^2/4 + y^2 + z^2 = 1. From (1, 5, 0) along -Y it is hit
     // at y = sqrt(1 - 1/4) = sqrt 3 / 2, t = 5 - sqrt 3 / 2.
     let m = Transform::scale(2.0, 1.0, 1.0);
-    let inst = Instance::new(unit_sphere(), m).unwrap();
+    let inst = Instance::new(Shape::from(unit_sphere()), m).unwrap();
     let h = inst
         .hit(&ray([1.0, 5.0, 0.0], [0.0, -1.0, 0.0]), Interval::AHEAD)
         .unwrap();
@@ -141,7 +109,7 @@ fn instance_t_is_world_distance() {
     let m = Transform::scale(3.0, 0.5, 1.5)
         .then(Transform::rotation_y(0.4))
         .then(Transform::translation(0.0, 1.0, -2.0));
-    let inst = Instance::new(unit_sphere(), m).unwrap();
+    let inst = Instance::new(Shape::from(unit_sphere()), m).unwrap();
     let ellipsoid = Instance::new(
         Shape::Quadric(Quadric::ellipsoid(Vec3::new(3.0, 0.5, 1.5)).unwrap()),
         Transform::rotation_y(0.4).then(Transform::translation(0.0, 1.0, -2.0)),

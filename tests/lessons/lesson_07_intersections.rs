@@ -178,7 +178,7 @@ fn naive_and_robust() {
     let (cases, hard) = (lesson::cases().unwrap(), lesson::hard_cases().unwrap());
     let table = lesson::naive_and_robust(cases.iter().chain(&hard));
     insta::assert_snapshot!("naive_and_robust", table);
-    let close = |a: &[f32], b: &[f32]| {
+    let agree = |a: &[f32], b: &[f32]| {
         a.len() == b.len()
             && a.iter()
                 .zip(b)
@@ -187,7 +187,7 @@ fn naive_and_robust() {
     for case in &cases {
         let [(_, naive), (_, robust)] = lesson::methods(&case.shape, &case.ray);
         assert!(
-            close(&naive, &robust),
+            agree(&naive, &robust),
             "{}: {naive:?} {robust:?}",
             case.name
         );
@@ -196,7 +196,7 @@ fn naive_and_robust() {
     for case in &hard {
         let [(_, naive), (_, robust)] = lesson::methods(&case.shape, &case.ray);
         assert!(
-            !close(&naive, &robust),
+            !agree(&naive, &robust),
             "{}: {naive:?} {robust:?}",
             case.name
         );

@@ -2,13 +2,10 @@
 //! and STABILITY S3: a wall modelled as a huge sphere hits itself in f32, a plane
 //! does not.
 
+use crate::common::ray;
 use glam::Vec3;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Plane, Shape, Sphere};
-
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
 
 // ---------------------------------------------------------------- plane
 

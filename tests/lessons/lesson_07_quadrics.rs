@@ -8,16 +8,14 @@
 //! are printed with `eprintln!` (run with
 //! `cargo test --test lessons lesson_07_quadrics -- --nocapture` to see them).
 
+use crate::common::pages::{assert_page_says, sci};
+use crate::common::ray;
 use glam::{DVec3, Mat4, Vec3, Vec4};
 use render_lessons::Error;
 use render_lessons::error::Problem;
 use render_lessons::ray::{Crossings, Interval, Ray};
 use render_lessons::shapes::{Instance, Quadric, Shape, Sphere};
 use render_lessons::transform::Transform;
-
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
 
 fn first(r: Crossings) -> Option<f32> {
     r.first_in(Interval::AHEAD)
@@ -42,31 +40,14 @@ fn value64(q: &Mat4, p: DVec3) -> f64 {
 
 /// The gradient of x^T Q x at p by central differences in f64 (h = 1e-4; exact for a
 /// quadratic up to rounding).
-fn gradient_fd(f: impl Fn(DVec3) -> f64, p: DVec3) -> DVec3 {
+pub(crate) fn gradient_fd(f: impl Fn(DVec3) -> f64, p: DVec3) -> DVec3 {
     let h = 1e-4;
     let dx = |e: DVec3| (f(p + h * e) - f(p - h * e)) / (2.0 * h);
     DVec3::new(dx(DVec3::X), dx(DVec3::Y), dx(DVec3::Z))
 }
 
-fn p64(v: Vec3) -> DVec3 {
+pub(crate) fn p64(v: Vec3) -> DVec3 {
     v.as_dvec3()
-}
-
-/// A number as the pages print it in math: `$3.2\cdot 10^{-7}$`.
-fn sci(x: f64) -> String {
-    let s = format!("{x:.1e}");
-    let (mantissa, exponent) = s.split_once('e').unwrap();
-    format!("${mantissa}\\cdot 10^{{{exponent}}}$")
-}
-
-/// Panics unless the page `name` contains `phrase`: a measured number the page quotes,
-/// formatted from this file's measurement.
-fn assert_page_says(name: &str, phrase: &str) {
-    let text = std::fs::read_to_string(format!("chapters/{name}")).unwrap();
-    assert!(
-        text.contains(phrase),
-        "chapters/{name} no longer says {phrase:?}: the measurement changed, or the text"
-    );
 }
 
 // ---------------------------------------------------------------- S9

@@ -4,24 +4,13 @@
 //!
 //! Expected values are worked out by hand, or in f64 from the same f32 inputs.
 
+use crate::common::{close, ray, unit_sphere};
 use glam::{DVec3, Vec3};
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Shape, Sphere};
 
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
-
-fn unit_sphere() -> Sphere {
-    Sphere::new(Vec3::ZERO, 1.0).unwrap()
-}
-
 /// A pair of roots, or the entry and exit of a slab interval; `None` for a miss.
 type Pair = Option<(f32, f32)>;
-
-fn close(a: (f32, f32), b: (f32, f32), tol: f32) -> bool {
-    (a.0 - b.0).abs() <= tol && (a.1 - b.1).abs() <= tol
-}
 
 // ---------------------------------------------------------------- sphere
 

@@ -3,23 +3,14 @@
 //! Möller-Trumbore does (STABILITY S4, S5), and the barycentric hit point that stays
 //! on the plane where o + t d does not (S7).
 
-use crate::common;
+use crate::common::{self, ray};
+use render_lessons::course::measure::triangle::bumpy_sphere;
 
 use glam::Vec3;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Barycentric, Shape, Triangle};
 
-fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
-}
-
 // ---------------------------------------------------------------- triangle
-
-/// The closed bumpy sphere of STABILITY S4/S5, `n` x `n` segments: the same mesh
-/// lesson 11's chart 2 measures.
-fn bumpy_sphere(n: usize) -> (Vec<Vec3>, Vec<[usize; 3]>) {
-    render_lessons::course::measure::triangle::bumpy_sphere(n, n)
-}
 
 /// How many of the rays from the origin towards `targets` hit no triangle at all, for
 /// Möller-Trumbore and for the watertight test.
@@ -42,7 +33,7 @@ fn leaks(tris: &[Triangle], targets: &[Vec3]) -> (usize, usize) {
 }
 
 fn mesh_triangles() -> (Vec<Vec3>, Vec<[usize; 3]>, Vec<Triangle>) {
-    let (vertices, indices) = bumpy_sphere(16);
+    let (vertices, indices) = bumpy_sphere(16, 16);
     let tris = indices
         .iter()
         .map(|&[a, b, c]| Triangle::new(vertices[a], vertices[b], vertices[c]).unwrap())

@@ -1,5 +1,6 @@
 //! Lesson 08: ray casting, shading, shadow rays; determinism; STABILITY S13, S14.
 
+use crate::common::reference_closest;
 use crate::examples::ray_casting as lesson;
 
 use std::path::Path;
@@ -12,7 +13,7 @@ use render_lessons::ray::{Interval, Ray};
 use render_lessons::raycast::shadowless;
 use render_lessons::render::{render, with_threads};
 use render_lessons::sampling::{cosine_hemisphere, grid};
-use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
+use render_lessons::scene::{Object, PointLight, Scene};
 use render_lessons::scenes::{still_life, still_life_cameras};
 use render_lessons::shapes::{Plane, Shape, Sphere};
 use render_lessons::spawn::{Offset, Start, offset_ray_origin};
@@ -282,15 +283,7 @@ fn a_point_in_shadow_gets_only_the_ambient_share() {
 fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
     // The crate's own closest-hit loop, in the shape of exercise 8.1, must draw
     // exactly the lesson's shadowless pinhole image.
-    fn reference(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
-        let objects = shapes
-            .iter()
-            .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
-            .collect();
-        let scene = Scene::new(objects, Vec3::ZERO).unwrap();
-        scene.closest(ray, range)
-    }
-    let mine = lesson::my_shadowless_image(reference, SMALL).unwrap();
+    let mine = lesson::my_shadowless_image(reference_closest, SMALL).unwrap();
     let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
     assert_eq!(mine, images.shadowless_pinhole);
 }
@@ -305,29 +298,6 @@ fn mine_draws_the_lambert_image_with_the_given_lambert() {
     let mine = lesson::my_lambert_image(reference, SMALL).unwrap();
     let images = lesson::images(SMALL, EPSILON, FAR).unwrap();
     assert_eq!(mine, images.lambert);
-}
-
-#[cfg(not(feature = "exercises"))]
-#[test]
-fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
-    use render_lessons::course::mine;
-    for mine in [mine::my_closest().err(), mine::my_lambert().err()] {
-        let message = mine.expect("an error").to_string();
-        assert!(message.contains("--features exercises"), "{message}");
-        assert_eq!(message.lines().count(), 1, "{message}");
-        // The command names the lesson, so that it can be pasted as it is.
-        assert!(
-            message.contains("--example 08_ray_casting -- --mine"),
-            "{message}"
-        );
-        // Without the feature, a lesson with two exercises still stops with the error.
-        assert!(
-            mine::if_passing(Err::<(), _>(
-                render_lessons::course::failure::Failure::Exercise { report: message }
-            ))
-            .is_err()
-        );
-    }
 }
 
 /// The numbers `08_ray_casting.md` and `08_1_light_and_shadows.md` work out by hand,

@@ -8,6 +8,7 @@
 //! normal it starts from can never meet it again, so every re-hit is a rounding
 //! artefact. The reference is geometry, not a number computed another way.
 
+use crate::common::unit_sphere;
 use glam::{Vec2, Vec3};
 use render_lessons::material::Material;
 use render_lessons::pathtrace::{Settings, radiance};
@@ -140,15 +141,11 @@ fn assert_never_re_hit(name: &str, shape: &Shape, aim: &[Vec3], solid: bool) {
     }
 }
 
-fn unit_sphere() -> Shape {
-    Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap())
-}
-
 #[test]
 fn sphere_is_never_re_hit_from_near_or_far() {
     assert_never_re_hit(
         "sphere",
-        &unit_sphere(),
+        &Shape::from(unit_sphere()),
         &targets(Vec3::ZERO, 0.9, 24),
         true,
     );
@@ -190,7 +187,7 @@ fn scaled_offset_fails_on_the_point_o_plus_t_d_seen_from_far_away() {
     // The failing method keeps its test. From o + t d, the point the renderers used
     // before, the scaled offset follows |p| (about 1 here) while the point's error
     // follows t (about the distance); a fixed epsilon fails too.
-    let (sphere, aim) = (unit_sphere(), targets(Vec3::ZERO, 0.9, 24));
+    let (sphere, aim) = (Shape::from(unit_sphere()), targets(Vec3::ZERO, 0.9, 24));
     let run = |d: f32, offset: Offset, raw: bool| re_hits(&sphere, d, &aim, 16, true, offset, raw);
     let (near, _) = run(10.0, Offset::Scaled, true);
     let (far, total) = run(1e4, Offset::Scaled, true);
@@ -306,7 +303,7 @@ fn instanced_sphere_is_never_re_hit_from_near_or_far() {
     let place = Transform::scale(2.0, 0.5, 1.0)
         .then(Transform::rotation_y(0.7))
         .then(Transform::translation(0.5, -0.25, 0.1));
-    let instance = Instance::new(unit_sphere(), place).unwrap();
+    let instance = Instance::new(Shape::from(unit_sphere()), place).unwrap();
     let aim = targets(Vec3::new(0.5, -0.25, 0.1), 0.4, 24);
     assert_never_re_hit(
         "instanced sphere",

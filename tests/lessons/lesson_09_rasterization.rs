@@ -6,6 +6,7 @@
 //! `lesson_09_meshes` (OBJ files, the teapot).
 
 use crate::examples::rasterization as lesson;
+use render_lessons::course::report::num;
 
 use std::collections::HashMap;
 use std::fmt::Write;
@@ -25,19 +26,6 @@ use render_lessons::scenes::{
     PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };
 use render_lessons::transform::Transform;
-
-/// Fixed precision, -0 written as 0.
-fn num(x: f32) -> String {
-    let s = format!("{x:.4}");
-    if s.trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.')
-    {
-        s.trim_start_matches('-').to_string()
-    } else {
-        s
-    }
-}
 
 pub(crate) fn film() -> Film {
     Film::new(16, 9, (-1.6, 1.6), (-0.9, 0.9)).unwrap()
@@ -126,16 +114,16 @@ fn projection_table(camera: &Camera, points: &[Vec3]) -> String {
         writeln!(
             out,
             "({}, {}, {}) -> clip ({}, {}, {}, {})\n    -> pixel ({}, {}) depth {}",
-            num(p.x),
-            num(p.y),
-            num(p.z),
-            num(clip.x),
-            num(clip.y),
-            num(clip.z),
-            num(clip.w),
-            num(screen.x),
-            num(screen.y),
-            num(screen.z)
+            num(f64::from(p.x), 4),
+            num(f64::from(p.y), 4),
+            num(f64::from(p.z), 4),
+            num(f64::from(clip.x), 4),
+            num(f64::from(clip.y), 4),
+            num(f64::from(clip.z), 4),
+            num(f64::from(clip.w), 4),
+            num(f64::from(screen.x), 4),
+            num(f64::from(screen.y), 4),
+            num(f64::from(screen.z), 4)
         )
         .unwrap();
     }

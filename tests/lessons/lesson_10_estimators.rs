@@ -7,6 +7,7 @@
 
 use crate::common::pages::{assert_quotes, page};
 use crate::lesson_10_path_tracing::settings;
+use render_lessons::course::chart::log_log_slope;
 
 use glam::{Vec2, Vec3};
 use render_lessons::camera::Camera;
@@ -179,17 +180,6 @@ fn edge_image(
     acc.render_pass(&scene, &camera, &s, pixels, spp).unwrap()
 }
 
-/// Least-squares slope of log(rmse) against log(n).
-fn log_log_slope(points: &[(f64, f64)]) -> f64 {
-    let n = points.len() as f64;
-    let xs: Vec<f64> = points.iter().map(|p| p.0.ln()).collect();
-    let ys: Vec<f64> = points.iter().map(|p| p.1.ln()).collect();
-    let (mx, my) = (xs.iter().sum::<f64>() / n, ys.iter().sum::<f64>() / n);
-    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
-    let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
-    sxy / sxx
-}
-
 fn convergence(pixels: PixelSampling) -> Vec<(f64, f64)> {
     // The reference: 9216 jittered samples per pixel, a 96 x 96 grid.
     let reference = edge_image(PixelSampling::Jittered, 9216, 99);
@@ -209,7 +199,10 @@ fn convergence(pixels: PixelSampling) -> Vec<(f64, f64)> {
 fn s18_rmse_slope_independent_is_minus_one_half_jittered_steeper() {
     let independent = convergence(PixelSampling::Independent);
     let jittered = convergence(PixelSampling::Jittered);
-    let (a, b) = (log_log_slope(&independent), log_log_slope(&jittered));
+    let (a, b) = (
+        log_log_slope(&independent).unwrap(),
+        log_log_slope(&jittered).unwrap(),
+    );
     eprintln!("S18 independent {independent:?} slope {a}");
     eprintln!("S18 jittered {jittered:?} slope {b}");
     assert!((a + 0.5).abs() <= 0.05, "independent slope {a}");

@@ -3,6 +3,7 @@
 //! draw; and each step's figure is what its command writes.
 
 use crate::common::pages::page;
+use crate::common::{bits, blue_pixels};
 use crate::examples::path_tracing as lesson;
 use crate::lesson_10_path_tracing::{render, settings};
 
@@ -29,7 +30,6 @@ use render_lessons::scenes::path_tracing::{Staged, cornell};
 #[test]
 fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
     let Staged { scene, camera } = cornell(160, 120).unwrap();
-    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
     for s in [
         settings(Sampling::NextEvent, Some(8), true),
         Settings::default(),
@@ -52,8 +52,8 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 let observed = vertices
                     .iter()
                     .fold(Vec3::ZERO, |sum, v| sum + v.emitted + v.direct);
-                assert_eq!(bits(path.radiance), bits(expected), "pixel ({x}, {y})");
-                assert_eq!(bits(observed), bits(expected), "pixel ({x}, {y})");
+                assert_eq!(bits(&path.radiance), bits(&expected), "pixel ({x}, {y})");
+                assert_eq!(bits(&observed), bits(&expected), "pixel ({x}, {y})");
                 assert_eq!(watched.next_u32(), rng.next_u32(), "pixel ({x}, {y})");
                 let surfaces = vertices.iter().filter_map(|v| match v.at {
                     At::Surface { point, object } => Some((point, object, v.light_sample)),
@@ -64,7 +64,7 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                     .iter()
                     .map(|v| (v.point, v.object, v.light_sample));
                 assert!(surfaces.eq(recorded), "pixel ({x}, {y})");
-                assert_eq!(bits(first.get(x, y).unwrap()), bits(expected));
+                assert_eq!(bits(&first.get(x, y).unwrap()), bits(&expected));
                 assert!(!path.vertices.is_empty() || path.escaped.is_some());
                 compared += 1;
             }
@@ -108,16 +108,9 @@ fn recorded_paths_lie_on_their_objects_and_sample_lights_at_diffuse_vertices() {
 #[test]
 fn the_figures_draw_paths_and_samples() {
     let rgba = figures::path_figure().unwrap().rgba();
-    assert!(common_blue(&rgba) > 2000, "the paths");
+    assert!(blue_pixels(&rgba) > 2000, "the paths");
     let rgba = figures::hemisphere_figure().unwrap().rgba();
-    assert!(common_blue(&rgba) > 2000, "the uniform samples");
-}
-
-/// Clearly blue RGBA pixels (rays and uniform samples are drawn in blue).
-fn common_blue(rgba: &[u8]) -> usize {
-    rgba.chunks(4)
-        .filter(|p| p[2] as i32 > p[0] as i32 + 60)
-        .count()
+    assert!(blue_pixels(&rgba) > 2000, "the uniform samples");
 }
 
 // Steps 2 to 8: each figure is what its command writes.

@@ -6,6 +6,7 @@
 //! `lesson_10_figures`, `lesson_10_monte_carlo` (step 1), `lesson_10_pages`,
 //! `lesson_10_densities` and `lesson_10_pfm`.
 
+use crate::common::bits;
 use crate::examples::path_tracing as lesson;
 
 use clap::Parser;
@@ -230,10 +231,6 @@ fn cornell_image(threads: usize, passes: &[u32], pixels: PixelSampling) -> Vec<V
         .flat_map(|y| (0..16).map(move |x| (x, y)))
         .map(|(x, y)| img.get(x, y).unwrap())
         .collect()
-}
-
-fn bits(v: &[Vec3]) -> Vec<[u32; 3]> {
-    v.iter().map(|c| c.to_array().map(f32::to_bits)).collect()
 }
 
 #[test]

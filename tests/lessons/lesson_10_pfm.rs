@@ -2,6 +2,7 @@
 //! reads back bit for bit, and every malformed file is refused with an error that
 //! names the file and what is wrong.
 
+use crate::common::bits;
 use glam::Vec3;
 use render_lessons::error::Error;
 use render_lessons::framebuffer::Framebuffer;
@@ -21,13 +22,6 @@ fn awkward(x: u32, y: u32) -> Vec3 {
     ];
     let i = (x * 3 + y * 5) as usize;
     Vec3::new(pick[i % 7], pick[(i + 1) % 7], pick[(i + 3) % 7])
-}
-
-fn bits(image: &Framebuffer) -> Vec<[u32; 3]> {
-    (0..image.height())
-        .flat_map(|y| (0..image.width()).map(move |x| (x, y)))
-        .map(|(x, y)| image.get(x, y).unwrap().to_array().map(f32::to_bits))
-        .collect()
 }
 
 #[test]

@@ -236,3 +236,17 @@ impl Mul for Transform {
     }
 }
 // ANCHOR_END: mul
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mul_is_then_reversed_bit_for_bit() {
+        let a = Transform::rotation_y(0.3);
+        let b = Transform::translation(1.0, -2.0, 3.5);
+        assert_eq!((a * b).matrix(), b.then(a).matrix());
+        assert_eq!((a * b).matrix(), a.matrix() * b.matrix());
+        assert_ne!(a * b, b * a, "translation and rotation do not commute");
+    }
+}

@@ -5,7 +5,8 @@
 //! distance", "to the bit", "within the noise", ...) must name the test that checks
 //! it: either a marker `<!-- checked: tests/FILE.rs::test_name -->` in the paragraph,
 //! or, as the "How we know" lists do, the test's name in backticks. Either way the
-//! test function must exist in that file (for a bare name: in some file of `tests/`).
+//! test function must exist in that file (for a bare name: in some file of `tests/`,
+//! or in a unit test module of `src/`).
 //! A sentence that cannot name its test is reworded.
 //!
 //! And a test the book, the README or BENCHMARKS.md names by its path is there:
@@ -16,6 +17,7 @@
 //! Standard library only.
 
 use crate::common::pages::rust_files;
+use crate::sources::unit_tests;
 use std::fs;
 use std::path::Path;
 
@@ -120,10 +122,14 @@ fn every_quantified_claim_names_its_test() {
         .filter(|p| p.ends_with(".md"))
         .collect();
     let read = |file: &str| fs::read_to_string(root.join(file)).ok();
-    let all_tests: String = rust_files(root, "tests")
+    // The tests: every file of `tests/` and the unit test modules of `src/`.
+    let mut all_tests: String = rust_files(root, "tests")
         .into_iter()
         .map(|(_, text)| text)
         .collect();
+    for (_, text) in rust_files(root, "src") {
+        all_tests += unit_tests(&text);
+    }
     let mut problems = Vec::new();
     for page in pages {
         let text = fs::read_to_string(root.join("chapters").join(page)).expect("chapter");

@@ -68,6 +68,14 @@ pub(crate) fn named_functions(text: &str) -> Vec<(Option<String>, String)> {
     names
 }
 
+/// The unit test modules of a source file: everything from its first `#[cfg(test)]`
+/// on (the crate keeps them at the end), or nothing.
+pub(crate) fn unit_tests(source: &str) -> &str {
+    source
+        .find("#[cfg(test)]")
+        .map_or("", |start| &source[start..])
+}
+
 /// Where insta keeps the snapshot `name` asserted in the Rust file `path` (relative
 /// to the root): `snapshots/` beside the file, named after the file's module path
 /// (`tests/lessons/lesson_07_intersections.rs`, `numbers` ->
@@ -98,9 +106,11 @@ pub(crate) fn test_sources(
     let mut out = String::new();
     for (file, name) in named_functions(text) {
         for (path, source) in code {
-            let wanted = match &file {
-                Some(f) => f == path,
-                None => path.starts_with("tests/"),
+            // A bare name is a test: in `tests/`, or in a unit test module of `src/`.
+            let (wanted, source) = match &file {
+                Some(f) => (f == path, source.as_str()),
+                None if path.starts_with("src/") => (true, unit_tests(source)),
+                None => (path.starts_with("tests/"), source.as_str()),
             };
             let region = if path.ends_with(".md") {
                 anchored_lines(source, &name).map(|lines| lines.join("\n"))

@@ -111,13 +111,6 @@ fn box_hit_normal_is_the_face_axis() {
 }
 
 #[test]
-fn gamma_matches_pbrt() {
-    let eps = f32::EPSILON as f64 / 2.0;
-    let g3 = 3.0 * eps / (1.0 - 3.0 * eps);
-    assert!((render_lessons::float::gamma(3) as f64 - g3).abs() < 1e-12);
-}
-
-#[test]
 fn s6_conservative_box_never_rejects_its_own_triangle() {
     // The cases of lesson 11's S6 finding: rays aimed exactly at a vertex of random
     // triangles, kept when the watertight test hits, with the triangle's f32 box.

@@ -13,12 +13,11 @@ use clap::Parser;
 
 use glam::Vec3;
 use render_lessons::camera::{Camera, Film, PinholeCamera, ThinLensCamera};
-use render_lessons::course::convergence::{Renders, Study, ladder};
+use render_lessons::course::convergence::{Renders, Study};
 use render_lessons::error::Error;
-use render_lessons::material::{Material, fresnel};
+use render_lessons::material::Material;
 use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling, Settings};
 use render_lessons::render::{thread_pool, with_threads};
-use render_lessons::rng::Rng;
 use render_lessons::scene::{Object, Scene};
 use render_lessons::scenes::path_tracing::{Staged, cornell, look_camera};
 use render_lessons::shapes::{Plane, Quad, Shape, Sphere};
@@ -196,14 +195,6 @@ fn the_lesson_is_the_same_with_jitter_on_any_thread_count() {
     );
 }
 
-#[test]
-fn the_ladder_is_powers_of_4_then_spp() {
-    assert_eq!(ladder(64).unwrap(), [1, 4, 16, 64]);
-    assert_eq!(ladder(100).unwrap(), [1, 4, 16, 64, 100]);
-    assert_eq!(ladder(1).unwrap(), [1]);
-    assert_eq!(ladder(0).unwrap_err().param(), "spp");
-}
-
 pub(crate) fn settings(sampling: Sampling, max_depth: Option<u32>, rr: bool) -> Settings {
     Settings {
         sampling,
@@ -248,53 +239,6 @@ fn one_pass_of_4_equals_two_passes_of_2_for_independent_samples() {
     let one = cornell_image(2, &[4], PixelSampling::Independent);
     let two = cornell_image(2, &[2, 2], PixelSampling::Independent);
     assert_eq!(bits(&one), bits(&two));
-}
-
-#[test]
-fn rng_streams_differ_between_pixels_and_stay_in_0_1() {
-    let mut a = Rng::for_pixel(1, 0, 0);
-    let mut b = Rng::for_pixel(1, 1, 0);
-    let mut c = Rng::for_pixel(1, 0, 1);
-    let xa: Vec<u32> = (0..8).map(|_| a.next_u32()).collect();
-    let xb: Vec<u32> = (0..8).map(|_| b.next_u32()).collect();
-    let xc: Vec<u32> = (0..8).map(|_| c.next_u32()).collect();
-    assert_ne!(xa, xb);
-    assert_ne!(xa, xc);
-    let mut r = Rng::for_pixel(3, 4, 5);
-    let (lo, hi) = (0..100_000)
-        .map(|_| r.next_f32())
-        .fold((1.0f32, 0.0f32), |(lo, hi), x| (lo.min(x), hi.max(x)));
-    assert!(lo >= 0.0 && hi < 1.0 && lo < 1e-3 && hi > 0.999);
-}
-
-#[test]
-fn fresnel_is_4_percent_at_normal_incidence_and_total_beyond_the_critical_angle() {
-    let f = fresnel(1.0, 1.0 / 1.5).reflectance;
-    assert!((f - 0.04).abs() < 1e-6, "{f}");
-    let critical = (1.0f32 / 1.5).asin();
-    let beyond = fresnel((critical + 0.01).cos(), 1.5);
-    assert_eq!((beyond.reflectance, beyond.cos_t), (1.0, 0.0));
-    assert_eq!(fresnel(0.0, 1.0 / 1.5).reflectance, 1.0);
-}
-
-#[test]
-fn fresnel_ratio_is_n_i_over_n_t_and_cos_t_is_snell_s() {
-    // eta = n_i / n_t: from air into glass 1/1.5, Snell's law sin_t = eta sin_i.
-    for degrees in [0.0f32, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0] {
-        let theta_i = degrees.to_radians();
-        let f = fresnel(theta_i.cos(), 1.0 / 1.5);
-        let sin_t = theta_i.sin() / 1.5;
-        let expected = (1.0 - sin_t * sin_t).sqrt();
-        assert!((f.cos_t - expected).abs() < 1e-6, "{degrees}: {}", f.cos_t);
-        assert!(f.reflectance > 0.0 && f.reflectance < 1.0, "{degrees}");
-        // Light is reversible: the refracted ray traced back out of the glass
-        // reflects the same share.
-        let back = fresnel(f.cos_t, 1.5);
-        assert!((back.reflectance - f.reflectance).abs() < 1e-5, "{degrees}");
-    }
-    // pbrt-v4's eta = n_t / n_i = 1.5 for the same boundary would be total internal
-    // reflection already at 45 degrees: the ratio's direction matters.
-    assert_eq!(fresnel(45f32.to_radians().cos(), 1.5).reflectance, 1.0);
 }
 
 // ---------------------------------------------------------------- bad input

@@ -389,7 +389,7 @@ def sphere_on_floor(p, rho, centre, r, radiance):
     """The light a Lambertian floor point p (normal +Y, albedo rho) reflects from a
     uniform sphere light wholly above its horizon: rho L (r/d)^2 cos theta_c, the
     sphere's irradiance pi L (r/d)^2 cos theta_c times rho / pi
-    (`sphere_light_on_floor` in tests/10_path_tracing.rs)."""
+    (`sphere_light_on_floor` in tests/lessons/lesson_10_path_tracing.rs)."""
     to_c = sub(centre, p)
     d2 = dot(to_c, to_c)
     return rho * radiance * r * r / d2 * to_c[1] / math.sqrt(d2)

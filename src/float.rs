@@ -40,3 +40,15 @@ pub fn difference_of_products(a: f32, b: f32, c: f32, d: f32) -> f32 {
     let dop = a.mul_add(b, -cd);
     dop + err
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gamma_matches_pbrt() {
+        let eps = f32::EPSILON as f64 / 2.0;
+        let g3 = 3.0 * eps / (1.0 - 3.0 * eps);
+        assert!((gamma(3) as f64 - g3).abs() < 1e-12);
+    }
+}

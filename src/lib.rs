@@ -8,7 +8,7 @@
 //! ## The renderer, in layers
 //!
 //! Dependencies flow one way, up this list; a module uses only the layers below
-//! it (`tests/architecture.rs` checks this, and that no two files import each
+//! it (`tests/course/architecture.rs` checks this, and that no two files import each
 //! other):
 //!
 //! 1. `error`, `float`: the one typed error, naming the parameter at fault, and the

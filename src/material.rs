@@ -210,3 +210,38 @@ impl Material {
     }
     // ANCHOR_END: specular
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fresnel_is_4_percent_at_normal_incidence_and_total_beyond_the_critical_angle() {
+        let f = fresnel(1.0, 1.0 / 1.5).reflectance;
+        assert!((f - 0.04).abs() < 1e-6, "{f}");
+        let critical = (1.0f32 / 1.5).asin();
+        let beyond = fresnel((critical + 0.01).cos(), 1.5);
+        assert_eq!((beyond.reflectance, beyond.cos_t), (1.0, 0.0));
+        assert_eq!(fresnel(0.0, 1.0 / 1.5).reflectance, 1.0);
+    }
+
+    #[test]
+    fn fresnel_ratio_is_n_i_over_n_t_and_cos_t_is_snell_s() {
+        // eta = n_i / n_t: from air into glass 1/1.5, Snell's law sin_t = eta sin_i.
+        for degrees in [0.0f32, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0] {
+            let theta_i = degrees.to_radians();
+            let f = fresnel(theta_i.cos(), 1.0 / 1.5);
+            let sin_t = theta_i.sin() / 1.5;
+            let expected = (1.0 - sin_t * sin_t).sqrt();
+            assert!((f.cos_t - expected).abs() < 1e-6, "{degrees}: {}", f.cos_t);
+            assert!(f.reflectance > 0.0 && f.reflectance < 1.0, "{degrees}");
+            // Light is reversible: the refracted ray traced back out of the glass
+            // reflects the same share.
+            let back = fresnel(f.cos_t, 1.5);
+            assert!((back.reflectance - f.reflectance).abs() < 1e-5, "{degrees}");
+        }
+        // pbrt-v4's eta = n_t / n_i = 1.5 for the same boundary would be total internal
+        // reflection already at 45 degrees: the ratio's direction matters.
+        assert_eq!(fresnel(45f32.to_radians().cos(), 1.5).reflectance, 1.0);
+    }
+}

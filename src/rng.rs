@@ -73,3 +73,25 @@ impl Rng {
     }
 }
 // ANCHOR_END: rng
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rng_streams_differ_between_pixels_and_stay_in_0_1() {
+        let mut a = Rng::for_pixel(1, 0, 0);
+        let mut b = Rng::for_pixel(1, 1, 0);
+        let mut c = Rng::for_pixel(1, 0, 1);
+        let xa: Vec<u32> = (0..8).map(|_| a.next_u32()).collect();
+        let xb: Vec<u32> = (0..8).map(|_| b.next_u32()).collect();
+        let xc: Vec<u32> = (0..8).map(|_| c.next_u32()).collect();
+        assert_ne!(xa, xb);
+        assert_ne!(xa, xc);
+        let mut r = Rng::for_pixel(3, 4, 5);
+        let (lo, hi) = (0..100_000)
+            .map(|_| r.next_f32())
+            .fold((1.0f32, 0.0f32), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        assert!(lo >= 0.0 && hi < 1.0 && lo < 1e-3 && hi > 0.999);
+    }
+}

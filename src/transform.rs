@@ -5,7 +5,7 @@
 //! shear), so scale, rotation and translation all compose by multiplication.
 //!
 //! Every matrix below is written out row by row, exactly as the slides print it;
-//! `tests/01_transforms.rs` checks each one against glam's own constructors.
+//! `tests/lessons/lesson_01_transforms.rs` checks each one against glam's own constructors.
 
 use std::ops::Mul;
 
@@ -236,3 +236,17 @@ impl Mul for Transform {
     }
 }
 // ANCHOR_END: mul
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mul_is_then_reversed_bit_for_bit() {
+        let a = Transform::rotation_y(0.3);
+        let b = Transform::translation(1.0, -2.0, 3.5);
+        assert_eq!((a * b).matrix(), b.then(a).matrix());
+        assert_eq!((a * b).matrix(), a.matrix() * b.matrix());
+        assert_ne!(a * b, b * a, "translation and rotation do not commute");
+    }
+}

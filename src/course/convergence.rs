@@ -213,3 +213,16 @@ fn stops_of_16(spp: u32, param: &'static str) -> Result<Vec<u32>> {
     }
     Ok(stops)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ladder_is_powers_of_4_then_spp() {
+        assert_eq!(ladder(64).unwrap(), [1, 4, 16, 64]);
+        assert_eq!(ladder(100).unwrap(), [1, 4, 16, 64, 100]);
+        assert_eq!(ladder(1).unwrap(), [1]);
+        assert_eq!(ladder(0).unwrap_err().param(), "spp");
+    }
+}

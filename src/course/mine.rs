@@ -284,3 +284,44 @@ pub fn compared(mine: &Framebuffer, name: &str, lesson: &std::path::Path) -> Opt
     let like = lesson.file_name()?.to_string_lossy();
     Some(Comparison::of(&ours, theirs.as_raw()).verdict(name, &like))
 }
+
+#[cfg(all(test, not(feature = "exercises")))]
+mod tests {
+    use super::*;
+
+    /// Without the `exercises` feature, every lesson's `--mine` (01, 03, 06, and both
+    /// exercises of 08) is a one-line error with the command that turns it on, naming
+    /// the lesson so that it can be pasted as it is; a lesson with two exercises still
+    /// stops with the error.
+    #[test]
+    fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
+        let run = "cargo run --features exercises --example";
+        let release = "cargo run --release --features exercises --example";
+        let lessons = [
+            (my_compose().err(), format!("{run} 01_transforms -- --mine")),
+            (
+                my_pixel_to_plane().err(),
+                format!("{run} 03_ortho_camera -- --mine"),
+            ),
+            (
+                my_pinhole_ray().err(),
+                format!("{run} 06_pinhole_camera -- --mine"),
+            ),
+            (
+                my_closest().err(),
+                format!("{release} 08_ray_casting -- --mine"),
+            ),
+            (
+                my_lambert().err(),
+                format!("{release} 08_ray_casting -- --mine"),
+            ),
+        ];
+        for (failure, command) in lessons {
+            let message = failure.expect("an error").to_string();
+            assert!(message.contains(&command), "{message}");
+            assert_eq!(message.lines().count(), 1, "{message}");
+            let report = Failure::Exercise { report: message };
+            assert!(if_passing(Err::<(), _>(report)).is_err());
+        }
+    }
+}

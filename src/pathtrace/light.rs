@@ -14,7 +14,7 @@
 //! Each strategy is a function beside its density (`sphere_area` and
 //! `sphere_area_pdf`, `sphere_cone` and `sphere_cone_pdf`, `quad_area` and
 //! `quad_area_pdf`), and [`LightShape`] holds a light's shape with the strategy its
-//! kind allows: a sphere by area or by cone, a quad by area. `tests/10_densities.rs`
+//! kind allows: a sphere by area or by cone, a quad by area. `tests/lessons/lesson_10_densities.rs`
 //! checks that each density integrates to 1 over the directions and matches a
 //! histogram of samples.
 

@@ -42,3 +42,47 @@ pub fn power_heuristic_with_counts(n_a: u32, pdf_a: f32, n_b: u32, pdf_b: f32) -
     }
 }
 // ANCHOR_END: power_heuristic
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn power_heuristic_is_the_counted_form_with_one_sample_each() {
+        let values = [
+            0.0f32,
+            -1.0,
+            1e-30,
+            0.2,
+            0.3,
+            1.0,
+            6.535,
+            1e30,
+            f32::INFINITY,
+            f32::NAN,
+        ];
+        for a in values {
+            for b in values {
+                let one = power_heuristic(a, b);
+                let counted = power_heuristic_with_counts(1, a, 1, b);
+                assert_eq!(one.to_bits(), counted.to_bits(), "{a} {b}");
+            }
+        }
+        // Veach's form with counts, against f64: (n_a p_a)^2 / ((n_a p_a)^2 + (n_b p_b)^2),
+        // and the weights of one direction add up to 1.
+        for (n_a, p_a, n_b, p_b) in [(4, 0.5f32, 1, 1.5f32), (1, 2.0, 16, 0.1), (3, 0.7, 5, 0.7)] {
+            let w_a = power_heuristic_with_counts(n_a, p_a, n_b, p_b);
+            let w_b = power_heuristic_with_counts(n_b, p_b, n_a, p_a);
+            let (a, b) = (
+                f64::from(n_a) * f64::from(p_a),
+                f64::from(n_b) * f64::from(p_b),
+            );
+            let exact = a * a / (a * a + b * b);
+            assert!((f64::from(w_a) - exact).abs() < 1e-6, "{w_a} vs {exact}");
+            assert!((w_a + w_b - 1.0).abs() < 1e-6);
+        }
+        // A strategy that drew no sample gets no weight.
+        assert_eq!(power_heuristic_with_counts(0, 1.0, 1, 1.0), 0.0);
+        assert_eq!(power_heuristic_with_counts(1, 1.0, 0, 1.0), 1.0);
+    }
+}

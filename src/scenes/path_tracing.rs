@@ -212,7 +212,7 @@ pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<Staged> {
 /// on the right: Veach's (1997, fig. 9.2) lesson with a Lambertian floor.
 ///
 /// Direct light only: the standard deviation of one sample under each light, per
-/// estimator, is measured by `tests/10_path_tracing.rs` (`two_lights_sigmas`
+/// estimator, is measured by `tests/lessons/lesson_10_path_tracing.rs` (`two_lights_sigmas`
 /// snapshot). Cosine sampling fails under the small hot light; under the large one
 /// cosine and area sampling are both poor (area sampling's points on the sphere seen
 /// at wide angles); MIS keeps area sampling's sigma under the small light and beats

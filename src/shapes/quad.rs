@@ -122,3 +122,24 @@ impl Quad {
         self.normal
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ray::{Interval, Ray};
+
+    #[test]
+    fn quad_hits_inside_and_misses_outside() {
+        let q = Quad::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Z * 3.0).unwrap();
+        assert_eq!(q.normal(), -Vec3::Y);
+        assert_eq!(q.area(), 6.0);
+        let down = |x, z| Ray::new(Vec3::new(x, 1.0, z), -Vec3::Y).unwrap();
+        let h = q.hit(&down(1.0, 1.5), Interval::AHEAD).unwrap();
+        assert_eq!(h.t, 1.0);
+        assert!(!h.front_face);
+        assert!(q.hit(&down(2.1, 1.5), Interval::AHEAD).is_none());
+        assert!(q.hit(&down(1.0, -0.1), Interval::AHEAD).is_none());
+        let edge_on = Ray::new(Vec3::new(-1.0, 0.0, 1.0), Vec3::X).unwrap();
+        assert!(q.hit(&edge_on, Interval::AHEAD).is_none());
+    }
+}

@@ -91,7 +91,7 @@ function sourceHasMath(file) {
 
 // A figure's smallest text, as the page shows it, must be at least MIN_TEXT_PX:
 // its size in the figure times the figure's rendered width over its natural
-// width. The sizes in the figures' own pixels (tests/figures.rs checks these
+// width. The sizes in the figures' own pixels (tests/lessons/figures.rs checks these
 // constants against the code that draws them):
 // - diagrams (src/course/diagram/axes.rs): tick values, 0.8 of LABEL_SIZE = 15 px;
 // - strips of renders (book/figures/src/lesson09.rs): captions of CAPTION_SIZE;

@@ -1,53 +1,23 @@
-//! Helpers shared by the lesson tests.
-#![allow(dead_code)]
+//! Helpers shared by every test crate (`tests/lessons`, `tests/course`, `tests/book`),
+//! each defined once here. A crate includes them with
+//! `#[path = "../common/mod.rs"] mod common;`.
+//!
+//! - [`compare`]: `close` (a tolerance, any number of components) and `bits` (bit for
+//!   bit, -0 and 0 apart);
+//! - [`fixtures`]: rays, shapes, the slides' camera, the reference closest-hit loop;
+//! - [`random`]: the crate's random stream for every random case, and proptest's
+//!   strategies;
+//! - [`pixels`]: what a diagram draws, counted by colour;
+//! - [`pages`]: the book's pages and the tests' snapshots, read as text.
+#![allow(dead_code, unused_imports)]
 
-use glam::Vec3;
-use proptest::prelude::*;
+pub mod compare;
+pub mod fixtures;
+pub mod pages;
+pub mod pixels;
+pub mod random;
 
-/// Random directions, none shorter than 0.05.
-pub fn direction() -> impl Strategy<Value = Vec3> {
-    (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0)
-        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
-        .prop_filter("long enough", |v| v.length() > 0.05)
-}
-
-/// How many RGBA pixels are clearly blue (rays are drawn in blue).
-pub fn blue_pixels(rgba: &[u8]) -> usize {
-    rgba.chunks(4)
-        .filter(|p| p[2] as i32 > p[0] as i32 + 60)
-        .count()
-}
-
-/// How many RGBA pixels are clearly red or orange (hit points, planes).
-pub fn red_pixels(rgba: &[u8]) -> usize {
-    rgba.chunks(4)
-        .filter(|p| p[0] as i32 > p[2] as i32 + 60)
-        .count()
-}
-
-/// The crate's random stream (PCG32, `render_lessons::rng::Rng`) with the helpers
-/// the tests use, seeded so that every run tests the same cases.
-pub struct Rng(render_lessons::rng::Rng);
-
-impl Rng {
-    /// The stream for `seed`.
-    pub fn seeded(seed: u64) -> Rng {
-        Rng(render_lessons::rng::Rng::new(seed, 0x7e57))
-    }
-
-    pub fn next_f32(&mut self) -> f32 {
-        self.0.next_f32()
-    }
-
-    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * self.next_f32()
-    }
-
-    pub fn point(&mut self, half: f32) -> Vec3 {
-        Vec3::new(
-            self.range(-half, half),
-            self.range(-half, half),
-            self.range(-half, half),
-        )
-    }
-}
+pub use compare::{assert_close, bits, close};
+pub use fixtures::{cube, ray, reference_closest, slide_camera, slide_film, unit_sphere};
+pub use pixels::{blue_pixels, red_pixels};
+pub use random::{Rng, direction};

@@ -15,8 +15,8 @@
 //!
 //! This file holds your exercises' tests and nothing else. Without the `exercises`
 //! feature your files are not compiled and it has no test: the course's own tests of
-//! the checks, which run with every `cargo test`, are in `tests/exercise_checks_*.rs`
-//! and `tests/exercise_harness.rs`.
+//! the checks and of the harness, which run with every `cargo test`, are in
+//! `tests/exercise_checks/`.
 #![cfg(feature = "exercises")]
 
 use render_lessons::course::exercises::check::*;

@@ -141,7 +141,7 @@ impl fmt::Display for Outcome {
 pub struct Exercise {
     /// "3.5": lesson 03's fifth exercise. Every exercise of a lesson, written or
     /// coding, is numbered N.k in book order across the lesson's pages, and the check's
-    /// number is the book's (`tests/exercise_harness.rs` holds them to it).
+    /// number is the book's (`tests/exercise_checks/harness.rs` holds them to it).
     pub number: &'static str,
     /// The chapter's number, "03".
     pub chapter: &'static str,

@@ -9,8 +9,7 @@ use render_lessons::course::exercises::check::*;
 use render_lessons::ray::{ClosedSpan, Interval, Ray};
 use render_lessons::shapes::Aabb;
 
-mod exercise_common;
-use exercise_common::fails_with;
+use crate::common::fails_with;
 
 // Chapter 10.
 

@@ -11,8 +11,7 @@ use render_lessons::course::exercises::check::*;
 use render_lessons::ray::Ray;
 use render_lessons::transform::Transform;
 
-mod exercise_common;
-use exercise_common::fails_with;
+use crate::common::fails_with;
 
 // Chapter 01.
 

@@ -12,8 +12,7 @@ use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
 use render_lessons::shapes::Shape;
 
-mod exercise_common;
-use exercise_common::{fails_hinting, fails_with};
+use crate::common::{fails_hinting, fails_with};
 
 // Chapter 08.
 

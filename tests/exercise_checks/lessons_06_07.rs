@@ -10,8 +10,7 @@ use render_lessons::course::exercises::check::*;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::shapes::{Plane, Sphere};
 
-mod exercise_common;
-use exercise_common::fails_with;
+use crate::common::fails_with;
 
 // Chapter 06.
 

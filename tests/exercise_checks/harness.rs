@@ -9,8 +9,7 @@ use std::time::{Duration, Instant};
 use glam::{Mat4, Vec3};
 use render_lessons::course::exercises::check::*;
 
-mod exercise_common;
-use exercise_common::panicked;
+use crate::common::panicked;
 
 /// A wrong answer that panics on every case, with its line in the message.
 fn panics_with_its_line(o: Vec3, _: Vec3, _: f32) -> Vec3 {

@@ -1,5 +1,5 @@
 //! What the tests of the exercises' checks share.
-#![allow(dead_code)]
+#![allow(dead_code)] // each module of the crate uses some of these
 
 use render_lessons::course::exercises::check::{Outcome, Reason};
 

@@ -18,7 +18,9 @@ fn main() {
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-env-changed={OPT_OUT}");
     if std::env::var_os(OPT_OUT).is_some() {
-        println!("cargo::warning={OPT_OUT} is set: the benches will skip the plain C anchor");
+        println!(
+            "cargo::warning={OPT_OUT} is set: the benches will skip the plain C anchor"
+        );
         return;
     }
     let mut build = cc::Build::new();
@@ -37,7 +39,9 @@ fn main() {
             );
         }
         Err(e) => {
-            println!("cargo::warning=no C compiler ({e}): the benches will skip the plain C anchor")
+            println!(
+                "cargo::warning=no C compiler ({e}): the benches will skip the plain C anchor"
+            )
         }
     }
 }

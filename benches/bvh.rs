@@ -29,7 +29,9 @@ use render_benches::mesh_view::{
     FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
 };
 use render_lessons::bvh::{Bvh, BvhScene};
-use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
+use render_lessons::course::measure::machine::{
+    CpuWatch, benchmarking, interleaved_min,
+};
 use render_lessons::ray::Interval;
 use render_lessons::raycast::shadowless;
 use render_lessons::scene::Intersect;
@@ -140,7 +142,8 @@ fn one_run() {
                         .filter(|r| {
                             let mut hit = RayHit::none();
                             bvh2.ray_traverse(obvhs_ray(r), &mut hit, |ray, id| {
-                                triangles[bvh2.primitive_indices[id] as usize].intersect(ray)
+                                triangles[bvh2.primitive_indices[id] as usize]
+                                    .intersect(ray)
                             })
                         })
                         .count()
@@ -151,7 +154,8 @@ fn one_run() {
                         .filter(|r| {
                             let mut hit = RayHit::none();
                             cwbvh.ray_traverse(obvhs_ray(r), &mut hit, |ray, id| {
-                                triangles[cwbvh.primitive_indices[id] as usize].intersect(ray)
+                                triangles[cwbvh.primitive_indices[id] as usize]
+                                    .intersect(ray)
                             })
                         })
                         .count()

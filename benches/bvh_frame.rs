@@ -14,7 +14,9 @@ use std::process::ExitCode;
 
 use obvhs::ray::RayHit;
 use render_benches::args::{self, number};
-use render_benches::mesh_view::{NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene};
+use render_benches::mesh_view::{
+    NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
+};
 use render_lessons::bvh::BvhScene;
 use render_lessons::ray::Interval;
 use render_lessons::scene::Intersect;
@@ -56,7 +58,11 @@ fn run(args: Vec<String>) -> Result<String, String> {
         let triangles = obvhs_triangles(&scene);
         let params = obvhs::BvhBuildParams::medium_build();
         let mut build_time = std::time::Duration::ZERO;
-        let bvh2 = obvhs::bvh2::builder::build_bvh2_from_tris(&triangles, params, &mut build_time);
+        let bvh2 = obvhs::bvh2::builder::build_bvh2_from_tris(
+            &triangles,
+            params,
+            &mut build_time,
+        );
         for _ in 0..frames {
             hits += rays
                 .iter()

@@ -116,7 +116,13 @@ fn run(args: Args) -> Result<String, String> {
             let start = Instant::now();
             let mut acc = Accumulator::new(&camera, seed);
             let image = with_threads(threads, || {
-                acc.render_pass(&scene, &camera, &settings, PixelSampling::Independent, spp)
+                acc.render_pass(
+                    &scene,
+                    &camera,
+                    &settings,
+                    PixelSampling::Independent,
+                    spp,
+                )
             })
             .map_err(|e| e.to_string())?;
             let seconds = start.elapsed().as_secs_f64();

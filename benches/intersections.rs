@@ -33,7 +33,8 @@ fn bench(c: &mut Criterion) {
         Vec3::new(0.0, 1.0, 0.2),
     )
     .expect("valid triangle");
-    let quadric = Quadric::ellipsoid(Vec3::new(1.0, 0.8, 0.6)).expect("valid ellipsoid");
+    let quadric =
+        Quadric::ellipsoid(Vec3::new(1.0, 0.8, 0.6)).expect("valid ellipsoid");
     let mut group = c.benchmark_group("intersection (1024 rays per iteration)");
     let n = f32::INFINITY;
     macro_rules! case {

@@ -39,7 +39,8 @@ fn run(args: Vec<String>) -> Result<String, String> {
     }
     if args.len() > 4 {
         return Err(
-            "usage: one-frame CASTER [WIDTH HEIGHT [FRAMES]], or check [WIDTH HEIGHT]".into(),
+            "usage: one-frame CASTER [WIDTH HEIGHT [FRAMES]], or check [WIDTH HEIGHT]"
+                .into(),
         );
     }
     let width = number(&args, 1, "WIDTH", 1920)?;
@@ -47,17 +48,18 @@ fn run(args: Vec<String>) -> Result<String, String> {
     let frames = number(&args, 3, "FRAMES", 1)?;
     let camera = still_life_pinhole(width, height).map_err(|e| e.to_string())?;
     let scene = still_life(Vec3::ZERO).map_err(|e| e.to_string())?;
-    let plain = PlainScene::new(&scene).ok_or("lesson 08's scene has a shape plain lacks")?;
+    let plain =
+        PlainScene::new(&scene).ok_or("lesson 08's scene has a shape plain lacks")?;
     let mut frame = FrameLoop::new(&camera, 1);
     if caster == "check" {
         return check(&camera, &plain, &mut frame);
     }
     for _ in 0..frames {
         match caster {
-            "c" => anchor::frame(width, height, frame.pixels_mut()).ok_or(anchor::MISSING)?,
-            "c-camera" => {
-                anchor::camera(width, height, frame.pixels_mut()).ok_or(anchor::MISSING)?
-            }
+            "c" => anchor::frame(width, height, frame.pixels_mut())
+                .ok_or(anchor::MISSING)?,
+            "c-camera" => anchor::camera(width, height, frame.pixels_mut())
+                .ok_or(anchor::MISSING)?,
             "plain" => frame.run(&camera, |r| plain.shadowless(r)),
             "robust" => frame.run(&camera, |r| shadowless(&scene, r)),
             _ => frame.run(&camera, |r| r.direction()),
@@ -76,7 +78,11 @@ fn run(args: Vec<String>) -> Result<String, String> {
 
 /// The C anchor against the Rust plain caster: how many pixels and camera rays
 /// differ in any bit; an error when one does.
-fn check(camera: &Camera, plain: &PlainScene, frame: &mut FrameLoop) -> Result<String, String> {
+fn check(
+    camera: &Camera,
+    plain: &PlainScene,
+    frame: &mut FrameLoop,
+) -> Result<String, String> {
     let (width, height) = (camera.film().width(), camera.film().height());
     let mut c = vec![Vec3::ZERO; width as usize * height as usize];
     let differ = |a: &[Vec3], b: &[Vec3]| {

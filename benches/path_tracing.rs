@@ -54,8 +54,10 @@ fn cores() -> usize {
 // ANCHOR: samples_per_second
 fn samples_per_second(c: &mut Criterion) {
     let (width, height) = (1024, 768);
-    let Staged { scene, camera } = path_tracing::cornell(width, height).expect("the Cornell box");
-    let mut group = c.benchmark_group("path tracing, smallpt's Cornell box, 1024x768, 1 spp");
+    let Staged { scene, camera } =
+        path_tracing::cornell(width, height).expect("the Cornell box");
+    let mut group =
+        c.benchmark_group("path tracing, smallpt's Cornell box, 1024x768, 1 spp");
     group.sample_size(10);
     // One iteration takes a second or more: the same number in every sample.
     group.sampling_mode(SamplingMode::Flat);
@@ -65,12 +67,19 @@ fn samples_per_second(c: &mut Criterion) {
     for (name, sampling) in [("MIS", Sampling::Mis), ("cosine", Sampling::Cosine)] {
         let settings = settings(sampling);
         for threads in [1, cores()] {
-            let pool = render_lessons::render::thread_pool(threads).expect("a thread pool");
+            let pool =
+                render_lessons::render::thread_pool(threads).expect("a thread pool");
             let mut acc = Accumulator::new(&camera, 1);
             group.bench_function(format!("{name}, {threads} thread(s)"), |b| {
                 b.iter(|| {
                     pool.install(|| {
-                        acc.render_pass(&scene, &camera, &settings, PixelSampling::Independent, 1)
+                        acc.render_pass(
+                            &scene,
+                            &camera,
+                            &settings,
+                            PixelSampling::Independent,
+                            1,
+                        )
                     })
                     .expect("pass")
                 })
@@ -164,7 +173,8 @@ fn reference_half(scene: &Scene, camera: &Camera, seed: u64) -> Framebuffer {
     let mut image = None;
     while acc.samples() < REFERENCE_HALF_SPP {
         let spp = 64.min(REFERENCE_HALF_SPP - acc.samples());
-        let pass = acc.render_pass(scene, camera, &settings, PixelSampling::Independent, spp);
+        let pass =
+            acc.render_pass(scene, camera, &settings, PixelSampling::Independent, spp);
         image = Some(pass.expect("reference pass"));
     }
     assert_eq!(
@@ -232,7 +242,8 @@ fn equal_time() {
     println!(
         "\nEqual-time comparison: smallpt's Cornell box, {WIDTH}x{HEIGHT}, {threads} thread(s)"
     );
-    let Staged { scene, camera } = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let Staged { scene, camera } =
+        path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
     let halves = REFERENCE_SEEDS.map(|seed| reference_half(&scene, &camera, seed));
     let reference = average(&halves[0], &halves[1]);
     // The halves are independent, each with error e_half; their difference has
@@ -323,7 +334,8 @@ fn report(runs: &[Run], e_ref: f64) {
             corrected(e, e_ref)
         );
     }
-    let (a_seconds, a_error, a_spp) = *runs[0].history.last().expect("at least one pass");
+    let (a_seconds, a_error, a_spp) =
+        *runs[0].history.last().expect("at least one pass");
     println!(
         "\nTime to reach (a)'s final RMSE {a_error:.5} ((a) took {a_seconds:.2} s, {a_spp} spp):"
     );
@@ -331,7 +343,9 @@ fn report(runs: &[Run], e_ref: f64) {
     println!("|---|---|---|---|");
     for run in runs {
         match run.time_to(a_error) {
-            Some((s, spp)) => println!("| {} | {s:.3} | {spp} | {:.1}x |", run.name, a_seconds / s),
+            Some((s, spp)) => {
+                println!("| {} | {s:.3} | {spp} | {:.1}x |", run.name, a_seconds / s)
+            }
             None => println!("| {} | not reached | | |", run.name),
         }
     }
@@ -375,7 +389,8 @@ const VARIANCE_SPP: u32 = 256;
 /// to a given error is proportional to sigma^2 times the time per sample, so MIS
 /// gains (sigma^2_a / sigma^2_MIS) x (time_a / time_MIS) where both are measured.
 fn variance_analysis() {
-    let Staged { scene, camera } = path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
+    let Staged { scene, camera } =
+        path_tracing::cornell(WIDTH, HEIGHT).expect("the Cornell box");
     let methods = [
         ("(a) cosine (smallpt)", Sampling::Cosine),
         ("(b1) NEE", Sampling::NextEvent),
@@ -384,8 +399,14 @@ fn variance_analysis() {
     let measured: Vec<_> = methods
         .iter()
         .map(|&(name, sampling)| {
-            let v = pixel_variance(&scene, &camera, &settings(sampling), VARIANCE_SPP, SEED)
-                .expect("variance");
+            let v = pixel_variance(
+                &scene,
+                &camera,
+                &settings(sampling),
+                VARIANCE_SPP,
+                SEED,
+            )
+            .expect("variance");
             (name, v)
         })
         .collect();

@@ -69,7 +69,8 @@ fn raster(c: &mut Criterion) {
     let camera = camera();
     let sphere = Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere");
     let meshes = [("uv sphere", sphere), ("torus.obj", torus())];
-    let mut group = c.benchmark_group("rasterize 1920x1080, per-pixel shading, 1 thread");
+    let mut group =
+        c.benchmark_group("rasterize 1920x1080, per-pixel shading, 1 thread");
     group.sample_size(10);
     for (name, mesh) in meshes {
         let triangles = mesh.triangles.len() as u64;
@@ -82,9 +83,16 @@ fn raster(c: &mut Criterion) {
                 cull,
                 ..RasterSettings::default()
             };
-            group.bench_function(format!("{name}, {triangles} triangles, {cull:?}"), |b| {
-                b.iter(|| one.install(|| rasterize(&instances, &camera, &LIGHT, &settings)))
-            });
+            group.bench_function(
+                format!("{name}, {triangles} triangles, {cull:?}"),
+                |b| {
+                    b.iter(|| {
+                        one.install(|| {
+                            rasterize(&instances, &camera, &LIGHT, &settings)
+                        })
+                    })
+                },
+            );
         }
     }
     group.finish();
@@ -114,7 +122,8 @@ fn ray_cast(c: &mut Criterion) {
 fn bvh_ray_cast(c: &mut Criterion) {
     let one = thread_pool(1).expect("a thread pool");
     let camera = camera();
-    let scene = triangle_scene(&Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere"));
+    let scene =
+        triangle_scene(&Mesh::uv_sphere(Vec3::ZERO, 1.0, 224, 224).expect("sphere"));
     let tree = BvhScene::new(scene);
     let mut group = c.benchmark_group("ray cast 1920x1080, BVH, 1 thread");
     group.sample_size(10);

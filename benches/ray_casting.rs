@@ -10,9 +10,9 @@
 //! fastest of 7 rounds each) and prints the ratios: the Rust casters against the C
 //! anchor, what robustness costs, what the second core buys, and what
 //! `render::render`'s set-up (the framebuffer and a progress bar, made on every
-//! call; the thread pool is made once, by the caller) adds to a frame. First it checks that the C anchor computes
-//! the plain caster's image and camera rays bit for bit. Last, the machine and
-//! whether the CPU was quiet.
+//! call; the thread pool is made once, by the caller) adds to a frame. First it checks
+//! that the C anchor computes the plain caster's image and camera rays bit for bit.
+//! Last, the machine and whether the CPU was quiet.
 //!
 //! With `RENDER_BENCHES_FIGURES=chapters/figures` the run also writes lesson 11's
 //! chart 10, the C anchor against the plain and the robust Rust casters
@@ -28,7 +28,9 @@ use render_benches::frame::FrameLoop;
 use render_lessons::Result;
 use render_lessons::camera::Camera;
 use render_lessons::course::bars::Bars;
-use render_lessons::course::measure::machine::{CpuWatch, benchmarking, interleaved_min};
+use render_lessons::course::measure::machine::{
+    CpuWatch, benchmarking, interleaved_min,
+};
 use render_lessons::course::measure::plain::PlainScene;
 use render_lessons::course::report::{BookNumbers, Quoted, Run};
 use render_lessons::files::write_atomically;
@@ -61,11 +63,17 @@ fn bench(c: &mut Criterion) {
     for threads in [1, cores()] {
         let pool = thread_pool(threads).expect("a thread pool");
         group.bench_function(format!("robust, {threads} thread(s)"), |b| {
-            b.iter(|| pool.install(|| render(&pinhole, |r| shadowless(&scene, r)).expect("render")))
+            b.iter(|| {
+                pool.install(|| {
+                    render(&pinhole, |r| shadowless(&scene, r)).expect("render")
+                })
+            })
         });
     }
     group.bench_function("plain (textbook tests), 1 thread", |b| {
-        b.iter(|| one.install(|| render(&pinhole, |r| plain.shadowless(r)).expect("render")))
+        b.iter(|| {
+            one.install(|| render(&pinhole, |r| plain.shadowless(r)).expect("render"))
+        })
     });
     let mut rgb = vec![Vec3::ZERO; PIXELS];
     if anchor::available() {
@@ -148,7 +156,9 @@ fn one_run(watch: &CpuWatch) {
     };
     let c = rate(C, 1, "frame");
     println!("  fastest of 7 interleaved rounds; frame = buffer made once,");
-    println!("  render() = render::render as it is (buffer and progress bar per call),");
+    println!(
+        "  render() = render::render as it is (buffer and progress bar per call),"
+    );
     println!("  both on a thread pool made once:");
     println!(
         "  {:<36} {:>7} {:>9} {:>10} {:>9}",
@@ -229,14 +239,17 @@ const FIGURES: &str = "RENDER_BENCHES_FIGURES";
 
 /// The chart's file stem, and the command that writes it.
 const STEM: &str = "11_10_c_anchor";
-const COMMAND: &str =
-    "`RENDER_BENCHES_FIGURES=chapters/figures cargo bench -p render-benches --bench ray_casting`";
+const COMMAND: &str = "`RENDER_BENCHES_FIGURES=chapters/figures cargo bench -p render-benches --bench ray_casting`";
 
 /// Lesson 11's chart 10 from one run's M rays/s of the C anchor, the plain and the
 /// robust caster (frames, one thread): what structure costs (C against plain Rust,
 /// the same tests) and what robustness costs (plain against robust Rust). Writes
 /// `STEM.svg`, `.csv` and `.md` (the numbers the book quotes) into `dir`.
-fn figure(dir: &Path, [c, plain, robust]: [f64; 3], watch: &CpuWatch) -> Result<Vec<PathBuf>> {
+fn figure(
+    dir: &Path,
+    [c, plain, robust]: [f64; 3],
+    watch: &CpuWatch,
+) -> Result<Vec<PathBuf>> {
     let ns = |rate: f64| 1e3 / rate;
     let bars = Bars::new(
         "10. One ray of lesson 08, three casters (one thread)",
@@ -355,7 +368,9 @@ fn variants<'a>(
             ROBUST,
             threads,
             "render()",
-            Box::new(move || pool.install(|| drop(render(pinhole, |r| shadowless(scene, r))))),
+            Box::new(move || {
+                pool.install(|| drop(render(pinhole, |r| shadowless(scene, r))))
+            }),
         ));
     }
     let mut f = frame(1);

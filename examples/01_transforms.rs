@@ -120,8 +120,9 @@ pub fn order_figure(degrees: f32) -> Result<Diagram> {
 pub fn my_order_figure(degrees: f32, compose: mine::Compose) -> Result<Diagram> {
     let rotate = Transform::rotation_z(degrees.to_radians());
     let translate = Transform::translation(3.0, 0.0, 0.0);
-    let yours =
-        |first: &Transform, second: &Transform| Transform::from_matrix(compose(first, second));
+    let yours = |first: &Transform, second: &Transform| {
+        Transform::from_matrix(compose(first, second))
+    };
     figure_of(
         degrees,
         [

@@ -61,7 +61,8 @@ pub fn numbers(ray: &Ray) -> String {
     table.to_string()
 }
 
-/// The figure: the ray in the XY plane with its t ticks; the part behind the origin dashed.
+/// The figure: the ray in the XY plane with its t ticks; the part behind the origin
+/// dashed.
 pub fn ray_figure(ray: &Ray) -> Result<Diagram> {
     let xy = |p: Vec3| Vec2::new(p.x, p.y);
     let (first, last) = (ray.at(TS[0] - 0.5), ray.at(TS[TS.len() - 1] + 0.8));

@@ -44,7 +44,12 @@ fn main() -> ExitCode {
 // ANCHOR: camera
 /// The lesson's camera: at the origin, looking down -Z, over the plane `x` by `y`
 /// (x_min, x_max and y_min, y_max) cut into `width` x `height` pixels.
-pub fn camera(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<OrthoCamera> {
+pub fn camera(
+    width: u32,
+    height: u32,
+    x: (f32, f32),
+    y: (f32, f32),
+) -> Result<OrthoCamera> {
     Ok(OrthoCamera::at_origin(Film::new(width, height, x, y)?))
 }
 // ANCHOR_END: camera
@@ -63,7 +68,8 @@ pub fn numbers(cam: &OrthoCamera) -> String {
     );
     let mut table = Table::new(&title, &["pixel", "ray origin", "ray direction"]);
     // ANCHOR: table
-    let pixels = (0..film.height()).flat_map(|y| (0..film.width()).map(move |x| (x, y)));
+    let pixels =
+        (0..film.height()).flat_map(|y| (0..film.width()).map(move |x| (x, y)));
     for (x, y) in pixels.take(MAX_ROWS as usize) {
         let ray = cam.ray(x, y);
         table.row(vec![
@@ -85,7 +91,9 @@ pub fn plane_figure(film: &Film) -> Result<Diagram> {
     let pad = 0.15 * (x1 - x0).max(y1 - y0);
     let (x, y) = ((x0 - pad, x1 + pad), (y0 - pad, y1 + pad));
     let mut d = Diagram::new(800, 620, x, y)?;
-    d.title("The projection plane seen from the camera: pixel centres are the ray origins");
+    d.title(
+        "The projection plane seen from the camera: pixel centres are the ray origins",
+    );
     d.axes(x, y, (x1 - x0) / 4.0, ("x", "y"));
     d.film(film);
     Ok(d)
@@ -98,7 +106,9 @@ pub fn rays_figure(cam: &OrthoCamera) -> Result<Diagram> {
     let (length, pad) = (1.2 * (y1 - y0), 0.15 * (y1 - y0));
     let (z, y) = ((-length - pad, 2.0 * pad), (y0 - pad, y1 + pad));
     let mut d = Diagram::new(800, 620, z, y)?;
-    d.title("Seen from the side: every ray starts on z = 0 and travels along (0, 0, -1)");
+    d.title(
+        "Seen from the side: every ray starts on z = 0 and travels along (0, 0, -1)",
+    );
     let step = ((y1 - y0) / 6.0).max(0.5).round();
     d.axes(z, y, step, View::Side.axis_names());
     CameraRays::side(*cam, length)
@@ -119,7 +129,10 @@ pub fn origin_image(film: &Film) -> Result<Framebuffer> {
 }
 
 /// Colours each pixel by where `origin(x, y)` lies on the film's plane.
-pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Result<Framebuffer> {
+pub fn colour_by_origin(
+    film: &Film,
+    origin: impl Fn(u32, u32) -> Vec2,
+) -> Result<Framebuffer> {
     let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
     Framebuffer::from_fn(film.width(), film.height(), |x, y| {
         let o = origin(x, y);
@@ -130,11 +143,15 @@ pub fn colour_by_origin(film: &Film, origin: impl Fn(u32, u32) -> Vec2) -> Resul
 
 /// The origin image drawn with `pixel_to_plane`, the student's own once it passes
 /// its check (coding exercise 3.5, `src/course/exercises/ch03.rs`).
-pub fn my_origin_image(film: &Film, pixel_to_plane: mine::PixelToPlane) -> Result<Framebuffer> {
+pub fn my_origin_image(
+    film: &Film,
+    pixel_to_plane: mine::PixelToPlane,
+) -> Result<Framebuffer> {
     colour_by_origin(film, |x, y| pixel_to_plane(film, x, y))
 }
 
-/// The lesson's parameters; the defaults reproduce the slide's pixel (0,0) -> (-6, 4, 0).
+/// The lesson's parameters; the defaults reproduce the slide's pixel (0,0) -> (-6, 4,
+/// 0).
 #[derive(Parser, Debug)]
 #[command(about = "Lesson 03: the orthographic camera at the origin")]
 #[command(allow_negative_numbers = true)]

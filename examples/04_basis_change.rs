@@ -1,4 +1,5 @@
-//! Lesson 04: one vector, two orthonormal bases (Lecture 4, "Coordinate System Change").
+//! Lesson 04: one vector, two orthonormal bases (Lecture 4, "Coordinate System
+//! Change").
 //!
 //! The vector s has coordinates b in the basis (u, v, w) and coordinates a in the
 //! standard basis; a = B b with B = [u v w], and back with b = B^T a.
@@ -125,7 +126,8 @@ pub fn bases_figure(degrees: f32, b: Vec3) -> Result<Diagram> {
 #[command(about = "Lesson 04: a vector in two orthonormal bases")]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
-    /// The angle in degrees by which (u, v) is turned from (x, y) about z (within ±36000).
+    /// The angle in degrees by which (u, v) is turned from (x, y) about z (within
+    /// ±36000).
     #[arg(long, default_value = "30", value_parser = parsers::degrees)]
     pub angle: f32,
     /// The vector's coordinates b in the basis (u, v, w), as b1,b2,b3.

@@ -1,4 +1,5 @@
-//! Lesson 05: an orthographic camera anywhere (Lecture 4, "Arbitrary Orthographic Camera").
+//! Lesson 05: an orthographic camera anywhere (Lecture 4, "Arbitrary Orthographic
+//! Camera").
 //!
 //! From the camera position p, view direction d and up vector k we build the
 //! camera basis w, u, v; each ray is made in camera space as in lesson 03 and then
@@ -32,7 +33,13 @@ fn main() -> ExitCode {
 
 // ANCHOR: camera
 /// The lesson's camera: lesson 03's plane [-8, 8] x [-6, 6], placed by p, d and k.
-pub fn camera(width: u32, height: u32, p: Vec3, d: Vec3, k: Vec3) -> Result<OrthoCamera> {
+pub fn camera(
+    width: u32,
+    height: u32,
+    p: Vec3,
+    d: Vec3,
+    k: Vec3,
+) -> Result<OrthoCamera> {
     let film = Film::new(width, height, (-8.0, 8.0), (-6.0, 6.0))?;
     let frame = Frame::look(p, d, k)?;
     Ok(OrthoCamera::new(film, frame))

@@ -15,9 +15,8 @@ use render_lessons::Result;
 use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::course::diagram::{CameraRays, Diagram, Place, View};
 use render_lessons::course::lesson::{self, Output};
-use render_lessons::course::mine;
-use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, num, vec3};
+use render_lessons::course::{mine, parsers};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::limits::MAX_RESOLUTION;
 use render_lessons::ray::Ray;
@@ -76,7 +75,12 @@ pub fn cameras(s: f32, frame: Frame) -> Result<[PinholeCamera; 2]> {
 
 /// The lesson's tables: the pinhole at the origin (screen points and directions), then
 /// the placed camera's world rays; `d` and `k` are the placed camera's flags.
-pub fn numbers(at_origin: &PinholeCamera, placed: &PinholeCamera, d: Vec3, k: Vec3) -> String {
+pub fn numbers(
+    at_origin: &PinholeCamera,
+    placed: &PinholeCamera,
+    d: Vec3,
+    k: Vec3,
+) -> String {
     let s = num(at_origin.screen_distance() as f64, 2);
     let mut origin_table = Table::new(
         &format!("Pinhole camera at the origin: eye e = (0, 0, 0), screen at z = -{s}"),
@@ -113,7 +117,9 @@ pub fn fan_figure(cam: &PinholeCamera) -> Result<Diagram> {
     let spread = (y1 - y0) / s * reach * 0.5 + 1.0;
     let (z, y) = ((-reach - 1.0, 2.0), (-spread, spread));
     let mut d = Diagram::new(800, 620, z, y)?;
-    d.title("Seen from the side: rays leave the eye e and pass through the screen points s");
+    d.title(
+        "Seen from the side: rays leave the eye e and pass through the screen points s",
+    );
     d.axes(z, y, 2.0, View::Side.axis_names());
     CameraRays::side(*cam, reach)
         .column(1)
@@ -160,7 +166,8 @@ pub fn my_pinhole_view(
     let film = Film::new(width, width * 3 / 4, (-4.0, 4.0), (-3.0, 3.0))?;
     Framebuffer::from_fn(film.width(), film.height(), |x, y| {
         let (origin, direction) = pinhole_ray(&film, s, &frame, x, y);
-        Ray::new(origin, direction).map_or(Vec3::new(1.0, 0.0, 1.0), |r| floor_colour(&r))
+        Ray::new(origin, direction)
+            .map_or(Vec3::new(1.0, 0.0, 1.0), |r| floor_colour(&r))
     })
 }
 
@@ -169,7 +176,7 @@ pub fn my_pinhole_view(
 #[command(about = "Lesson 06: the pinhole camera")]
 #[command(allow_negative_numbers = true)]
 pub struct Args {
-    /// Distance s from the eye to the screen (the screen is lesson 03's [-8, 8] x [-6, 6]).
+    /// Distance s from the eye to the screen (lesson 03's [-8, 8] x [-6, 6]).
     #[arg(long, default_value = "8", value_parser = parsers::finite)]
     pub screen_distance: f32,
     /// Position p of the arbitrary camera, as x,y,z.

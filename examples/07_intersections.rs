@@ -103,7 +103,8 @@ pub fn cases() -> Result<Vec<Case>> {
     let plane_ray = Ray::new(v(-2.0, 2.0, 0.0), v(1.0, -1.0, 0.0))?;
     let cube = Shape::Aabb(Aabb::new(Vec3::splat(-1.0), Vec3::splat(1.0))?);
     let cube_ray = Ray::new(v(-3.0, -0.5, 0.0), v(2.0, 1.0, 0.0))?;
-    let triangle = Triangle::new(v(1.0, -1.0, -1.0), v(1.0, 1.5, 0.0), v(1.0, -1.0, 1.0))?;
+    let triangle =
+        Triangle::new(v(1.0, -1.0, -1.0), v(1.0, 1.5, 0.0), v(1.0, -1.0, 1.0))?;
     let triangle_ray = Ray::new(v(-2.0, 0.2, 0.0), v(1.0, 0.1, 0.0))?;
     let paraboloid = Shape::Quadric(Quadric::paraboloid()?);
     let paraboloid_ray = Ray::new(v(-2.0, 0.0, 3.0), v(1.0, 0.0, -1.0))?;

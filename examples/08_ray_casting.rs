@@ -14,7 +14,9 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::Vec3;
 use render_lessons::course::failure::LessonResult;
-use render_lessons::course::image_tables::{coverage_table, differing_table, spots_table};
+use render_lessons::course::image_tables::{
+    coverage_table, differing_table, spots_table,
+};
 use render_lessons::course::lesson::{self, ImageFlags, Output};
 use render_lessons::course::mine::{self, Picture};
 use render_lessons::course::parsers;
@@ -58,8 +60,12 @@ pub fn images((width, height): (u32, u32), epsilon: f32, far: Vec3) -> Result<Im
         shadowless_ortho: render(&ortho, |r| shadowless(&near, r))?,
         shadowless_pinhole: render(&pinhole, |r| shadowless(&near, r))?,
         lambert: render(&pinhole, |r| lit(&near, r, Offset::Scaled))?,
-        far_fixed_epsilon: render(&far_pinhole, |r| lit(&far_scene, r, Offset::Fixed(epsilon)))?,
-        far_scaled_offset: render(&far_pinhole, |r| lit(&far_scene, r, Offset::Scaled))?,
+        far_fixed_epsilon: render(&far_pinhole, |r| {
+            lit(&far_scene, r, Offset::Fixed(epsilon))
+        })?,
+        far_scaled_offset: render(&far_pinhole, |r| {
+            lit(&far_scene, r, Offset::Scaled)
+        })?,
     })
 }
 // ANCHOR_END: images
@@ -85,8 +91,9 @@ pub fn numbers(
 ) -> Result<String> {
     let near = still_life(Vec3::ZERO)?;
     let [ortho, pinhole] = still_life_cameras(width, height, Vec3::ZERO)?;
-    let title =
-        format!("Shadowless ray casting, {width} x {height} pixels: pixels showing each primitive");
+    let title = format!(
+        "Shadowless ray casting, {width} x {height} pixels: pixels showing each primitive"
+    );
     let cameras = [("orthographic", &ortho), ("pinhole", &pinhole)];
     let coverage = coverage_table(&title, &near, &STILL_LIFE_OBJECTS, &cameras);
     let (lambert, fixed, scaled) = (
@@ -103,8 +110,7 @@ pub fn numbers(
         ("scaled offset".to_string(), scaled),
     ];
     let acne = differing_table(&title, "shadow-ray start", lambert, &starts);
-    let title =
-        "A few pixels of the Lambert image (linear RGB), at fractions of the width and height";
+    let title = "A few pixels of the Lambert image (linear RGB), at fractions of the width and height";
     let spots = [
         ("red sphere, lit side", 0.30, 0.40),
         ("floor in the red sphere's shadow", 0.16, 0.60),

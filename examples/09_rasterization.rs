@@ -6,7 +6,6 @@
 //! it has no shadows until a second trick (a shadow map) adds them, with artefacts.
 //!
 //!     cargo run --release --example 09_rasterization
-//!     cargo run --release --example 09_rasterization -- --width 1920 --height 1080
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj --subdivide 4
 
@@ -16,17 +15,20 @@ use std::process::ExitCode;
 use clap::Parser;
 use glam::Vec3;
 use render_lessons::bvh::ListOrTree;
-use render_lessons::course::compare::{Agreement, TOLERANCE, agreement, difference, reference};
+use render_lessons::course::compare::{
+    Agreement, TOLERANCE, agreement, difference, reference,
+};
 use render_lessons::course::lesson::{self, ImageFlags, Output};
 use render_lessons::course::{
-    image_tables::agreement_table, parsers, report::Timings, triangle_table::triangle_table,
+    image_tables::agreement_table, parsers, report::Timings,
+    triangle_table::triangle_table,
 };
 use render_lessons::mesh::{Model, check_segments, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Shadows, floor_settings, point_light, rasterize};
-use render_lessons::scenes::{PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_and_mesh};
 use render_lessons::scenes::{
-    mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
+    PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_and_mesh, mesh_on_the_floor,
+    still_life, still_life_pinhole, still_life_shadows,
 };
 use render_lessons::{Result, camera::Camera, lesson_images, render::render};
 use render_lessons::{raycast::lit, scene::Scene, spawn::Offset};
@@ -39,7 +41,8 @@ fn main() -> ExitCode {
         let camera = still_life_pinhole(width, height)?;
         check_segments(&scene, args.segments)?;
         let shadows = still_life_shadows(args.shadow_map_size, args.bias);
-        let mesh = mesh_on_the_floor(&args.mesh, args.subdivide).map_err(lesson::flag("--mesh"))?;
+        let mesh = mesh_on_the_floor(&args.mesh, args.subdivide)
+            .map_err(lesson::flag("--mesh"))?;
         let lesson = images(&scene, &camera, args.segments, shadows, &mesh.model)?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
         lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &lesson)?);
@@ -49,12 +52,10 @@ fn main() -> ExitCode {
 }
 
 // ANCHOR: images
-/// Lecture 2's pipeline, stage by stage, beside the ray caster: the scene ray cast
-/// (the reference); modelled as triangles (spheres of `segments` slices), lit by its
-/// point light, then transformed, clipped, rasterized and shaded per pixel and per
-/// vertex; the shadows both ways (the map with its bias, none, and 50 times too
-/// much); and the floor with `mesh`, both ways (the ray caster goes through a BVH
-/// when the mesh is too big to test every triangle).
+/// Lecture 2's pipeline beside the ray caster: the scene ray cast (the reference); as
+/// triangles (spheres of `segments` slices), lit, transformed, clipped, rasterized
+/// and shaded per pixel and per vertex; shadows both ways (the map with its bias,
+/// none, 50 times too much); the floor with `mesh` both ways (a BVH when it is big).
 pub fn images(
     scene: &Scene,
     camera: &Camera,
@@ -91,7 +92,7 @@ pub fn images(
         ListOrTree::Tree(_) => "ray cast through a BVH, floor + mesh",
     };
     let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera))?;
-    drop(meshed); // a big mesh: the ray caster's copy goes before the rasterizer's comes
+    drop(meshed); // a big mesh: the ray caster's copy goes, the rasterizer's comes
     let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
     let mesh_raster = t.time("rasterized, floor + mesh", || {
         pipeline(&floor_and_mesh_models, PerPixel, None)
@@ -174,7 +175,7 @@ pub fn numbers(
 
 /// The lesson's parameters; every one has a default that reproduces the book.
 #[derive(Parser, Debug)]
-#[command(about = "Lesson 09: the rasterization pipeline, side by side with ray casting")]
+#[command(about = "Lesson 09: the rasterization pipeline beside ray casting")]
 #[command(allow_negative_numbers = true)]
 struct Args {
     #[command(flatten)]
@@ -188,10 +189,10 @@ struct Args {
     /// The shadow map's bias, in texel footprints (0 or more).
     #[arg(long, default_value = "1", value_parser = parsers::non_negative)]
     bias: f32,
-    /// The mesh both renderers draw (a Wavefront OBJ file; larger faces become triangles).
+    /// The mesh both renderers draw (Wavefront OBJ; larger faces become triangles).
     #[arg(long, default_value = TORUS_OBJ)]
     mesh: PathBuf,
-    /// Split each triangle in four, this many times (4 makes the teapot a million triangles).
+    /// Split each triangle in four this many times (4: a million-triangle teapot).
     #[arg(long, default_value_t = 0)]
     subdivide: u32,
     #[command(flatten)]

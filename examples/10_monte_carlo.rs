@@ -1,8 +1,8 @@
 //! Lesson 10, step 1: Monte Carlo integration on its own, before any light.
 //!
 //! pi is the integral of f(x) = 4 sqrt(1 - x^2) over [0, 1] (a quarter disc, times 4).
-//! The estimate is the mean of f at N uniform random points, for N = 1, 2, 4, ..., 2^16.
-//! One run's error jumps about; the RMSE over many independent runs falls as
+//! The estimate is the mean of f at N uniform random points, for N = 1, 2, 4, ...,
+//! 2^16. One run's error jumps about; the RMSE over many independent runs falls as
 //! sigma / sqrt(N), sigma = sqrt(32/3 - pi^2) = 0.8928 being the spread of one sample.
 //!
 //!     cargo run --release --example 10_monte_carlo
@@ -90,11 +90,14 @@ pub fn numbers(runs: u32, rows: &[Row]) -> String {
         num(sigma(), 4)
     );
     let rmse = format!("RMSE ({runs} runs)");
-    let mut table = Table::new(&title, &["N", "estimate", "error", &rmse, "RMSE x sqrt(N)"]);
+    let mut table =
+        Table::new(&title, &["N", "estimate", "error", &rmse, "RMSE x sqrt(N)"]);
     for r in rows {
         let scaled = r.rmse * (r.n as f64).sqrt();
         let cells = [r.estimate, r.error, r.rmse].map(|x| num(x, 5));
-        table.row([vec![r.n.to_string()], cells.to_vec(), vec![num(scaled, 4)]].concat());
+        table.row(
+            [vec![r.n.to_string()], cells.to_vec(), vec![num(scaled, 4)]].concat(),
+        );
     }
     let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.n as f64, r.rmse)).collect();
     let slope = log_log_slope(&points).map_or("-".into(), |s| num(s, 3));
@@ -102,7 +105,8 @@ pub fn numbers(runs: u32, rows: &[Row]) -> String {
 }
 
 // ANCHOR: chart
-/// The log-log chart: one run's error, the RMSE of all `runs` runs, and sigma / sqrt(N).
+/// The log-log chart: one run's error, the RMSE of all `runs` runs, and sigma /
+/// sqrt(N).
 pub fn chart(runs: u32, rows: &[Row]) -> Chart {
     let line = |y: fn(&Row) -> f64| rows.iter().map(|r| (r.n as f64, y(r))).collect();
     Chart::new(

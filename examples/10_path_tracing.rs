@@ -43,9 +43,13 @@ fn main() -> ExitCode {
         let Staged { scene, camera } = scene_and_camera(args.scene, size, lens)?;
         let study = args.study.study(args.path.settings())?;
         // Every object on every ray while that stays cheap, else lesson 11's BVH.
-        let scene = ListOrTree::new(scene, study.samples() * u64::from(args.width * args.height));
+        let scene = ListOrTree::new(
+            scene,
+            study.samples() * u64::from(args.width * args.height),
+        );
         // ANCHOR_END: setup
-        let renders = with_threads(threads, || render(&scene, &camera, &study, &args.output))?;
+        let renders =
+            with_threads(threads, || render(&scene, &camera, &study, &args.output))?;
         let seconds = start.elapsed().as_secs_f64();
         lesson::print(&numbers(args.scene, &study, &renders));
         lesson::print(&format!("rendered in {seconds:.1} s\n"));

@@ -89,7 +89,8 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
         Ok((ms, 100.0 - a.percent_agreeing()))
     };
     let (map, n) = (1024, 64); // lesson 09's defaults
-    let segments = Sweep::measure(map, &[8, 16, 32, 64, 128], |s| raster(s, Some(map)))?;
+    let segments =
+        Sweep::measure(map, &[8, 16, 32, 64, 128], |s| raster(s, Some(map)))?;
     let sizes = [128, 256, 512, 1024, 2048, 4096];
     let maps = Sweep::measure(n, &sizes, |size| raster(n, Some(size)))?;
     let no_shadows = raster(n, None)?;

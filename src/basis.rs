@@ -1,4 +1,5 @@
-//! Orthonormal bases and the change of coordinates (Lecture 4, "Coordinate System Change").
+//! Orthonormal bases and the change of coordinates (Lecture 4, "Coordinate System
+//! Change").
 //!
 //! A vector s has coordinates a in the standard basis (e1, e2, e3) and coordinates b
 //! in another orthonormal basis (u, v, w). Both describe the same arrow:
@@ -29,7 +30,8 @@ impl Basis {
     };
 
     /// The basis with columns `u`, `v`, `w`, if they are orthonormal within
-    /// [`ORTHONORMAL_TOLERANCE`]. Handedness is not required; ask [`Basis::is_right_handed`].
+    /// [`ORTHONORMAL_TOLERANCE`]. Handedness is not required; ask
+    /// [`Basis::is_right_handed`].
     pub fn new(u: Vec3, v: Vec3, w: Vec3) -> Result<Basis> {
         let basis = Basis {
             u: finite3("u", u)?,

@@ -136,7 +136,9 @@ impl fmt::Display for Problem {
         match self {
             Problem::NotFinite => write!(f, "must be a finite number"),
             Problem::ZeroLength => write!(f, "must not have zero length"),
-            Problem::NotPositive { value } => write!(f, "must be greater than 0 (got {value})"),
+            Problem::NotPositive { value } => {
+                write!(f, "must be greater than 0 (got {value})")
+            }
             Problem::Negative { value } => write!(f, "must be 0 or more (got {value})"),
             Problem::UpParallelToDirection => write!(
                 f,
@@ -148,12 +150,16 @@ impl fmt::Display for Problem {
             Problem::EmptyRange { min, max } => {
                 write!(f, "must have min < max (got {min} .. {max})")
             }
-            Problem::NotOrthonormal { error } => write!(f, "is not orthonormal (error {error:e})"),
+            Problem::NotOrthonormal { error } => {
+                write!(f, "is not orthonormal (error {error:e})")
+            }
             Problem::NotSymmetric { error } => {
                 write!(f, "must be symmetric (relative asymmetry {error:e})")
             }
             Problem::Singular => write!(f, "is singular: it has no inverse"),
-            Problem::TooFew { value, min } => write!(f, "must be at least {min} (got {value})"),
+            Problem::TooFew { value, min } => {
+                write!(f, "must be at least {min} (got {value})")
+            }
             Problem::Invalid { reason } => write!(f, "{reason}"),
             Problem::NonFinitePixel { x, y } => {
                 write!(f, "({x}, {y}) is NaN or infinite; refusing to write it")

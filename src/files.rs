@@ -22,7 +22,8 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
         _ => Path::new("."),
     };
     std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
-    let mut file = tempfile::NamedTempFile::new_in(dir).map_err(|e| io_error(dir, e))?;
+    let mut file =
+        tempfile::NamedTempFile::new_in(dir).map_err(|e| io_error(dir, e))?;
     file.write_all(bytes).map_err(|e| io_error(path, e))?;
     readable_by_all(file.as_file()).map_err(|e| io_error(path, e))?;
     file.persist(path).map_err(|e| io_error(path, e.error))?;

@@ -68,7 +68,9 @@ impl Material {
     pub fn check(&self) -> Result<()> {
         match *self {
             Material::Diffuse { albedo } => fraction3("albedo", albedo).map(|_| ()),
-            Material::Mirror { reflectance } => fraction3("reflectance", reflectance).map(|_| ()),
+            Material::Mirror { reflectance } => {
+                fraction3("reflectance", reflectance).map(|_| ())
+            }
             Material::Glass { ior } => positive("ior", ior).map(|_| ()),
         }
     }
@@ -183,7 +185,13 @@ impl Material {
     /// weight 1: choosing with probability F cancels the factor F of f_r. Radiance is
     /// not scaled by eta^2: the scenes' paths enter and leave the glass, and the two
     /// factors cancel (smallpt does the same). `None` for a diffuse material.
-    pub fn scatter_specular(&self, d: Vec3, n: Vec3, entering: bool, u: f32) -> Option<Specular> {
+    pub fn scatter_specular(
+        &self,
+        d: Vec3,
+        n: Vec3,
+        entering: bool,
+        u: f32,
+    ) -> Option<Specular> {
         let mirror = |weight| Specular {
             direction: reflect(d, n).normalize_or(n),
             weight,

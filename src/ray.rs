@@ -78,7 +78,8 @@ impl Ray {
         })
     }
 
-    /// A ray from values the caller has already checked: finite, `direction` of unit length.
+    /// A ray from values the caller has already checked: finite, `direction` of unit
+    /// length.
     #[inline]
     pub(crate) fn from_checked(origin: Vec3, direction: Vec3) -> Ray {
         debug_assert!(origin.is_finite() && direction.is_normalized());
@@ -180,7 +181,8 @@ pub struct ClosedSpan {
 /// so a ray starting inside a sphere of radius 1 at its centre reports -1 and 1, and a
 /// tangent ray reports its point twice. This is The Ray Tracer Challenge's
 /// `intersect(shape, ray)` (ch. 5), which keeps every crossing so that later chapters
-/// can tell inside from outside; [`crate::shapes::Shape::hit`] picks the nearest one in a range.
+/// can tell inside from outside; [`crate::shapes::Shape::hit`] picks the nearest one in
+/// a range.
 ///
 /// Derefs to a slice: `xs.len()`, `xs[0]`, `xs.iter()`.
 #[derive(Clone, Copy, Debug)]

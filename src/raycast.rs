@@ -52,7 +52,9 @@ pub fn lit(scene: &impl Intersect, ray: &Ray, offset: Offset) -> Vec3 {
 /// compares its images against.
 pub fn lit_unshadowed(scene: &impl Intersect, ray: &Ray) -> Vec3 {
     match scene.closest(ray, Interval::AHEAD) {
-        Some(found) => lighting::at_hit(scene.scene(), &found.hit, scene.object(&found), |_| true),
+        Some(found) => {
+            lighting::at_hit(scene.scene(), &found.hit, scene.object(&found), |_| true)
+        }
         None => scene.background(),
     }
 }

@@ -19,7 +19,10 @@ pub const PROGRESS_PIXELS: u64 = 1 << 20;
 // ANCHOR: render
 /// The image `camera` sees, each pixel coloured by `shade` of its ray through the
 /// pixel centre, rows in parallel on the current thread pool (see [`with_threads`]).
-pub fn render(camera: &Camera, shade: impl Fn(&Ray) -> Vec3 + Sync) -> Result<Framebuffer> {
+pub fn render(
+    camera: &Camera,
+    shade: impl Fn(&Ray) -> Vec3 + Sync,
+) -> Result<Framebuffer> {
     let (width, height) = (camera.film().width(), camera.film().height());
     let progress = progress_bar(u64::from(width) * u64::from(height), height);
     let mut pixels = vec![Vec3::ZERO; width as usize * height as usize];
@@ -83,7 +86,9 @@ pub(crate) fn progress_bar(work: u64, rows: u32) -> ProgressBar {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(u64::from(rows));
-    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left") {
+    if let Ok(style) =
+        ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left")
+    {
         bar.set_style(style);
     }
     bar

@@ -3,8 +3,8 @@
 //! Every sampling function `name(u)` has a `name_pdf` giving the density of the
 //! samples it draws, per unit solid angle for directions and per unit area for
 //! points of the disc, and 0 outside the function's domain (pbrt-v4 section A.5).
-//! `tests/lessons/lesson_10_densities.rs` checks each one: it integrates to 1 over its domain, and
-//! it matches a histogram of a million samples.
+//! `tests/lessons/lesson_10_densities.rs` checks each one: it integrates to 1 over its
+//! domain, and it matches a histogram of a million samples.
 //!
 //! ```
 //! use glam::Vec2;

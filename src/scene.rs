@@ -51,7 +51,11 @@ impl Object {
     }
 
     /// A surface that emits `emission` from both sides.
-    pub fn emitting(shape: impl Into<Shape>, material: Material, emission: Vec3) -> Object {
+    pub fn emitting(
+        shape: impl Into<Shape>,
+        material: Material,
+        emission: Vec3,
+    ) -> Object {
         Object {
             shape: shape.into(),
             material,
@@ -243,8 +247,8 @@ impl Scene {
     ///
     /// The loop runs over the shapes as [`ShapesByKind`] stores them, in runs of one
     /// kind, so that one test serves a whole run; it asks each primitive only for its
-    /// [`crate::shapes::Candidate`] (`t` and a few numbers), and the point and normal are computed
-    /// once, for the winner.
+    /// [`crate::shapes::Candidate`] (`t` and a few numbers), and the point and normal
+    /// are computed once, for the winner.
     pub fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
         let prepared = PreparedRay::new(ray);
         let (candidate, object) = self.by_kind.closest(&prepared, range)?;

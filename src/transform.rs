@@ -5,7 +5,8 @@
 //! shear), so scale, rotation and translation all compose by multiplication.
 //!
 //! Every matrix below is written out row by row, exactly as the slides print it;
-//! `tests/lessons/lesson_01_transforms.rs` checks each one against glam's own constructors.
+//! `tests/lessons/lesson_01_transforms.rs` checks each one against glam's own
+//! constructors.
 
 use std::ops::Mul;
 
@@ -85,7 +86,8 @@ impl Transform {
     }
 
     // ANCHOR: scale
-    /// Scale along X, Y and Z: x' = x s_x, y' = y s_y, z' = z s_z (Lecture 3, "3D Scale").
+    /// Scale along X, Y and Z: x' = x s_x, y' = y s_y, z' = z s_z (Lecture 3, "3D
+    /// Scale").
     pub fn scale(sx: f32, sy: f32, sz: f32) -> Transform {
         let (sx, sy, sz) = (finite("sx", sx), finite("sy", sy), finite("sz", sz));
         Transform::from_finite_matrix(from_rows([
@@ -176,7 +178,8 @@ impl Transform {
         Transform { matrix }
     }
 
-    /// The transformation that undoes this one, or [`Problem::Singular`] (e.g. a scale by 0).
+    /// The transformation that undoes this one, or [`Problem::Singular`] (e.g. a scale
+    /// by 0).
     pub fn inverse(self) -> Result<Transform> {
         let det = self.matrix.determinant();
         if det == 0.0 || !det.is_finite() {
@@ -197,7 +200,8 @@ impl Transform {
     }
 
     // ANCHOR: apply
-    /// The matrix times a homogeneous 4-vector: points (w = 1) and vectors (w = 0) alike.
+    /// The matrix times a homogeneous 4-vector: points (w = 1) and vectors (w = 0)
+    /// alike.
     pub fn apply(&self, h: Vec4) -> Vec4 {
         self.matrix * h
     }

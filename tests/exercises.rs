@@ -3,8 +3,8 @@
 //! One test per exercise runs its check on your function in
 //! `src/course/exercises/chNN.rs` and fails, printing the exercise's number, the case,
 //! the expected and the received answer and a hint, unless every case passes. The
-//! tests are named after the lesson and the exercise, `ch03::exercise_3_5_pixel_to_plane`,
-//! so that either selects them:
+//! tests are named after the lesson and the exercise,
+//! `ch03::exercise_3_5_pixel_to_plane`, so that either selects them:
 //!
 //! ```text
 //! cargo test --features exercises --test exercises                 # all your exercises

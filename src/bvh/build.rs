@@ -75,7 +75,8 @@ impl Bvh {
                 count,
             }
         });
-        let primitives: Vec<usize> = items.iter().map(|item| item.index as usize).collect();
+        let primitives: Vec<usize> =
+            items.iter().map(|item| item.index as usize).collect();
         let shapes = LeafShapes::new(primitives.iter().map(|&i| &objects[i].shape));
         Bvh {
             root,
@@ -135,7 +136,13 @@ impl Builder {
     /// most [`LEAF_SIZE`] primitives, when the tree is [`MAX_DEPTH`] deep (so the
     /// traversal stack is big enough), or when [`Builder::split`] finds no split
     /// worth making.
-    fn subtree(&mut self, items: &mut [Item], first: usize, depth: usize, boxes: Boxes) -> Child {
+    fn subtree(
+        &mut self,
+        items: &mut [Item],
+        first: usize,
+        depth: usize,
+        boxes: Boxes,
+    ) -> Child {
         let split = if items.len() > LEAF_SIZE && depth + 1 < MAX_DEPTH {
             self.split(items, &boxes)
         } else {
@@ -191,6 +198,8 @@ fn median_split(items: &mut [Item], centroids: &Bounds) -> Option<usize> {
         return None;
     }
     let mid = items.len() / 2;
-    items.select_nth_unstable_by(mid, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));
+    items.select_nth_unstable_by(mid, |a, b| {
+        a.centroid[axis].total_cmp(&b.centroid[axis])
+    });
     Some(mid)
 }

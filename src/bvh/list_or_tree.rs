@@ -8,8 +8,9 @@ use crate::scene::{Intersect, Scene, SceneHit};
 use super::BvhScene;
 
 /// Above this many ray-primitive tests (pixels times primitives) a renderer stops
-/// testing every primitive on every ray and goes through lesson 11's BVH: 2^28, about 2.7 x 10^8 tests, a few seconds of brute force. The torus at
-/// 480 x 270 (1.3 x 10^8 tests) stays below; the teapot (5.2 x 10^8) goes above.
+/// testing every primitive on every ray and goes through lesson 11's BVH: 2^28, about
+/// 2.7 x 10^8 tests, a few seconds of brute force. The torus at 480 x 270 (1.3 x 10^8
+/// tests) stays below; the teapot (5.2 x 10^8) goes above.
 pub const BRUTE_FORCE_TESTS: u64 = 1 << 28;
 
 /// A scene as the renderers see it: the plain list of lesson 08 while every ray may

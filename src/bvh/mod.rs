@@ -167,7 +167,9 @@ pub(crate) enum LeafShapes {
 impl LeafShapes {
     /// `shapes` as triangles if every one is (copied once, not as shapes first, into
     /// a vector made at its full size).
-    pub(crate) fn new<'a>(shapes: impl ExactSizeIterator<Item = &'a Shape> + Clone) -> LeafShapes {
+    pub(crate) fn new<'a>(
+        shapes: impl ExactSizeIterator<Item = &'a Shape> + Clone,
+    ) -> LeafShapes {
         let mut triangles = Vec::with_capacity(shapes.len());
         for shape in shapes.clone() {
             match shape {
@@ -193,8 +195,8 @@ impl LeafShapes {
     }
 }
 
-/// A BVH over a slice of [`Object`](crate::scene::Object)s. It answers with indices into that slice, so it
-/// must be used with the slice it was built from.
+/// A BVH over a slice of [`Object`](crate::scene::Object)s. It answers with indices
+/// into that slice, so it must be used with the slice it was built from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bvh {
     /// The root's box and what it is; `None` if no object has a box.

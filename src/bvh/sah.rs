@@ -147,7 +147,8 @@ impl Binning {
 
     #[inline(always)]
     fn bins(&self, c: Vec3A) -> [usize; 3] {
-        let f = ((c - self.lo) * self.scale).clamp(Vec3A::ZERO, Vec3A::splat((BINS - 1) as f32));
+        let f = ((c - self.lo) * self.scale)
+            .clamp(Vec3A::ZERO, Vec3A::splat((BINS - 1) as f32));
         [
             f.x as i32 as usize,
             f.y as i32 as usize,

@@ -60,7 +60,11 @@ impl BoxRay {
 /// [`box_entry_careful`] replaces it so that the axis constrains nothing, as in
 /// [`Aabb::slab`](crate::shapes::Aabb::slab), on every CPU.
 #[inline(always)]
-pub(super) fn box_entry((min, max): (Vec3A, Vec3A), ray: &BoxRay, range: Interval) -> Option<f32> {
+pub(super) fn box_entry(
+    (min, max): (Vec3A, Vec3A),
+    ray: &BoxRay,
+    range: Interval,
+) -> Option<f32> {
     if !ray.finite {
         return box_entry_careful((min, max), ray, range);
     }
@@ -73,7 +77,11 @@ pub(super) fn box_entry((min, max): (Vec3A, Vec3A), ray: &BoxRay, range: Interva
 /// [`box_entry`] for a ray with an infinite 1/d: each NaN becomes -inf (an entry)
 /// or +inf (an exit).
 #[inline(never)]
-fn box_entry_careful((min, max): (Vec3A, Vec3A), ray: &BoxRay, range: Interval) -> Option<f32> {
+fn box_entry_careful(
+    (min, max): (Vec3A, Vec3A),
+    ray: &BoxRay,
+    range: Interval,
+) -> Option<f32> {
     let lo = (min - ray.origin) * ray.inv_d;
     let hi = (max - ray.origin) * ray.inv_d;
     let negative = ray.inv_d.cmplt(Vec3A::ZERO);
@@ -103,7 +111,11 @@ fn enter(near: f32, far: f32, range: Interval) -> Option<f32> {
 /// plane, so one `min` and one `max` give both children's nearer and farther plane
 /// on that axis, in lanes 0 and 1.
 #[inline(always)]
-pub(super) fn both_entries(node: &Node, ray: &BoxRay, range: Interval) -> [Option<f32>; 2] {
+pub(super) fn both_entries(
+    node: &Node,
+    ray: &BoxRay,
+    range: Interval,
+) -> [Option<f32>; 2] {
     if !ray.finite {
         return [0, 1].map(|i| box_entry_careful(node.corners(i), ray, range));
     }
@@ -118,7 +130,8 @@ pub(super) fn both_entries(node: &Node, ray: &BoxRay, range: Interval) -> [Optio
     let (near_z, far_z) = ends(z, ray.axes[2]);
     let near = near_x.max(near_y).max(near_z);
     let far = far_x.min(far_y).min(far_z);
-    let far = far + (far.abs() * FAR_MARGIN).min(Vec4::splat(f32::MAX)); // moved_out, lane by lane
+    // moved_out, lane by lane:
+    let far = far + (far.abs() * FAR_MARGIN).min(Vec4::splat(f32::MAX));
     let t0 = near.max(Vec4::splat(range.min));
     let t1 = far.min(Vec4::splat(range.max));
     let hit = t0.cmple(t1).bitmask();
@@ -232,7 +245,8 @@ mod tests {
                 .slab_conservative(&ray, range)
                 .map(|span| span.t0.to_bits());
             let box_ray = BoxRay::new(&PreparedRay::new(&ray));
-            let entry = box_entry((min.into(), max.into()), &box_ray, range).map(f32::to_bits);
+            let entry =
+                box_entry((min.into(), max.into()), &box_ray, range).map(f32::to_bits);
             assert_eq!(entry, expected, "case {n}: {aabb:?} {ray:?} {range:?}");
             compared += 1;
             entered += usize::from(entry.is_some());

@@ -116,7 +116,12 @@ impl Bvh {
     /// The nearest hit within `range` among `objects` (the slice the tree was built
     /// over) and its index: the unbounded objects first, then the tree,
     /// whose boxes are tested only up to the nearest hit so far.
-    pub fn closest(&self, objects: &[Object], ray: &Ray, range: Interval) -> Option<SceneHit> {
+    pub fn closest(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        range: Interval,
+    ) -> Option<SceneHit> {
         if self.misses_everything(ray, range) {
             return None;
         }
@@ -127,7 +132,12 @@ impl Bvh {
     }
 
     /// The object [`Bvh::closest`] finds, without its hit record.
-    pub fn closest_object(&self, objects: &[Object], ray: &Ray, range: Interval) -> Option<usize> {
+    pub fn closest_object(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        range: Interval,
+    ) -> Option<usize> {
         if self.misses_everything(ray, range) {
             return None;
         }
@@ -142,7 +152,10 @@ impl Bvh {
         let Some(root) = &self.root else {
             return self.unbounded.is_empty();
         };
-        let box_ray = BoxRay::with_inv_d(ray.origin().into(), Vec3A::from(ray.direction()).recip());
+        let box_ray = BoxRay::with_inv_d(
+            ray.origin().into(),
+            Vec3A::from(ray.direction()).recip(),
+        );
         self.unbounded.is_empty()
             && box_entry(
                 (root.min, root.max),
@@ -172,10 +185,14 @@ impl Bvh {
             let objects = &self.primitives[leaf.clone()];
             match &self.shapes {
                 LeafShapes::Triangles(t) => {
-                    nearest.offer_leaf(&t[leaf], objects, range, |t, r| t.candidate(prepared, r))
+                    nearest.offer_leaf(&t[leaf], objects, range, |t, r| {
+                        t.candidate(prepared, r)
+                    })
                 }
                 LeafShapes::Shapes(s) => {
-                    nearest.offer_leaf(&s[leaf], objects, range, |s, r| s.candidate(prepared, r))
+                    nearest.offer_leaf(&s[leaf], objects, range, |s, r| {
+                        s.candidate(prepared, r)
+                    })
                 }
             }
             Walk::Continue {
@@ -193,8 +210,8 @@ impl Bvh {
         if self.unbounded.iter().any(hits) {
             return true;
         }
-        // The boxes get the same margin as in [`Bvh::closest`]: an object that hits just
-        // before `range.max` may have a box entered just after it.
+        // The boxes get the same margin as in [`Bvh::closest`]: an object that hits
+        // just before `range.max` may have a box entered just after it.
         let box_t_max = widened(range.max);
         let mut found = false;
         self.walk(&prepared, range.up_to(box_t_max), |leaf| {
@@ -248,7 +265,8 @@ impl Bvh {
                 let node = &self.nodes[first as usize];
                 let next = match both_entries(node, &box_ray, range) {
                     [Some(a), Some(b)] => {
-                        let (near, far, t_far) = if a <= b { (0, 1, b) } else { (1, 0, a) };
+                        let (near, far, t_far) =
+                            if a <= b { (0, 1, b) } else { (1, 0, a) };
                         let (f, c) = node.packed(far);
                         stack[pending] = (f, c, t_far);
                         pending += 1;

@@ -132,7 +132,8 @@ impl Film {
         self.film_point(Film::pixel_centre(px, py))
     }
 
-    /// The continuous position of the centre of pixel (`px`, `py`): (px + 0.5, py + 0.5).
+    /// The continuous position of the centre of pixel (`px`, `py`): (px + 0.5, py +
+    /// 0.5).
     #[inline]
     pub fn pixel_centre(px: u32, py: u32) -> Vec2 {
         Vec2::new(px as f32 + 0.5, py as f32 + 0.5)

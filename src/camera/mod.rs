@@ -33,7 +33,8 @@ pub enum Camera {
     Ortho(OrthoCamera),
     /// Rays from one eye point.
     Pinhole(PinholeCamera),
-    /// Rays from a lens disc, meeting on the plane in focus (lesson 10's depth of field).
+    /// Rays from a lens disc, meeting on the plane in focus (lesson 10's depth of
+    /// field).
     ThinLens(ThinLensCamera),
 }
 
@@ -49,7 +50,10 @@ impl Camera {
         width: u32,
         height: u32,
     ) -> Result<Camera> {
-        Ok(PinholeCamera::look_at(eye, target, up, vfov_degrees, width, height)?.into())
+        Ok(
+            PinholeCamera::look_at(eye, target, up, vfov_degrees, width, height)?
+                .into(),
+        )
     }
 
     // ANCHOR: ray_through
@@ -102,7 +106,9 @@ impl Camera {
                     reason: "needs a pinhole camera: an orthographic camera has no lens",
                 },
             }),
-            Camera::Pinhole(c) => Ok(ThinLensCamera::new(*c, aperture, focus_distance)?.into()),
+            Camera::Pinhole(c) => {
+                Ok(ThinLensCamera::new(*c, aperture, focus_distance)?.into())
+            }
             Camera::ThinLens(c) => Ok(c.with_lens(aperture, focus_distance)?.into()),
         }
     }

@@ -31,7 +31,11 @@ impl PinholeCamera {
     /// Rejects a screen distance that is not finite and positive, and one so large
     /// (or a film so wide) that |s - e| of a corner overflows f32: no ray of such a
     /// camera could be normalised.
-    pub fn new(film: Film, screen_distance: f32, frame: Frame) -> Result<PinholeCamera> {
+    pub fn new(
+        film: Film,
+        screen_distance: f32,
+        frame: Frame,
+    ) -> Result<PinholeCamera> {
         let camera = PinholeCamera {
             film,
             screen_distance: positive("screen distance", screen_distance)?,

@@ -91,7 +91,11 @@ impl ThinLensCamera {
 
     /// The same camera with a lens of radius `aperture` focused at `focus_distance`
     /// (validated as in [`ThinLensCamera::new`]).
-    pub fn with_lens(&self, aperture: f32, focus_distance: f32) -> Result<ThinLensCamera> {
+    pub fn with_lens(
+        &self,
+        aperture: f32,
+        focus_distance: f32,
+    ) -> Result<ThinLensCamera> {
         ThinLensCamera::new(self.pinhole, aperture, focus_distance)
     }
 

@@ -57,7 +57,9 @@ impl Bars {
     /// is negative or not finite, or there is no bar.
     pub fn svg(&self) -> Result<String> {
         let longest = self.bars.iter().map(|b| b.1).fold(0.0, f64::max);
-        if self.bars.is_empty() || self.bars.iter().any(|b| !(b.1 >= 0.0 && b.1.is_finite())) {
+        if self.bars.is_empty()
+            || self.bars.iter().any(|b| !(b.1 >= 0.0 && b.1.is_finite()))
+        {
             return Err(Error::Value {
                 param: "bars",
                 problem: Problem::Invalid {

@@ -111,7 +111,8 @@ impl Chart {
     /// The data as CSV: a header `series,x,y` (with the axis labels in a comment
     /// line above it), then one row per point.
     pub fn csv(&self) -> String {
-        let mut out = format!("# x: {}; y: {}\nseries,x,y\n", self.x.label, self.y.label);
+        let mut out =
+            format!("# x: {}; y: {}\nseries,x,y\n", self.x.label, self.y.label);
         for s in &self.series {
             for (x, y) in &s.points {
                 let _ = writeln!(out, "\"{}\",{x:e},{y:e}", s.name.replace('"', "'"));
@@ -132,10 +133,15 @@ impl Chart {
 
     /// The range an axis must show: the data's, widened a little (to whole decades
     /// on a log axis).
-    fn range(&self, values: impl Iterator<Item = f64>, scale: Scale) -> Result<(f64, f64)> {
-        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
+    fn range(
+        &self,
+        values: impl Iterator<Item = f64>,
+        scale: Scale,
+    ) -> Result<(f64, f64)> {
+        let (lo, hi) = values
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            });
         if !(lo.is_finite() && hi.is_finite()) {
             return Err(Error::Value {
                 param: "chart points that can be drawn",
@@ -165,7 +171,9 @@ impl Chart {
         let ys = self.range(drawn.iter().flatten().map(|p| p.1), self.y.scale)?;
         let mut svg = String::new();
         let result = match (self.x.scale, self.y.scale) {
-            (Scale::Linear, Scale::Linear) => self.draw(&mut svg, xs.0..xs.1, ys.0..ys.1, &drawn),
+            (Scale::Linear, Scale::Linear) => {
+                self.draw(&mut svg, xs.0..xs.1, ys.0..ys.1, &drawn)
+            }
             (Scale::Log, Scale::Linear) => {
                 self.draw(&mut svg, (xs.0..xs.1).log_scale(), ys.0..ys.1, &drawn)
             }
@@ -220,7 +228,9 @@ impl Chart {
                     colour.stroke_width(2),
                 ))?
                 .label(series.name.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], colour)
+                });
             if let [point] = points[..] {
                 // A series of one point (a method's cost and its error) is a large
                 // dot named where it is, not a line the eye has to look for.
@@ -241,7 +251,9 @@ impl Chart {
                         + Text::new(name, (dx, -6), style),
                 ))?;
             } else {
-                chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+                chart.draw_series(
+                    points.iter().map(|&p| Circle::new(p, 3, colour.filled())),
+                )?;
             }
         }
         if drawn.iter().all(|points| points.len() == 1) {

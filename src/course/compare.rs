@@ -50,7 +50,12 @@ pub fn reference(scene: &impl Intersect, camera: &Camera) -> Result<Reference> {
                 let ray = rays.next_ray();
                 *pixel = match scene.closest(&ray, Interval::AHEAD) {
                     Some(found) => (
-                        lighting::at_hit(scene.scene(), &found.hit, scene.object(&found), |_| true),
+                        lighting::at_hit(
+                            scene.scene(),
+                            &found.hit,
+                            scene.object(&found),
+                            |_| true,
+                        ),
                         found.object,
                     ),
                     None => (scene.background(), background),
@@ -63,7 +68,9 @@ pub fn reference(scene: &impl Intersect, camera: &Camera) -> Result<Reference> {
     let around = |c: u32, n: u32| c.saturating_sub(1)..=(c + 1).min(n - 1);
     let silhouettes = (0..h)
         .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| around(y, h).any(|ny| around(x, w).any(|nx| id(nx, ny) != id(x, y))))
+        .map(|(x, y)| {
+            around(y, h).any(|ny| around(x, w).any(|nx| id(nx, ny) != id(x, y)))
+        })
         .collect();
     let colours = pixels.iter().map(|&(colour, _)| colour).collect();
     Ok(Reference {
@@ -97,7 +104,12 @@ impl Agreement {
 /// Compares `a` and `b` pixel by pixel, skipping the pixels flagged in `skip` (row
 /// by row; missing flags count as not skipped): a pixel differs when some channel
 /// differs by more than `tolerance`, or when it is missing from one image.
-pub fn agreement(a: &Framebuffer, b: &Framebuffer, skip: &[bool], tolerance: f32) -> Agreement {
+pub fn agreement(
+    a: &Framebuffer,
+    b: &Framebuffer,
+    skip: &[bool],
+    tolerance: f32,
+) -> Agreement {
     let mut result = Agreement {
         compared: 0,
         silhouette: 0,
@@ -126,7 +138,11 @@ pub fn agreement(a: &Framebuffer, b: &Framebuffer, skip: &[bool], tolerance: f32
 // ANCHOR_END: agreement
 
 /// |a - b| magnified 10 times, with the pixels flagged in `skip` marked in grey.
-pub fn difference(a: &Framebuffer, b: &Framebuffer, skip: &[bool]) -> Result<Framebuffer> {
+pub fn difference(
+    a: &Framebuffer,
+    b: &Framebuffer,
+    skip: &[bool],
+) -> Result<Framebuffer> {
     Framebuffer::from_fn(a.width(), a.height(), |x, y| {
         if skip.get((y * a.width() + x) as usize) == Some(&true) {
             return Vec3::splat(0.2);

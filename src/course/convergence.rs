@@ -12,7 +12,8 @@ use crate::scene::Intersect;
 /// What a study renders.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Study {
-    /// The estimator's settings for the ladder (the strategies change only the sampling).
+    /// The estimator's settings for the ladder (the strategies change only the
+    /// sampling).
     pub settings: Settings,
     /// The sample counts of the ladder, increasing (see [`ladder`]).
     pub ladder: Vec<u32>,
@@ -112,11 +113,12 @@ impl Study {
         let mut non_finite = 0;
         let mut render = |part, settings: Settings, passes, stops: &[u32]| {
             let mut images = Vec::new();
-            non_finite += render_progressive(scene, camera, &settings, passes, stops, |pass| {
-                watch(part, &pass)?;
-                images.push((pass.samples, pass.image));
-                Ok::<(), E>(())
-            })?;
+            non_finite +=
+                render_progressive(scene, camera, &settings, passes, stops, |pass| {
+                    watch(part, &pass)?;
+                    images.push((pass.samples, pass.image));
+                    Ok::<(), E>(())
+                })?;
             Ok::<_, E>(images)
         };
         let (settings, passes) = (self.settings, self.passes);

@@ -37,7 +37,8 @@ pub fn coverage_table(
         .chain(cameras.iter().map(|(name, _)| *name))
         .collect();
     let mut table = Table::new(title, &header);
-    let counts: Vec<Vec<u32>> = cameras.iter().map(|(_, c)| coverage(scene, c)).collect();
+    let counts: Vec<Vec<u32>> =
+        cameras.iter().map(|(_, c)| coverage(scene, c)).collect();
     for (i, name) in names.iter().chain(&["background"]).enumerate() {
         let cells = counts.iter().map(|column| column[i].to_string());
         table.row([name.to_string()].into_iter().chain(cells).collect());
@@ -66,7 +67,11 @@ pub fn differing_table(
 
 /// A table of the linear colour of `image` at a few named spots, each given as
 /// fractions of the width and height.
-pub fn spots_table(title: &str, image: &Framebuffer, spots: &[(&str, f32, f32)]) -> Table {
+pub fn spots_table(
+    title: &str,
+    image: &Framebuffer,
+    spots: &[(&str, f32, f32)],
+) -> Table {
     let mut table = Table::new(title, &["where", "pixel", "colour"]);
     let (width, height) = (image.width() as f32, image.height() as f32);
     for &(name, fx, fy) in spots {

@@ -10,7 +10,8 @@ use crate::framebuffer::Framebuffer;
 
 /// Panels in a row.
 const COLUMNS: usize = 2;
-/// Each render is enlarged by the whole factor that makes it about this wide (at least 1).
+/// Each render is enlarged by the whole factor that makes it about this wide (at least
+/// 1).
 const PANEL_WIDTH: u32 = 320;
 /// The captions' size in pixels.
 const CAPTION_SIZE: f32 = 16.0;
@@ -36,9 +37,11 @@ pub fn ladder_figure(ladder: &[(u32, Framebuffer)]) -> Result<Diagram> {
     for (k, (spp, image)) in ladder.iter().enumerate() {
         let (col, row) = (k as u32 % columns, k as u32 / columns);
         let (left, top) = (GAP + col * (pw + GAP), GAP + row * (BAND + ph + GAP));
-        let big = Framebuffer::from_fn(image.width() * zoom, image.height() * zoom, |x, y| {
-            image.get(x / zoom, y / zoom).unwrap_or_default()
-        })?;
+        let big = Framebuffer::from_fn(
+            image.width() * zoom,
+            image.height() * zoom,
+            |x, y| image.get(x / zoom, y / zoom).unwrap_or_default(),
+        )?;
         d.image_px(left, top + BAND, big.width(), &big.to_srgb8()?);
         let centre = Vec2::new((left + pw / 2) as f32, top as f32 + BAND as f32 * 0.5);
         let caption = format!("{spp} spp");

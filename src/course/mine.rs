@@ -275,7 +275,11 @@ impl Comparison {
 /// How the picture `mine` compares with the lesson's PNG file `lesson` (written by
 /// the same run): [`Comparison::verdict`]'s line, or `None` if that file cannot be
 /// read or has another size.
-pub fn compared(mine: &Framebuffer, name: &str, lesson: &std::path::Path) -> Option<String> {
+pub fn compared(
+    mine: &Framebuffer,
+    name: &str,
+    lesson: &std::path::Path,
+) -> Option<String> {
     let theirs = image::open(lesson).ok()?.to_rgba8();
     if (theirs.width(), theirs.height()) != (mine.width(), mine.height()) {
         return None;

@@ -11,7 +11,8 @@
 //! - [`ladder_figure`]: lesson 10's convergence figure, the ladder's renders captioned;
 //! - [`record`]: lesson 10's paths recorded vertex by vertex, for figures;
 //! - [`report`]: tables with fixed precision, -0 printed as 0 (the snapshots);
-//! - [`image_tables`]: tables about rendered images (pixels per object, differing, spots);
+//! - [`image_tables`]: tables about rendered images (pixels per object, differing,
+//!   spots);
 //! - [`triangle_table`]: a scene as triangles, object by object (lesson 09);
 //! - [`compare`]: lesson 09's measurement, a rasterized image against the ray
 //!   caster's, away from silhouettes;

@@ -16,7 +16,10 @@ pub const MAX_DEGREES: f32 = 36_000.0;
 /// ([`error::finite`], [`error::positive`], [`error::non_negative`]): the rules are
 /// the core's, only the reason is worded for the command line, where clap has named
 /// the flag already.
-fn checked(s: &str, check: fn(&'static str, f32) -> crate::Result<f32>) -> Result<f32, String> {
+fn checked(
+    s: &str,
+    check: fn(&'static str, f32) -> crate::Result<f32>,
+) -> Result<f32, String> {
     let value = s
         .trim()
         .parse::<f32>()

@@ -50,7 +50,8 @@ pub struct StudyFlags {
     /// Jittered (stratified) pixel samples; every sample count must then be a square.
     #[arg(long)]
     pub jitter: bool,
-    /// Seed of the random streams (one per pixel); the images do not depend on --threads.
+    /// Seed of the random streams (one per pixel); the images do not depend on
+    /// --threads.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
 }
@@ -77,7 +78,8 @@ pub struct LensFlags {
     /// Lens radius of the thin-lens camera (0: pinhole).
     #[arg(long, default_value = "0", value_parser = parsers::non_negative)]
     pub aperture: f32,
-    /// Distance of the plane in focus (default: about that of the Cornell box's glass sphere).
+    /// Distance of the plane in focus (default: about that of the Cornell box's glass
+    /// sphere).
     #[arg(long, default_value = "220", value_parser = parsers::positive)]
     pub focus: f32,
 }

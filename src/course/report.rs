@@ -56,7 +56,8 @@ impl Table {
 impl fmt::Display for Table {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let columns = self.header.len();
-        let mut widths: Vec<usize> = self.header.iter().map(|h| h.chars().count()).collect();
+        let mut widths: Vec<usize> =
+            self.header.iter().map(|h| h.chars().count()).collect();
         for row in &self.rows {
             for (i, cell) in row.iter().enumerate().take(columns) {
                 widths[i] = widths[i].max(cell.chars().count());
@@ -110,13 +111,13 @@ impl Timings {
 /// include, so that no chapter types a measured number by hand.
 ///
 /// Every table and value sits between mdBook anchors (`<!-- ANCHOR: name -->`), so a
-/// chapter includes exactly the part it quotes: `{{#include figures/11_1_sphere.md:times}}`
-/// for a whole table, `:times_rows` for its rows alone (to add them to a table of
-/// the chapter), a value's anchor for one number inside a sentence. A table or
-/// value is either *exact* (it depends only on the arithmetic: errors, counts,
-/// shares; a test regenerates it and compares) or *timed* (it changes with the
-/// machine and its load: every timed table ends with the line that says where and
-/// when it was measured).
+/// chapter includes exactly the part it quotes:
+/// `{{#include figures/11_1_sphere.md:times}}` for a whole table, `:times_rows` for its rows alone
+/// (to add them to a table of the chapter), a value's anchor for one number inside a
+/// sentence. A table or value is either *exact* (it depends only on the arithmetic:
+/// errors, counts, shares; a test regenerates it and compares) or *timed* (it changes
+/// with the machine and its load: every timed table ends with the line that says where
+/// and when it was measured).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct BookNumbers {
     /// The tables, in the file's order.
@@ -203,7 +204,9 @@ impl Run {
                     text.lines()
                         .find(|l| l.starts_with("model name"))
                         .and_then(|l| l.split_once(':'))
-                        .map(|(_, name)| name.split_whitespace().collect::<Vec<_>>().join(" "))
+                        .map(|(_, name)| {
+                            name.split_whitespace().collect::<Vec<_>>().join(" ")
+                        })
                 })
                 .unwrap_or_else(|| "an unnamed CPU".to_string());
             let load = std::fs::read_to_string("/proc/loadavg")
@@ -231,7 +234,8 @@ impl Run {
         }
     }
 
-    /// The run in a few words, for a sentence: "`--full` run on 2 cores of ..., 2026-11-23".
+    /// The run in a few words, for a sentence: "`--full` run on 2 cores of ...,
+    /// 2026-11-23".
     pub fn short(&self) -> String {
         let how = match self.quality {
             "full" => "`--full`",
@@ -317,7 +321,8 @@ impl BookNumbers {
             // that says a number is missing ("-", "not run") does not count.
             let numeric = |c: usize| {
                 let cells = t.rows.iter().filter_map(|r| r.get(c));
-                let mut numbers = cells.filter(|cell| !matches!(cell.as_str(), "-" | "not run"));
+                let mut numbers =
+                    cells.filter(|cell| !matches!(cell.as_str(), "-" | "not run"));
                 numbers.all(|cell| {
                     cell.trim_start_matches('-')
                         .chars()
@@ -364,7 +369,13 @@ impl BookNumbers {
 
     /// [`BookNumbers::markdown`] for a fragment that `writer` writes (a bench), its
     /// comment saying how to write it again (`again`).
-    pub fn markdown_by(&self, stem: &str, run: &Run, writer: &str, again: &str) -> String {
+    pub fn markdown_by(
+        &self,
+        stem: &str,
+        run: &Run,
+        writer: &str,
+        again: &str,
+    ) -> String {
         let mut out = format!(
             "<!-- {stem}.md: the numbers of chart {stem} that the book quotes, written by \
              {writer}. Do not edit: {again}. -->\n\n"
@@ -385,8 +396,9 @@ impl BookNumbers {
 /// `None` if either marker is missing.
 pub fn anchored(text: &str, name: &str) -> Option<String> {
     let is = |line: &str, marker: &str| {
-        line.split_once(marker)
-            .is_some_and(|(_, rest)| rest.trim_start().trim_end_matches("-->").trim().eq(name))
+        line.split_once(marker).is_some_and(|(_, rest)| {
+            rest.trim_start().trim_end_matches("-->").trim().eq(name)
+        })
     };
     let mut lines = text.lines();
     lines.by_ref().find(|l| is(l, "ANCHOR:"))?;

@@ -8,7 +8,12 @@ use crate::scenes::PlacedMesh;
 /// One row per object of `instances` (named by `names`) with its vertices and
 /// triangles, a row of the total, and a row for `mesh`, read from `file`: how often
 /// it was subdivided and what reading it did to its faces.
-pub fn triangle_table(names: &[&str], instances: &[Model], mesh: &PlacedMesh, file: &str) -> Table {
+pub fn triangle_table(
+    names: &[&str],
+    instances: &[Model],
+    mesh: &PlacedMesh,
+    file: &str,
+) -> Table {
     let columns = ["object", "vertices", "triangles"];
     let mut table = Table::new("The scene as triangles", &columns);
     let mut total = 0;

@@ -107,7 +107,8 @@ impl Framebuffer {
 
     /// The colour of pixel (x, y), row 0 at the top.
     pub fn get(&self, x: u32, y: u32) -> Option<Vec3> {
-        (x < self.width && y < self.height).then(|| self.pixels[(y * self.width + x) as usize])
+        (x < self.width && y < self.height)
+            .then(|| self.pixels[(y * self.width + x) as usize])
     }
 
     /// 8-bit sRGB bytes (RGBA, alpha 255): each linear channel clamped to [0, 1] and

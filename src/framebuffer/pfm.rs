@@ -126,8 +126,9 @@ fn header(bytes: &[u8]) -> std::result::Result<Header, String> {
         }
         None => return Err("bad header: empty, not PF or Pf".to_string()),
     };
-    let mut number =
-        |what: &str| word(bytes, &mut at).ok_or_else(|| format!("bad header: no {what}"));
+    let mut number = |what: &str| {
+        word(bytes, &mut at).ok_or_else(|| format!("bad header: no {what}"))
+    };
     let side = |what: &str, w: String| {
         w.parse::<u32>()
             .map_err(|_| format!("bad header: {what} {w:?} is not a whole number"))
@@ -139,7 +140,9 @@ fn header(bytes: &[u8]) -> std::result::Result<Header, String> {
         .parse::<f32>()
         .ok()
         .filter(|s| s.is_finite() && *s != 0.0)
-        .ok_or_else(|| format!("bad header: scale {scale_word:?} is not a non-zero number"))?;
+        .ok_or_else(|| {
+            format!("bad header: scale {scale_word:?} is not a non-zero number")
+        })?;
     // Exactly one whitespace byte ends the header.
     if !bytes.get(at).is_some_and(u8::is_ascii_whitespace) {
         return Err("bad header: no pixels after the scale".to_string());

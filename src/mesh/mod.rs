@@ -10,7 +10,8 @@
 //! - [`obj`]: reading a Wavefront OBJ file, faces split into triangles;
 //! - [`teapot`]: the Newell teapot's patches, cut into quads and written as OBJ;
 //! - [`subdivide`]: every triangle split in four, for meshes of a million triangles;
-//! - [`tessellate`](mod@tessellate): a scene of analytic primitives as meshes, object by object.
+//! - [`tessellate`](mod@tessellate): a scene of analytic primitives as meshes, object
+//!   by object.
 
 pub mod modeling;
 pub mod obj;
@@ -30,7 +31,8 @@ use crate::error::Result;
 use crate::scene::Object;
 use crate::transform::Transform;
 
-/// A mesh placed in the world by a model transform, with one colour (linear RGB albedo).
+/// A mesh placed in the world by a model transform, with one colour (linear RGB
+/// albedo).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Model {
     /// The vertex and triangle lists.

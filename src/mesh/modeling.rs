@@ -22,7 +22,8 @@ pub const LECTURE_VERTICES: [[f32; 3]; 4] = [
 /// The triangle list as the slide prints it, with the slide's 1-based vertex numbers
 /// (triangles 1 to 4; the list is cut off with "⋮" too). Triangles 1 and 2 refer to
 /// vertices 5 and 8, which are not shown: they are kept here as data, not invented.
-pub const LECTURE_TRIANGLES: [[u32; 3]; 4] = [[1, 4, 5], [5, 4, 8], [2, 1, 4], [3, 2, 4]];
+pub const LECTURE_TRIANGLES: [[u32; 3]; 4] =
+    [[1, 4, 5], [5, 4, 8], [2, 1, 4], [3, 2, 4]];
 
 /// A triangle mesh: positions, one normal per vertex, and triangles of 0-based
 /// vertex indices, counter-clockwise when seen from the outside.
@@ -30,7 +31,8 @@ pub const LECTURE_TRIANGLES: [[u32; 3]; 4] = [[1, 4, 5], [5, 4, 8], [2, 1, 4], [
 pub struct Mesh {
     /// The vertex list.
     pub positions: Vec<Vec3>,
-    /// One unit normal per vertex (zero where no triangle gives the vertex a direction).
+    /// One unit normal per vertex (zero where no triangle gives the vertex a
+    /// direction).
     pub normals: Vec<Vec3>,
     /// The triangle list, three 0-based indices into `positions` each.
     pub triangles: Vec<[u32; 3]>,
@@ -49,7 +51,8 @@ impl Mesh {
         })
     }
 
-    /// A mesh with normals given per vertex (normalised here; a zero normal stays zero).
+    /// A mesh with normals given per vertex (normalised here; a zero normal stays
+    /// zero).
     pub fn with_normals(
         positions: Vec<Vec3>,
         normals: Vec<Vec3>,
@@ -94,10 +97,15 @@ impl Mesh {
     // ANCHOR: uv_sphere
     /// A sphere tessellated along `rings` bands of latitude and `segments` slices of
     /// longitude: a vertex at each pole and (rings - 1) x segments in between, at
-    /// p(theta, phi) = centre + radius (sin theta cos phi, cos theta, sin theta sin phi),
-    /// theta = pi i / rings, phi = 2 pi j / segments. Vertices are shared (the mesh is
-    /// closed) and every triangle winds counter-clockwise seen from outside.
-    pub fn uv_sphere(centre: Vec3, radius: f32, segments: u32, rings: u32) -> Result<Mesh> {
+    /// p(theta, phi) = centre + radius (sin theta cos phi, cos theta, sin theta sin
+    /// phi), theta = pi i / rings, phi = 2 pi j / segments. Vertices are shared (the
+    /// mesh is closed) and every triangle winds counter-clockwise seen from outside.
+    pub fn uv_sphere(
+        centre: Vec3,
+        radius: f32,
+        segments: u32,
+        rings: u32,
+    ) -> Result<Mesh> {
         let centre = finite3("centre", centre)?;
         let radius = positive("radius", radius)?;
         let segments = at_least("segments", segments, 3)?;
@@ -113,7 +121,8 @@ impl Mesh {
             }
         }
         normals.push(Vec3::NEG_Y);
-        let positions: Vec<Vec3> = normals.iter().map(|&n| centre + radius * n).collect();
+        let positions: Vec<Vec3> =
+            normals.iter().map(|&n| centre + radius * n).collect();
         let triangles = sphere_triangles(segments, rings);
         check(&positions, &triangles)?;
         Ok(Mesh {
@@ -156,11 +165,15 @@ impl Mesh {
                 normals.extend([n; 4]);
                 // u x v = n on the + side: counter-clockwise seen from outside.
                 if side > 0.0 {
-                    triangles
-                        .extend([[first, first + 1, first + 2], [first, first + 2, first + 3]]);
+                    triangles.extend([
+                        [first, first + 1, first + 2],
+                        [first, first + 2, first + 3],
+                    ]);
                 } else {
-                    triangles
-                        .extend([[first, first + 2, first + 1], [first, first + 3, first + 2]]);
+                    triangles.extend([
+                        [first, first + 2, first + 1],
+                        [first, first + 3, first + 2],
+                    ]);
                 }
             }
         }

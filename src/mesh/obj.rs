@@ -154,7 +154,9 @@ fn parse(path: &Path) -> Result<Vec<tobj::Model>> {
     bar.finish_and_clear();
     match parsed {
         Ok((models, _)) => Ok(models),
-        Err(tobj::LoadError::ReadError) => Err(fail(None, "cannot be read as text".into())),
+        Err(tobj::LoadError::ReadError) => {
+            Err(fail(None, "cannot be read as text".into()))
+        }
         Err(e) => Err(fail(bad_line(path), e.to_string())),
     }
 }

@@ -2,8 +2,8 @@
 //! over 306 control points (University of Utah, 1975; public domain), the data as
 //! it has been passed from renderer to renderer since, and [`teapot_obj`], which
 //! cuts every patch into a grid of quads and writes them as an OBJ file.
-//! `assets/meshes/teapot.obj` is `teapot_obj(8)` (`tests/lessons/lesson_09_meshes.rs` checks that
-//! it still is).
+//! `assets/meshes/teapot.obj` is `teapot_obj(8)` (`tests/lessons/lesson_09_meshes.rs`
+//! checks that it still is).
 //!
 //! A patch is the tensor-product Bezier surface
 //! p(u, v) = sum over i, j of B_i(u) B_j(v) P_ij, with the cubic Bernstein

@@ -19,7 +19,9 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
     let mut models = Vec::new();
     for object in scene.objects() {
         let mesh = match &object.shape {
-            Shape::Sphere(s) => Mesh::uv_sphere(s.centre(), s.radius(), segments, segments / 2)?,
+            Shape::Sphere(s) => {
+                Mesh::uv_sphere(s.centre(), s.radius(), segments, segments / 2)?
+            }
             Shape::Aabb(b) => Mesh::cuboid(b.min(), b.max())?,
             Shape::Plane(p) => Mesh::floor(p.point(), FLOOR_SIZE)?,
             Shape::Triangle(t) => Mesh::new(t.vertices().to_vec(), vec![[0, 1, 2]])?,
@@ -27,7 +29,7 @@ pub fn tessellate(scene: &Scene, segments: u32) -> Result<Vec<Model>> {
                 return Err(Error::Value {
                     param: "scene",
                     problem: Problem::Invalid {
-                        reason: "may hold only spheres, boxes, planes and triangles to be tessellated",
+                        reason: "may hold only spheres, boxes, planes and triangles",
                     },
                 });
             }

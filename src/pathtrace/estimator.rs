@@ -1,6 +1,7 @@
 //! The path tracer's estimator of the rendering equation (Lecture 2, Kajiya 1986):
 //!
-//! L_o(p, w_o) = L_e(p, w_o) + integral over the hemisphere of f_r L_i cos theta_i dw_i.
+//! L_o(p, w_o) = L_e(p, w_o) + integral over the hemisphere of f_r L_i cos theta_i
+//! dw_i.
 //!
 //! One sample of the integral follows one direction; L_i in that direction is again
 //! L_o of the next surface, so the estimate is a path, followed vertex by vertex
@@ -32,7 +33,8 @@ use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
 use crate::rng::Rng;
 use crate::sampling::{
-    cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
+    cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere,
+    uniform_hemisphere_pdf,
 };
 use crate::scene::Intersect;
 use crate::shapes::Hit;
@@ -54,7 +56,12 @@ enum Previous {
 // ANCHOR: radiance
 /// One sample of the radiance arriving along `ray`: the light found along a path,
 /// vertex by vertex, in the order the path finds it.
-pub fn radiance(scene: &impl Intersect, ray: Ray, rng: &mut Rng, settings: &Settings) -> Vec3 {
+pub fn radiance(
+    scene: &impl Intersect,
+    ray: Ray,
+    rng: &mut Rng,
+    settings: &Settings,
+) -> Vec3 {
     let mut sum = Vec3::ZERO;
     for vertex in Path::new(scene, ray, rng, settings) {
         sum += vertex.emitted;
@@ -117,7 +124,12 @@ struct Next {
 
 impl<'a, S: Intersect> Path<'a, S> {
     /// The path that starts with the camera ray `ray`.
-    pub fn new(scene: &'a S, ray: Ray, rng: &'a mut Rng, settings: &'a Settings) -> Self {
+    pub fn new(
+        scene: &'a S,
+        ray: Ray,
+        rng: &'a mut Rng,
+        settings: &'a Settings,
+    ) -> Self {
         let next = Next {
             ray,
             range: Interval::AHEAD,
@@ -169,7 +181,8 @@ impl<S: Intersect> Iterator for Path<'_, S> {
             return Some(vertex);
         }
         let material = surface.material;
-        let Some(next) = scatter(scene, material, &ray, &hit, self.rng, settings) else {
+        let Some(next) = scatter(scene, material, &ray, &hit, self.rng, settings)
+        else {
             return Some(vertex);
         };
         vertex.direct = beta * next.direct;
@@ -251,7 +264,8 @@ fn scatter(
         }
         specular => {
             let d = ray.direction();
-            let next = specular.scatter_specular(d, facing, hit.front_face, rng.next_f32())?;
+            let next =
+                specular.scatter_specular(d, facing, hit.front_face, rng.next_f32())?;
             let side = if next.transmitted { -facing } else { facing };
             Some(Bounce {
                 direct: Vec3::ZERO,
@@ -281,7 +295,8 @@ fn emission_weight(
             let shape = &scene.objects()[index].shape;
             let choose = 1.0 / scene.emitters().len() as f32;
             let light = LightShape::new(shape, s.sphere_lights);
-            let light_pdf = choose * light.map_or(0.0, |l| l.pdf(from, hit.point, hit.normal));
+            let light_pdf =
+                choose * light.map_or(0.0, |l| l.pdf(from, hit.point, hit.normal));
             power_heuristic(pdf, light_pdf)
         }
     }
@@ -301,7 +316,12 @@ fn after_diffuse(sampling: Sampling, from: Vec3, pdf: f32) -> Previous {
 ///
 /// Uniform: pdf = 1/(2 pi), factor = (albedo/pi) cos 2 pi = 2 albedo cos.
 /// Cosine (all other strategies): pdf = cos/pi, factor = albedo exactly.
-fn diffuse_bounce(n: Vec3, albedo: Vec3, rng: &mut Rng, s: &Settings) -> (Vec3, Vec3, f32) {
+fn diffuse_bounce(
+    n: Vec3,
+    albedo: Vec3,
+    rng: &mut Rng,
+    s: &Settings,
+) -> (Vec3, Vec3, f32) {
     let frame = Basis::around(n);
     let u = rng.next_vec2();
     match s.sampling {

@@ -14,9 +14,9 @@
 //! Each strategy is a function beside its density (`sphere_area` and
 //! `sphere_area_pdf`, `sphere_cone` and `sphere_cone_pdf`, `quad_area` and
 //! `quad_area_pdf`), and [`LightShape`] holds a light's shape with the strategy its
-//! kind allows: a sphere by area or by cone, a quad by area. `tests/lessons/lesson_10_densities.rs`
-//! checks that each density integrates to 1 over the directions and matches a
-//! histogram of samples.
+//! kind allows: a sphere by area or by cone, a quad by area.
+//! `tests/lessons/lesson_10_densities.rs` checks that each density integrates to 1 over
+//! the directions and matches a histogram of samples.
 
 use std::f32::consts::PI;
 
@@ -45,7 +45,8 @@ pub struct LightPoint {
     pub point: Vec3,
     /// The light's unit normal at y (outward; emission is two-sided).
     pub normal: Vec3,
-    /// A bound on y's rounding error, per coordinate (see [`crate::shapes::Hit::error`]).
+    /// A bound on y's rounding error, per coordinate (see
+    /// [`crate::shapes::Hit::error`]).
     pub error: Vec3,
     /// Density per unit solid angle at p, finite and positive.
     pub pdf: f32,

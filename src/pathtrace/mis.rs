@@ -16,10 +16,11 @@
 //! ```
 
 // ANCHOR: power_heuristic
-/// Veach's power heuristic with the exponent 2 (Veach writes it beta): the weight p_a^2 / (p_a^2 + p_b^2) of a
-/// sample drawn by strategy a, written as 1 / (1 + (p_b / p_a)^2) so that large
-/// densities cannot overflow. 0 when p_a is 0 (a could not have drawn the sample).
-/// One sample from each strategy: [`power_heuristic_with_counts`] with n_a = n_b = 1.
+/// Veach's power heuristic with the exponent 2 (Veach writes it beta): the weight p_a^2
+/// / (p_a^2 + p_b^2) of a sample drawn by strategy a, written as 1 / (1 + (p_b /
+/// p_a)^2) so that large densities cannot overflow. 0 when p_a is 0 (a could not have
+/// drawn the sample). One sample from each strategy: [`power_heuristic_with_counts`]
+/// with n_a = n_b = 1.
 pub fn power_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
     power_heuristic_with_counts(1, pdf_a, 1, pdf_b)
 }
@@ -68,9 +69,11 @@ mod tests {
                 assert_eq!(one.to_bits(), counted.to_bits(), "{a} {b}");
             }
         }
-        // Veach's form with counts, against f64: (n_a p_a)^2 / ((n_a p_a)^2 + (n_b p_b)^2),
-        // and the weights of one direction add up to 1.
-        for (n_a, p_a, n_b, p_b) in [(4, 0.5f32, 1, 1.5f32), (1, 2.0, 16, 0.1), (3, 0.7, 5, 0.7)] {
+        // Veach's form with counts, against f64: (n_a p_a)^2 / ((n_a p_a)^2 + (n_b
+        // p_b)^2), and the weights of one direction add up to 1.
+        for (n_a, p_a, n_b, p_b) in
+            [(4, 0.5f32, 1, 1.5f32), (1, 2.0, 16, 0.1), (3, 0.7, 5, 0.7)]
+        {
             let w_a = power_heuristic_with_counts(n_a, p_a, n_b, p_b);
             let w_b = power_heuristic_with_counts(n_b, p_b, n_a, p_a);
             let (a, b) = (

@@ -34,7 +34,11 @@ use crate::scene::Intersect;
 /// The whole image in one call: `spp` samples per pixel with the default
 /// [`Settings`] (MIS, depth 8, Russian roulette), independent pixel samples and seed
 /// 1. The lessons write the steps out: an [`Accumulator`] and its passes.
-pub fn path_trace(scene: &impl Intersect, camera: &Camera, spp: u32) -> Result<Framebuffer> {
+pub fn path_trace(
+    scene: &impl Intersect,
+    camera: &Camera,
+    spp: u32,
+) -> Result<Framebuffer> {
     let mut sums = Accumulator::new(camera, 1);
     sums.render_pass(
         scene,

@@ -36,7 +36,9 @@ pub(super) fn direct_light(
     rng: &mut Rng,
     s: &Settings,
 ) -> Option<LightSample> {
-    if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis) || scene.emitters().is_empty() {
+    if !matches!(s.sampling, Sampling::NextEvent | Sampling::Mis)
+        || scene.emitters().is_empty()
+    {
         return None;
     }
     let count = scene.emitters().len();

@@ -247,13 +247,15 @@ pub fn render_progressive<E: From<Error>>(
         };
         let image = acc.render_pass(scene, camera, settings, passes.pixels, added)?;
         let film = camera.film();
-        let taken = u64::from(acc.samples()) * u64::from(film.width()) * u64::from(film.height());
+        let taken = u64::from(acc.samples())
+            * u64::from(film.width())
+            * u64::from(film.height());
         if acc.non_finite() == taken {
             // Not one usable sample: the image would be black. Say so instead.
             return Err(Error::Value {
                 param: "scene",
                 problem: Problem::Invalid {
-                    reason: "gave NaN or infinity in every sample: there is no image to show",
+                    reason: "gave NaN or infinity in every sample: no image to show",
                 },
             }
             .into());

@@ -15,10 +15,15 @@ pub const RR_MAX_SURVIVAL: f32 = 0.95;
 
 // ANCHOR: roulette
 /// Russian roulette: from bounce [`RR_START`] on, the path survives with probability
-/// q = min(max channel of beta, [`RR_MAX_SURVIVAL`]) and beta is divided by q, so the expected
-/// value is unchanged (Arvo and Kirk 1990). `false` when the path ends, also when
-/// beta has become zero.
-pub(super) fn survives_roulette(beta: &mut Vec3, bounce: u32, rng: &mut Rng, s: &Settings) -> bool {
+/// q = min(max channel of beta, [`RR_MAX_SURVIVAL`]) and beta is divided by q, so the
+/// expected value is unchanged (Arvo and Kirk 1990). `false` when the path ends, also
+/// when beta has become zero.
+pub(super) fn survives_roulette(
+    beta: &mut Vec3,
+    bounce: u32,
+    rng: &mut Rng,
+    s: &Settings,
+) -> bool {
     if beta.max_element() <= 0.0 {
         return false;
     }

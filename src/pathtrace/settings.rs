@@ -60,7 +60,8 @@ pub struct Settings {
     /// interior furnace at d = 8 gives 0.5 (1 - 0.5^9) / (1 - 0.5) (STABILITY S16).
     /// `None`: no limit; then Russian roulette must be on.
     pub max_depth: Option<u32>,
-    /// Ends paths at random from bounce [`RR_START`](crate::pathtrace::roulette::RR_START) on, unbiased.
+    /// Ends paths at random from bounce
+    /// [`RR_START`](crate::pathtrace::roulette::RR_START) on, unbiased.
     pub russian_roulette: bool,
     /// How bounce and shadow rays leave their surface (STABILITY S13, S17).
     pub offset: Offset,

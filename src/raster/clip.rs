@@ -13,8 +13,8 @@ use glam::Vec4;
 use super::vertex::ClipVertex;
 
 /// The guard band in NDC units: |x|, |y| <= 64 w. NDC spans 2 units across the image,
-/// so that is 32 image widths from the centre, 31.5 beyond each edge. With the largest film
-/// (16384 pixels) a clipped vertex's pixel coordinates stay within -63 * 8192 and
+/// so that is 32 image widths from the centre, 31.5 beyond each edge. With the largest
+/// film (16384 pixels) a clipped vertex's pixel coordinates stay within -63 * 8192 and
 /// 65 * 8192 = 532 480, just above 2^19.
 pub const GUARD_BAND: f32 = 64.0;
 

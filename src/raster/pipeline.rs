@@ -1,8 +1,8 @@
 //! The pipeline of Lecture 2 ("Rasterization Pipeline"), stage after stage: modeling
 //! (a vertex list and a triangle list) -> transform -> lighting -> primitive
 //! rasterization with a z-buffer -> per-pixel shading. Each stage has its own file
-//! ([`super::projection`], [`super::shade`](mod@super::shade), [`super::clip`], [`super::rasterize`](mod@super::rasterize));
-//! this one runs them in order.
+//! ([`super::projection`], [`super::shade`](mod@super::shade), [`super::clip`],
+//! [`super::rasterize`](mod@super::rasterize)); this one runs them in order.
 //!
 //! The work runs in two parallel stages: vertices and triangles (transform, light,
 //! clip, project), then bands of rows, each band drawing every triangle in list
@@ -16,8 +16,8 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::{
-    CameraTransforms, ClipVertex, RasterSettings, ScreenVertex, Shading, ShadowMap, Varyings,
-    Viewer, clip_triangle, rasterize_triangle, shade,
+    CameraTransforms, ClipVertex, RasterSettings, ScreenVertex, Shading, ShadowMap,
+    Varyings, Viewer, clip_triangle, rasterize_triangle, shade,
 };
 use crate::camera::Camera;
 use crate::error::{Result, finite3};
@@ -111,7 +111,8 @@ pub(super) fn setup(
     };
     let mut screen = Vec::new();
     for model in models {
-        let vertices = transform_vertices(model, transforms, &lights, settings.shading)?;
+        let vertices =
+            transform_vertices(model, transforms, &lights, settings.shading)?;
         let triangles: Vec<_> = model
             .mesh
             .triangles
@@ -189,7 +190,8 @@ pub(super) fn in_bands<T: Send>(
         if !(hi >= -1.0 && lo <= height as f32 + 1.0) {
             continue;
         }
-        let row = |y: f32| (y.clamp(0.0, (height - 1) as f32) as u32 / BAND_ROWS) as usize;
+        let row =
+            |y: f32| (y.clamp(0.0, (height - 1) as f32) as u32 / BAND_ROWS) as usize;
         for bin in &mut bins[row(lo - 1.0)..=row(hi + 1.0)] {
             bin.push(k as u32);
         }

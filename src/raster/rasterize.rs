@@ -46,7 +46,10 @@ pub struct ScreenVertex {
 
 impl ScreenVertex {
     /// The screen vertex of a clipped vertex, or `None` if w <= 0 (clip first).
-    pub fn from_clip(transforms: &CameraTransforms, v: &ClipVertex) -> Option<ScreenVertex> {
+    pub fn from_clip(
+        transforms: &CameraTransforms,
+        v: &ClipVertex,
+    ) -> Option<ScreenVertex> {
         let screen = transforms.to_screen(v.clip)?;
         Some(ScreenVertex {
             pixel: screen.truncate(),
@@ -154,7 +157,8 @@ pub fn rasterize_triangle(
         return;
     }
     if area < 0 {
-        // Seen from behind: swap two vertices so the edge functions are positive inside.
+        // Seen from behind: swap two vertices so the edge functions are positive
+        // inside.
         p.swap(1, 2);
         order.swap(1, 2);
         area = -area;
@@ -187,7 +191,13 @@ pub fn rasterize_triangle(
 
 // ANCHOR: perspective_correct
 /// The fragment at pixel (x, y) with screen-space barycentric weights `b`.
-fn fragment(x: u32, y: u32, v: &[ScreenVertex; 3], b: [f32; 3], inv_w: Vec4) -> Fragment {
+fn fragment(
+    x: u32,
+    y: u32,
+    v: &[ScreenVertex; 3],
+    b: [f32; 3],
+    inv_w: Vec4,
+) -> Fragment {
     let depth = b[0] * v[0].depth + b[1] * v[1].depth + b[2] * v[2].depth;
     let weights = perspective_weights(b, [inv_w.x, inv_w.y, inv_w.z]);
     Fragment {

@@ -58,7 +58,11 @@ impl ShadowMap {
     // ANCHOR: build
     /// Pass 1: rasterize `models` from the light, keeping the nearest distance
     /// |x - light| per texel (a z-buffer that stores distance instead of depth).
-    pub fn build(models: &[Model], light: &PointLight, shadows: &Shadows) -> Result<Self> {
+    pub fn build(
+        models: &[Model],
+        light: &PointLight,
+        shadows: &Shadows,
+    ) -> Result<Self> {
         let camera = light_camera(light.position, shadows)?;
         let (lo, hi) = camera.film().x_extent();
         let texel_angle = (hi - lo) / shadows.size as f32;
@@ -72,8 +76,14 @@ impl ShadowMap {
             cull: Cull::None,
             ..RasterSettings::default()
         };
-        let triangles =
-            super::pipeline::setup(models, &transforms, &camera, light, &settings, None)?;
+        let triangles = super::pipeline::setup(
+            models,
+            &transforms,
+            &camera,
+            light,
+            &settings,
+            None,
+        )?;
         let size = shadows.size;
         let mut distance = vec![f32::INFINITY; size as usize * size as usize];
         super::pipeline::in_bands(
@@ -143,7 +153,8 @@ impl ShadowMap {
     /// The recorded distance of texel (x, y), row 0 at the top; infinite where the
     /// light sees nothing.
     pub fn distance(&self, x: u32, y: u32) -> Option<f32> {
-        (x < self.size && y < self.size).then(|| self.distance[(y * self.size + x) as usize])
+        (x < self.size && y < self.size)
+            .then(|| self.distance[(y * self.size + x) as usize])
     }
 }
 

@@ -59,9 +59,10 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
     limits::memory(param, triangles.saturating_mul(MESH_BYTES_PER_TRIANGLE))?;
     let mesh = match subdivisions {
         0 => mesh,
-        n => progress::spinner(format!("subdividing into {triangles} triangles"), || {
-            mesh.subdivided(n)
-        })?,
+        n => progress::spinner(
+            format!("subdividing into {triangles} triangles"),
+            || mesh.subdivided(n),
+        )?,
     };
     let mesh = mesh.flat_shaded()?;
     if mesh.degenerate() == mesh.triangles.len() {
@@ -72,7 +73,8 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
             },
         });
     }
-    let placed = Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
+    let placed =
+        Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
     let model = match fit(&mesh, 1.4)? {
         Some(fit) => fit.then(placed),
         None => placed,
@@ -104,7 +106,8 @@ fn fit(mesh: &Mesh, half: f32) -> Result<Option<Transform>> {
     if centre == Vec3::ZERO && scale == 1.0 {
         return Ok(None);
     }
-    // A mesh whose size is 0 or overflows has no fit (the transforms take finite numbers).
+    // A mesh whose size is 0 or overflows has no fit (the transforms take finite
+    // numbers).
     for (param, value) in [
         ("dx", centre.x),
         ("dy", centre.y),

@@ -62,8 +62,8 @@ impl SceneName {
     }
 }
 
-/// A pinhole camera at `eye` looking along `direction` (up +Y), its screen at distance 1
-/// spanning `half_height` above and below the centre, width by the aspect ratio.
+/// A pinhole camera at `eye` looking along `direction` (up +Y), its screen at distance
+/// 1 spanning `half_height` above and below the centre, width by the aspect ratio.
 pub fn look_camera(
     width: u32,
     height: u32,
@@ -163,7 +163,8 @@ pub fn cornell_teapot(width: u32, height: u32) -> Result<Staged> {
     let teapot = Mesh::from_obj(asset_path(Path::new(TEAPOT_OBJ)))?.mesh;
     // The teapot's y starts at 0, so it stands on the floor (y = 0); seven times its
     // size is about as wide as the ball was.
-    let placed = Transform::scale(7.0, 7.0, 7.0).then(Transform::translation(30.0, 0.0, 50.0));
+    let placed =
+        Transform::scale(7.0, 7.0, 7.0).then(Transform::translation(30.0, 0.0, 50.0));
     let mut world = teapot;
     for p in &mut world.positions {
         *p = placed.point(*p);
@@ -212,12 +213,12 @@ pub fn grey_furnace(width: u32, height: u32, centre: Vec3) -> Result<Staged> {
 /// on the right: Veach's (1997, fig. 9.2) lesson with a Lambertian floor.
 ///
 /// Direct light only: the standard deviation of one sample under each light, per
-/// estimator, is measured by `tests/lessons/lesson_10_path_tracing.rs` (`two_lights_sigmas`
-/// snapshot). Cosine sampling fails under the small hot light; under the large one
-/// cosine and area sampling are both poor (area sampling's points on the sphere seen
-/// at wide angles); MIS keeps area sampling's sigma under the small light and beats
-/// both under the large one; and cone sampling of the spheres leaves MIS little to
-/// add on a Lambertian floor.
+/// estimator, is measured by `tests/lessons/lesson_10_path_tracing.rs`
+/// (`two_lights_sigmas` snapshot). Cosine sampling fails under the small hot light;
+/// under the large one cosine and area sampling are both poor (area sampling's points
+/// on the sphere seen at wide angles); MIS keeps area sampling's sigma under the small
+/// light and beats both under the large one; and cone sampling of the spheres leaves
+/// MIS little to add on a Lambertian floor.
 pub fn two_lights(width: u32, height: u32) -> Result<Staged> {
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     let small = Sphere::new(Vec3::new(-1.5, 1.0, 0.0), 0.05)?;

@@ -57,10 +57,10 @@ pub fn still_life(shift: Vec3) -> Result<Scene> {
 // ANCHOR_END: scene
 
 // ANCHOR: cameras
-/// The still life's two cameras (lesson 08), `width` x `height` pixels, moved by `shift` with the
-/// scene: orthographic and pinhole at the same place, looking at the same point.
-/// The pinhole's screen sits at the distance of that point, so both frame the same
-/// rectangle there.
+/// The still life's two cameras (lesson 08), `width` x `height` pixels, moved by
+/// `shift` with the scene: orthographic and pinhole at the same place, looking at the
+/// same point. The pinhole's screen sits at the distance of that point, so both frame
+/// the same rectangle there.
 pub fn still_life_cameras(width: u32, height: u32, shift: Vec3) -> Result<[Camera; 2]> {
     let eye = Vec3::new(0.0, 3.0, 9.0) + shift;
     let target = Vec3::new(0.0, 0.8, 0.0) + shift;

@@ -89,7 +89,8 @@ impl Aabb {
     pub fn around(points: impl IntoIterator<Item = Vec3>) -> Option<Aabb> {
         let mut points = points.into_iter();
         let first = points.next()?;
-        let (min, max) = points.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p)));
+        let (min, max) =
+            points.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p)));
         Aabb::new(min, max).ok()
     }
 
@@ -137,7 +138,8 @@ impl Aabb {
     /// +inf (an exit), so the axis on whose boundary the ray runs constrains nothing,
     /// for either sign, as the closed box requires.
     pub fn slab(&self, ray: &Ray, range: Interval) -> Option<ClosedSpan> {
-        let s = self.span(ray.origin(), ray.direction().recip(), range, Exits::Exact)?;
+        let s =
+            self.span(ray.origin(), ray.direction().recip(), range, Exits::Exact)?;
         Some(ClosedSpan { t0: s.t0, t1: s.t1 })
     }
     // ANCHOR_END: slab
@@ -168,11 +170,17 @@ impl Aabb {
 
     // ANCHOR: span
     /// The slab loop shared by both tests, for a ray from `o` with 1/d = `inv_d`;
-    /// `exits` says whether each axis' t_far is moved out. `t0` only grows and `t1` only shrinks, so
-    /// one check after the three axes rejects what a check after each would: the
-    /// loop runs without a branch that the CPU could mispredict.
+    /// `exits` says whether each axis' t_far is moved out. `t0` only grows and `t1`
+    /// only shrinks, so one check after the three axes rejects what a check after each
+    /// would: the loop runs without a branch that the CPU could mispredict.
     #[inline]
-    fn span(&self, o: Vec3, inv_d: Vec3, range: Interval, exits: Exits) -> Option<Span> {
+    fn span(
+        &self,
+        o: Vec3,
+        inv_d: Vec3,
+        range: Interval,
+        exits: Exits,
+    ) -> Option<Span> {
         let mut s = Span {
             t0: range.min,
             axis0: 0,
@@ -180,7 +188,8 @@ impl Aabb {
             axis1: 0,
         };
         for i in 0..3 {
-            let (t_near, t_far) = slab_ends(self.min[i] - o[i], self.max[i] - o[i], inv_d[i]);
+            let (t_near, t_far) =
+                slab_ends(self.min[i] - o[i], self.max[i] - o[i], inv_d[i]);
             let t_far = match exits {
                 Exits::Exact => t_far,
                 Exits::MovedOut => moved_out(t_far),
@@ -214,9 +223,10 @@ impl Aabb {
         }
     }
 
-    /// The hit record of `face`: its normal, and the point snapped onto the face. Along the face's axis the point
-    /// is the face's own coordinate, exact: its error there is 0. Along the face it
-    /// carries o + t d's rounding, which an offset along the normal never needs.
+    /// The hit record of `face`: its normal, and the point snapped onto the face. Along
+    /// the face's axis the point is the face's own coordinate, exact: its error there
+    /// is 0. Along the face it carries o + t d's rounding, which an offset along the
+    /// normal never needs.
     pub fn hit_at(&self, ray: &Ray, face: FaceHit) -> Hit {
         let FaceHit { t, axis, outward } = face;
         let mut normal = Vec3::ZERO;

@@ -46,7 +46,9 @@ impl Shapes {
             (Shapes::Planes(v), Shape::Plane(p)) => v.push(*p),
             (Shapes::Boxes(v), Shape::Aabb(b)) => v.push(*b),
             (Shapes::Triangles(v), Shape::Triangle(t)) => v.push(*t),
-            (Shapes::Others(v), shape) if Shapes::of(shape).is_none() => v.push(shape.clone()),
+            (Shapes::Others(v), shape) if Shapes::of(shape).is_none() => {
+                v.push(shape.clone())
+            }
             _ => return Some(shape),
         }
         None
@@ -92,7 +94,11 @@ impl ShapesByKind {
     /// tie, the shape listed first. The same answer as asking every shape of the
     /// list for its [`Shape::candidate`] in turn.
     #[inline]
-    pub fn closest(&self, ray: &PreparedRay, range: Interval) -> Option<(Candidate, usize)> {
+    pub fn closest(
+        &self,
+        ray: &PreparedRay,
+        range: Interval,
+    ) -> Option<(Candidate, usize)> {
         let mut best = None;
         self.search(ray, range, |candidate, i| best = Some((candidate, i)));
         best
@@ -112,7 +118,12 @@ impl ShapesByKind {
     /// sees each candidate closer than all before it, with its list index; the last
     /// one is the closest.
     #[inline(always)]
-    fn search(&self, ray: &PreparedRay, range: Interval, mut found: impl FnMut(Candidate, usize)) {
+    fn search(
+        &self,
+        ray: &PreparedRay,
+        range: Interval,
+        mut found: impl FnMut(Candidate, usize),
+    ) {
         let mut range = range;
         for run in &self.runs {
             let (first, found) = (run.first, &mut found);

@@ -73,7 +73,8 @@ impl Instance {
         let b = self.shape.bounds()?;
         let (lo, hi) = (b.min(), b.max());
         let corners = (0..8).map(|i| {
-            let pick = |bit: u32, axis: usize| if i & bit == 0 { lo[axis] } else { hi[axis] };
+            let pick =
+                |bit: u32, axis: usize| if i & bit == 0 { lo[axis] } else { hi[axis] };
             self.to_world
                 .point(Vec3::new(pick(1, 0), pick(2, 1), pick(4, 2)))
         });
@@ -106,7 +107,10 @@ impl Instance {
         let direction = self.to_object.vector(ray.direction());
         let stretch = direction.length();
         let unit = direction.normalize_or_zero();
-        if !origin.is_finite() || unit == Vec3::ZERO || !(stretch.is_finite() && stretch > 0.0) {
+        if !origin.is_finite()
+            || unit == Vec3::ZERO
+            || !(stretch.is_finite() && stretch > 0.0)
+        {
             return None;
         }
         let object_ray = Ray::from_checked(origin, unit);
@@ -141,7 +145,8 @@ impl Instance {
         let abs = |m: Mat4| (Mat3::from_mat4(m.abs()), m.w_axis.truncate().abs());
         let (m, t) = abs(self.to_world.matrix());
         let (inverse, inverse_t) = abs(self.to_object.matrix());
-        let forward = gamma(3) * (m * local.abs() + t) + (1.0 + gamma(3)) * (m * local_error);
+        let forward =
+            gamma(3) * (m * local.abs() + t) + (1.0 + gamma(3)) * (m * local_error);
         let back = m * (gamma(3) * (inverse * world.abs() + inverse_t));
         forward + back
     }
@@ -154,7 +159,10 @@ impl Instance {
         let direction = self.to_object.vector(ray.direction());
         let stretch = direction.length();
         let unit = direction.normalize_or_zero();
-        if !origin.is_finite() || unit == Vec3::ZERO || !(stretch.is_finite() && stretch > 0.0) {
+        if !origin.is_finite()
+            || unit == Vec3::ZERO
+            || !(stretch.is_finite() && stretch > 0.0)
+        {
             return Crossings::NONE;
         }
         let object_ray = Ray::from_checked(origin, unit);

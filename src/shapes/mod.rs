@@ -60,7 +60,13 @@ pub struct Hit {
 impl Hit {
     /// A hit at `t` and `point` with outward unit `normal` and the point's rounding
     /// `error`; `front_face` follows from the sign of d . n.
-    pub(crate) fn new(ray: &Ray, t: f32, point: Vec3, normal: Vec3, error: Vec3) -> Hit {
+    pub(crate) fn new(
+        ray: &Ray,
+        t: f32,
+        point: Vec3,
+        normal: Vec3,
+        error: Vec3,
+    ) -> Hit {
         Hit {
             t,
             point,

@@ -38,10 +38,10 @@ impl Quadric {
     ///
     /// Rejects, naming `Q`: a non-finite entry ([`Problem::NotFinite`]); an asymmetry
     /// max |Q_ij - Q_ji| above [`SYMMETRY_TOLERANCE`] times max |Q_ij| (reported as
-    /// [`Problem::NotSymmetric`] with that relative asymmetry as its `error`); and a matrix whose
-    /// quadratic part (upper-left 3x3) and linear part (Q_i3, i < 3) are both zero
-    /// ([`Problem::ZeroLength`]): x^T Q x is then the constant Q_33, and its zero set
-    /// is empty or all of space. That includes Q = 0.
+    /// [`Problem::NotSymmetric`] with that relative asymmetry as its `error`); and a
+    /// matrix whose quadratic part (upper-left 3x3) and linear part (Q_i3, i < 3) are
+    /// both zero ([`Problem::ZeroLength`]): x^T Q x is then the constant Q_33, and its
+    /// zero set is empty or all of space. That includes Q = 0.
     pub fn new(q: Mat4) -> Result<Quadric> {
         if !q.is_finite() {
             return Err(Error::Value {
@@ -85,7 +85,9 @@ impl Quadric {
     /// Each radius must be finite and positive, and so must 1/r^2 (no overflow or
     /// underflow); errors name `radii`.
     pub fn ellipsoid(radii: Vec3) -> Result<Quadric> {
-        let inv = |r: f32| -> Result<f32> { positive("radii", 1.0 / (positive("radii", r)? * r)) };
+        let inv = |r: f32| -> Result<f32> {
+            positive("radii", 1.0 / (positive("radii", r)? * r))
+        };
         let (ix, iy, iz) = (inv(radii.x)?, inv(radii.y)?, inv(radii.z)?);
         Quadric::new(Mat4::from_diagonal(Vec4::new(ix, iy, iz, -1.0)))
     }
@@ -113,8 +115,9 @@ impl Quadric {
     /// The infinite circular cylinder of radius `radius` about the line through the
     /// origin along `axis` (normalised here to a): the points whose distance from the
     /// axis, |x|^2 - (a.x)^2, squared, is r^2. So Q's upper-left 3x3 block is
-    /// I - a a^T and Q_33 = -r^2; `cylinder_along(Vec3::Z, r)` is [`Quadric::cylinder`].
-    /// A cylinder elsewhere is an [`crate::shapes::Instance`] of this one, translated.
+    /// I - a a^T and Q_33 = -r^2; `cylinder_along(Vec3::Z, r)` is
+    /// [`Quadric::cylinder`]. A cylinder elsewhere is an [`crate::shapes::Instance`] of
+    /// this one, translated.
     ///
     /// The Ray Tracer Challenge's cylinder (ch. 13) is `cylinder_along(Vec3::Y, 1.0)`,
     /// without its caps. Errors name `axis` (zero or not finite) and `radius`.
@@ -127,7 +130,8 @@ impl Quadric {
     /// The infinite double cone about the line through the origin along `axis`
     /// (normalised to a), apex at the origin, radius `slope` times the height along a:
     /// |x|^2 - (a.x)^2 = k^2 (a.x)^2 with k the slope, so Q's upper-left block is
-    /// I - a a^T - k^2 a a^T and Q_33 = 0; `cone_along(Vec3::Z, k)` is [`Quadric::cone`].
+    /// I - a a^T - k^2 a a^T and Q_33 = 0; `cone_along(Vec3::Z, k)` is
+    /// [`Quadric::cone`].
     ///
     /// The Ray Tracer Challenge's cone (ch. 13) is `cone_along(Vec3::Y, 1.0)`, without
     /// its caps. Errors name `axis` and `slope`.

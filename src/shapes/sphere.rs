@@ -54,9 +54,9 @@ impl Sphere {
     /// ([`quadratic::textbook`]).
     ///
     /// For a small sphere far away b^2 and 4ac are both about 4 D^2 and their
-    /// difference, of order r^2, is lost to rounding: in f32 the roots' error grows with
-    /// D/r, and from a few thousand radii on hit/miss answers go wrong, about half of
-    /// them at D/r = 1e4 (STABILITY S1; lesson 11's chart 1 measures where). Kept to
+    /// difference, of order r^2, is lost to rounding: in f32 the roots' error grows
+    /// with D/r, and from a few thousand radii on hit/miss answers go wrong, about half
+    /// of them at D/r = 1e4 (STABILITY S1; lesson 11's chart 1 measures where). Kept to
     /// show that failure.
     pub fn roots_textbook(&self, ray: &Ray) -> Crossings {
         let f = ray.origin() - self.centre;
@@ -71,8 +71,8 @@ impl Sphere {
     // ANCHOR: roots_stable
     /// Both roots, ascending, computed so that neither cancels.
     ///
-    /// Discriminant (Hearn-Baker form, Ray Tracing Gems ch. 7): with l = f - (f.d / a) d,
-    /// the vector from the centre to the point of the line nearest it,
+    /// Discriminant (Hearn-Baker form, Ray Tracing Gems ch. 7): with l = f - (f.d / a)
+    /// d, the vector from the centre to the point of the line nearest it,
     /// b^2 - 4ac = 4a (r^2 - |l|^2); for a unit d this is 4 (r^2 - |f - (f.d) d|^2).
     /// Roots: [`quadratic::stable`], q = -(b + sign(b) sqrt(disc)) / 2, then t = c/q
     /// and q/a; no root subtracts nearly equal numbers.
@@ -114,7 +114,8 @@ impl Sphere {
             return Hit::new(ray, t, point, -ray.direction(), on_ray_error(ray, t));
         }
         let (point, error) = self.surface_point(local / length);
-        let normal = ((point - self.centre) / self.radius).normalize_or(-ray.direction());
+        let normal =
+            ((point - self.centre) / self.radius).normalize_or(-ray.direction());
         Hit::new(ray, t, point, normal, error)
     }
 

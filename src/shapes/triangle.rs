@@ -127,9 +127,14 @@ impl Triangle {
     ///
     /// Returns the crossing for a hit with `t` in `range`.
     #[inline]
-    pub fn watertight_prepared(&self, ray: &PreparedRay, range: Interval) -> Option<Barycentric> {
+    pub fn watertight_prepared(
+        &self,
+        ray: &PreparedRay,
+        range: Interval,
+    ) -> Option<Barycentric> {
         let (o, shear) = (ray.ray().origin(), ray.shear);
-        let [p0, p1, p2] = [self.v0, self.v1, self.v2].map(|v| sheared(ray.permute(v - o), shear));
+        let [p0, p1, p2] =
+            [self.v0, self.v1, self.v2].map(|v| sheared(ray.permute(v - o), shear));
         let mut e = [edge(p1, p2), edge(p2, p0), edge(p0, p1)];
         if e.contains(&0.0) {
             e = [edge_f64(p1, p2), edge_f64(p2, p0), edge_f64(p0, p1)];
@@ -160,8 +165,8 @@ impl Triangle {
     /// its barycentric coordinates `b`.
     ///
     /// The point is b0 v0 + b1 v1 + b2 v2, not o + t d: far from the origin the
-    /// barycentric point stays on the triangle's plane, o + t d does not (STABILITY S7).
-    /// Its error bound is gamma(7) (|b0 v0| + |b1 v1| + |b2 v2|) per coordinate.
+    /// barycentric point stays on the triangle's plane, o + t d does not (STABILITY
+    /// S7). Its error bound is gamma(7) (|b0 v0| + |b1 v1| + |b2 v2|) per coordinate.
     pub fn hit_at(&self, ray: &Ray, crossing: Barycentric) -> Hit {
         let (t, b) = (crossing.t, crossing.b);
         let [w0, w1, w2] = [b[0] * self.v0, b[1] * self.v1, b[2] * self.v2];
@@ -217,7 +222,8 @@ fn surely_outside(t_scaled: f32, det: f32, range: Interval) -> bool {
 /// cannot be told from 0: a ray leaving the triangle's own plane would find the
 /// triangle again just past its origin.
 fn t_error(p: [Vec3; 3], z: [f32; 3], e: [f32; 3], inv_det: f32) -> f32 {
-    let largest = |f: fn(&Vec3) -> f32| p.iter().map(|v| f(v).abs()).fold(0.0, f32::max);
+    let largest =
+        |f: fn(&Vec3) -> f32| p.iter().map(|v| f(v).abs()).fold(0.0, f32::max);
     let (max_x, max_y) = (largest(|v| v.x), largest(|v| v.y));
     let max_z = z.iter().fold(0.0f32, |m, z| m.max(z.abs()));
     let max_e = e.iter().fold(0.0f32, |m, e| m.max(e.abs()));

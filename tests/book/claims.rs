@@ -114,7 +114,8 @@ fn check_paragraph(
 #[test]
 fn every_quantified_claim_names_its_test() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let summary = fs::read_to_string(root.join("chapters/SUMMARY.md")).expect("SUMMARY.md");
+    let summary =
+        fs::read_to_string(root.join("chapters/SUMMARY.md")).expect("SUMMARY.md");
     let pages: Vec<&str> = summary
         .split("](")
         .skip(1)
@@ -132,7 +133,8 @@ fn every_quantified_claim_names_its_test() {
     }
     let mut problems = Vec::new();
     for page in pages {
-        let text = fs::read_to_string(root.join("chapters").join(page)).expect("chapter");
+        let text =
+            fs::read_to_string(root.join("chapters").join(page)).expect("chapter");
         problems.extend(check_page(page, &text, &read, &all_tests));
     }
     assert!(
@@ -168,7 +170,8 @@ fn broken_test_paths(text: &str, read: &dyn Fn(&str) -> Option<String>) -> Vec<S
             None => (reference.split(':').next().unwrap_or(reference), None),
         };
         let reference = if name.is_some() { reference } else { file };
-        if !(file.ends_with(".rs") || file.ends_with(".snap")) || file.starts_with("tests/browser/")
+        if !(file.ends_with(".rs") || file.ends_with(".snap"))
+            || file.starts_with("tests/browser/")
         {
             continue;
         }
@@ -187,7 +190,8 @@ fn broken_test_paths(text: &str, read: &dyn Fn(&str) -> Option<String>) -> Vec<S
 fn every_test_the_book_names_by_path_exists() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let read = |file: &str| fs::read_to_string(root.join(file)).ok();
-    let mut pages: Vec<String> = ["README.md", "BENCHMARKS.md"].map(String::from).to_vec();
+    let mut pages: Vec<String> =
+        ["README.md", "BENCHMARKS.md"].map(String::from).to_vec();
     for entry in fs::read_dir(root.join("chapters"))
         .expect("chapters/")
         .flatten()
@@ -215,7 +219,8 @@ fn every_test_the_book_names_by_path_exists() {
 
 #[test]
 fn the_path_checker_can_fail() {
-    let read = |file: &str| (file == "tests/a/b.rs").then(|| "fn it_holds() {}".to_string());
+    let read =
+        |file: &str| (file == "tests/a/b.rs").then(|| "fn it_holds() {}".to_string());
     let check = |text: &str| broken_test_paths(text, &read);
     assert!(check("In `tests/a/b.rs`: `it_holds`.").is_empty());
     assert!(check("<!-- checked: tests/a/b.rs::it_holds -->").is_empty());
@@ -238,8 +243,10 @@ fn the_claim_checker_can_fail() {
     let check = |text: &str| check_page("p.md", text, &read, tests);
     // Checked by a marker, by a named test, or no quantifier at all: fine.
     assert!(
-        check("Zero at every distance.\n<!-- checked: tests/x.rs::holds_everywhere -->\n")
-            .is_empty()
+        check(
+            "Zero at every distance.\n<!-- checked: tests/x.rs::holds_everywhere -->\n"
+        )
+        .is_empty()
     );
     assert!(check("- `holds_everywhere`: zero at every distance.\n").is_empty());
     assert!(check("Zero at the distances measured.\n").is_empty());
@@ -248,7 +255,8 @@ fn the_claim_checker_can_fail() {
     let found = check("First.\n\nThe tree is faster at every size.\n");
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].starts_with("p.md:3: `every size`"), "{found:?}");
-    let found = check("Equal to the bit.\n<!-- checked: tests/x.rs::no_such_test -->\n");
+    let found =
+        check("Equal to the bit.\n<!-- checked: tests/x.rs::no_such_test -->\n");
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].contains("does not exist"), "{found:?}");
 }
@@ -269,7 +277,10 @@ fn stamp(fragment: &str) -> Option<String> {
 
 /// The stamp an include shows: the one inside its anchor, or, for a fragment of
 /// `chapters/figures/` (each written by one run), the file's.
-fn included_stamp(args: &str, fragment: &dyn Fn(&str) -> Option<String>) -> Option<String> {
+fn included_stamp(
+    args: &str,
+    fragment: &dyn Fn(&str) -> Option<String>,
+) -> Option<String> {
     let (path, anchor) = args.split_once(':').unwrap_or((args, ""));
     let text = fragment(path)?;
     let begin = format!("ANCHOR: {anchor}");
@@ -288,7 +299,11 @@ fn included_stamp(args: &str, fragment: &dyn Fn(&str) -> Option<String>) -> Opti
 /// from one run (or the same run) must include, in its section (from it to the end
 /// of the page if it says "below"), only fragments stamped by one run. `fragment`
 /// reads an included file by its path relative to `chapters/`.
-fn check_runs(page: &str, text: &str, fragment: &dyn Fn(&str) -> Option<String>) -> Vec<String> {
+fn check_runs(
+    page: &str,
+    text: &str,
+    fragment: &dyn Fn(&str) -> Option<String>,
+) -> Vec<String> {
     let sections: Vec<&str> = text.split("\n## ").collect();
     let mut problems = Vec::new();
     for (s, section) in sections.iter().enumerate() {
@@ -356,16 +371,13 @@ fn the_run_checker_can_fail() {
         "figures/c.md" => Some(stamped("1.0")),
         _ => None,
     };
-    let one =
-        "## S\n\nFrom one run:\n\n{{#include figures/a.md:t}}\n\n{{#include figures/c.md:t}}\n";
+    let one = "## S\n\nFrom one run:\n\n{{#include figures/a.md:t}}\n\n{{#include figures/c.md:t}}\n";
     assert!(check_runs("p.md", one, &fragment).is_empty());
-    let two =
-        "## S\n\nFrom one run:\n\n{{#include figures/a.md:t}}\n\n{{#include figures/b.md:t}}\n";
+    let two = "## S\n\nFrom one run:\n\n{{#include figures/a.md:t}}\n\n{{#include figures/b.md:t}}\n";
     assert_eq!(check_runs("p.md", two, &fragment).len(), 1);
     // "below" reaches past the section's end; without it, the next section is apart.
     let below = "## S\n\nThe tables below come from one run.\n\n## T\n\n{{#include figures/a.md:t}}\n{{#include figures/b.md:t}}\n";
     assert_eq!(check_runs("p.md", below, &fragment).len(), 1);
-    let apart =
-        "## S\n\nOne run.\n\n## T\n\n{{#include figures/a.md:t}}\n{{#include figures/b.md:t}}\n";
+    let apart = "## S\n\nOne run.\n\n## T\n\n{{#include figures/a.md:t}}\n{{#include figures/b.md:t}}\n";
     assert!(check_runs("p.md", apart, &fragment).is_empty());
 }

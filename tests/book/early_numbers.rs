@@ -113,7 +113,8 @@ fn chapters_03_to_06_say_what_their_table_headers_said() {
 fn chapter_08_quotes_its_coverage_table() {
     let table = snapshot_body("lessons::lesson_08_ray_casting", "numbers");
     assert!(table.starts_with("Shadowless ray casting, 480 x 270 pixels"));
-    let count = |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
+    let count =
+        |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
     for column in [1, 2] {
         let rows = STILL_LIFE_OBJECTS.iter().chain(&["background"]);
         let total: u32 = rows.map(|n| count(n, column)).sum();
@@ -189,7 +190,8 @@ fn chapter_08_quotes_its_pixel_and_acne_tables() {
 #[test]
 fn chapter_09_quotes_its_comparison_table() {
     let table = snapshot_body("lessons::lesson_09_rasterization", "numbers");
-    let number = |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
+    let number =
+        |name: &str, column: usize| cell(&table, name, column).parse::<u32>().unwrap();
     // The counts of step "the numbers" and of the speed paragraph.
     assert_eq!(
         (number("red sphere", 1), number("red sphere", 2)),
@@ -250,11 +252,13 @@ fn chapter_09_quotes_its_comparison_table() {
         "09_5_shadow_map.md",
         "With the bias of one texel footprint, 99.83 % of the compared pixels agree",
     );
-    assert!(flat(&read("README.md")).contains("(99.9 % of pixels agree away from silhouettes)"));
     assert!(
-        line_starting(&table, "Against the ray caster")
-            .starts_with("Against the ray caster, 480 x 270 pixels, away from silhouettes")
+        flat(&read("README.md"))
+            .contains("(99.9 % of pixels agree away from silhouettes)")
     );
+    assert!(line_starting(&table, "Against the ray caster").starts_with(
+        "Against the ray caster, 480 x 270 pixels, away from silhouettes"
+    ));
     assert_says(
         "09_6_against_ray_casting.md",
         "at $480\\times 270$ pixels, away from silhouettes; a pixel counts as different when one \
@@ -347,7 +351,12 @@ fn snapshot_tables_in_the_early_chapters_fit_the_page() {
                 .map_or(lines.len(), |s| s.parse::<usize>().unwrap());
             for (i, l) in lines[start - 1..end].iter().enumerate() {
                 if l.chars().count() > PAGE_CHARS {
-                    wide.push((page.clone(), file.to_string(), start + i, l.chars().count()));
+                    wide.push((
+                        page.clone(),
+                        file.to_string(),
+                        start + i,
+                        l.chars().count(),
+                    ));
                 }
             }
         }
@@ -355,7 +364,9 @@ fn snapshot_tables_in_the_early_chapters_fit_the_page() {
     let unexpected: Vec<String> = wide
         .iter()
         .filter(|(_, file, line, _)| !TOO_WIDE_TITLES.contains(&(file.as_str(), *line)))
-        .map(|(page, file, line, n)| format!("{page}: {file} line {line} has {n} characters"))
+        .map(|(page, file, line, n)| {
+            format!("{page}: {file} line {line} has {n} characters")
+        })
         .collect();
     assert!(
         unexpected.is_empty(),

@@ -6,14 +6,16 @@
 //! * every relative image (`![..](path)`, `<img src="path">`) exists;
 //! * no ```` ```rust ```` block holds pasted code: only include lines are
 //!   allowed, so every line of Rust in the book is compiled and tested;
-//! * every real (non-draft) chapter listed in `SUMMARY.md` exists.
+//! * every real (non-draft) chapter listed in `SUMMARY.md` exists;
+//! * every line included into a code block fits the book's code column,
+//!   [`CODE_COLUMN`] characters, so no listing is cut at the right edge.
 //!
 //! All problems are collected and reported together, as `file:line: message`.
 //! Standard library only.
 
 use crate::markdown::{
-    Selector, directives, fence, has_marker, image_targets, is_remote_or_absolute, is_rust_info,
-    parse_include, snapshot_body_start, strip_fragment,
+    Selector, directives, fence, has_marker, image_targets, is_remote_or_absolute,
+    is_rust_info, parse_include, snapshot_body_start, strip_fragment,
 };
 
 use std::collections::HashMap;
@@ -80,11 +82,20 @@ impl fmt::Display for Problem {
     }
 }
 
+/// How many characters of a code block the book's column shows without scrolling
+/// (measured in Chromium at 1280 px: about 88). `rustfmt.toml` lays code out to it.
+const CODE_COLUMN: usize = 88;
+
 const INCLUDE_DIRECTIVES: [&str; 3] = ["include", "rustdoc_include", "playground"];
 
 /// Check one Markdown file. `path` is used for resolving relative paths and
 /// for reporting; `text` is its content.
-fn check_markdown(files: &dyn Files, path: &Path, text: &str, problems: &mut Vec<Problem>) {
+fn check_markdown(
+    files: &dyn Files,
+    path: &Path,
+    text: &str,
+    problems: &mut Vec<Problem>,
+) {
     let dir = path.parent().unwrap_or(Path::new(""));
     let mut report = |line: usize, message: String| {
         problems.push(Problem {
@@ -138,6 +149,23 @@ fn check_markdown(files: &dyn Files, path: &Path, text: &str, problems: &mut Vec
                 );
                 continue;
             };
+            if open.is_some() {
+                for shown in shown_lines(&content, &selector) {
+                    let width = shown.chars().count();
+                    if width > CODE_COLUMN {
+                        report(
+                            lineno,
+                            format!(
+                                "{{{{#{} {}}}}}: a line of {width} characters, wider \
+                                 than the code column ({CODE_COLUMN}): `{}`",
+                                d.name,
+                                d.args,
+                                shown.trim()
+                            ),
+                        );
+                    }
+                }
+            }
             match selector {
                 Selector::All => {}
                 Selector::Anchor(name) => {
@@ -159,9 +187,9 @@ fn check_markdown(files: &dyn Files, path: &Path, text: &str, problems: &mut Vec
                     let count = content.lines().count();
                     let first = start.unwrap_or(1);
                     let last = end.unwrap_or(count);
-                    // An insta snapshot starts with a `---` ... `---` header; an include
-                    // of one must start on the first line after it, so the book shows
-                    // exactly the pinned numbers and none of the metadata.
+                    // An insta snapshot starts with a `---` ... `---` header; an
+                    // include of one must start on the first line after it, so the book
+                    // shows exactly the pinned numbers and none of the metadata.
                     let is_snapshot = target.extension().is_some_and(|e| e == "snap");
                     let body = snapshot_body_start(&content);
                     if is_snapshot && start != Some(body) {
@@ -217,7 +245,10 @@ fn check_markdown(files: &dyn Files, path: &Path, text: &str, problems: &mut Vec
                     if !files.exists(&file) {
                         report(
                             lineno,
-                            format!("image `{target}` not found (`{}`)", file.display()),
+                            format!(
+                                "image `{target}` not found (`{}`)",
+                                file.display()
+                            ),
                         );
                     }
                 }
@@ -230,7 +261,12 @@ fn check_markdown(files: &dyn Files, path: &Path, text: &str, problems: &mut Vec
 }
 
 /// Check that every non-draft chapter in SUMMARY.md exists.
-fn check_summary(files: &dyn Files, summary: &Path, text: &str, problems: &mut Vec<Problem>) {
+fn check_summary(
+    files: &dyn Files,
+    summary: &Path,
+    text: &str,
+    problems: &mut Vec<Problem>,
+) {
     let dir = summary.parent().unwrap_or(Path::new(""));
     for (index, line) in text.lines().enumerate() {
         let mut rest = line;
@@ -245,7 +281,10 @@ fn check_summary(files: &dyn Files, summary: &Path, text: &str, problems: &mut V
                     problems.push(Problem {
                         file: summary.to_path_buf(),
                         line: index + 1,
-                        message: format!("chapter `{target}` not found (`{}`)", file.display()),
+                        message: format!(
+                            "chapter `{target}` not found (`{}`)",
+                            file.display()
+                        ),
                     });
                 }
             }
@@ -404,4 +443,36 @@ fn pasted() {}
     assert!(problems[5].message.contains("nope.rs"));
     assert!(problems[2].message.contains("ANCHOR_END: half"));
     assert!(problems[3].message.contains("fn pasted"));
+}
+
+/// The lines an include shows, as mdBook selects them: a whole file, the lines
+/// between `ANCHOR: name` and `ANCHOR_END: name` without any anchor line, or a line
+/// range.
+fn shown_lines<'a>(content: &'a str, selector: &Selector<'_>) -> Vec<&'a str> {
+    let lines = content.lines();
+    match *selector {
+        Selector::All => lines.collect(),
+        Selector::Lines { start, end } => {
+            let first = start.unwrap_or(1).max(1) - 1;
+            let last = end.unwrap_or(usize::MAX);
+            lines.skip(first).take(last.saturating_sub(first)).collect()
+        }
+        Selector::Anchor(name) => {
+            let mut inside = false;
+            let mut shown = Vec::new();
+            for line in lines {
+                if has_marker(line, "ANCHOR_END:", name) {
+                    inside = false;
+                } else if has_marker(line, "ANCHOR:", name) {
+                    inside = true;
+                } else if inside
+                    && !line.contains("ANCHOR:")
+                    && !line.contains("ANCHOR_END:")
+                {
+                    shown.push(line);
+                }
+            }
+            shown
+        }
+    }
 }

@@ -125,12 +125,14 @@ fn declared(text: &str, bindings: bool) -> BTreeSet<String> {
     for (k, (word, next)) in words.iter().enumerate() {
         let previous = k.checked_sub(1).map(|p| words[p].0.as_str());
         let before = k.checked_sub(2).map(|p| words[p].0.as_str());
-        let item = previous.is_some_and(|p| ITEMS.contains(&p) || (bindings && p == "mod"));
+        let item =
+            previous.is_some_and(|p| ITEMS.contains(&p) || (bindings && p == "mod"));
         let binding = bindings
             && (previous == Some("let")
                 || (previous == Some("mut") && before == Some("let"))
                 || *next == Some(':')
-                || (word.starts_with(char::is_uppercase) && matches!(next, Some('(' | '{' | ','))));
+                || (word.starts_with(char::is_uppercase)
+                    && matches!(next, Some('(' | '{' | ','))));
         if item || binding {
             names.insert(word.clone());
         }
@@ -245,7 +247,9 @@ fn check_caption(
     let Some((file, anchor)) = include.rsplit_once(':') else {
         return; // a whole file, or a line range: no fragment to look into
     };
-    if anchor.chars().any(|c| c.is_ascii_digit()) && !anchor.chars().any(char::is_alphabetic) {
+    if anchor.chars().any(|c| c.is_ascii_digit())
+        && !anchor.chars().any(char::is_alphabetic)
+    {
         return;
     }
     let Some(text) = read(file) else {
@@ -331,8 +335,7 @@ fn the_name_checker_can_fail() {
         Vec::<String>::new()
     );
     // A caption that names its anchor instead of the function it shows.
-    let caption =
-        "*Listing: `src/x.rs`, `traverse`*\n\n```rust\n{{#include ../src/x.rs:traverse}}\n```\n";
+    let caption = "*Listing: `src/x.rs`, `traverse`*\n\n```rust\n{{#include ../src/x.rs:traverse}}\n```\n";
     let found = check_chapter("bad.md", caption, &read, &known);
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].contains("defines no `traverse`"), "{found:?}");

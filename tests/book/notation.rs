@@ -76,14 +76,15 @@ struct Entry {
     page: String,
 }
 
-/// `- <a id="ID"></a>**TERM** (ABBREVIATION): DEFINITION *Introduced in* [TITLE](PAGE).`
+/// `- <a id="ID"></a>**TERM** (ABBREVIATION): DEFINITION *Introduced in*
+/// [TITLE](PAGE).`
 fn glossary() -> Vec<Entry> {
     let text = chapter("glossary.md");
     let mut entries = Vec::new();
     for line in text.lines().filter(|l| l.starts_with("- ")) {
-        let rest = line
-            .strip_prefix("- <a id=\"")
-            .unwrap_or_else(|| panic!("a glossary item starts with its anchor: {line}"));
+        let rest = line.strip_prefix("- <a id=\"").unwrap_or_else(|| {
+            panic!("a glossary item starts with its anchor: {line}")
+        });
         let (id, rest) = rest
             .split_once("\"></a>**")
             .expect("anchor, then the bold term");
@@ -102,7 +103,9 @@ fn glossary() -> Vec<Entry> {
         let page = link
             .split_once("](")
             .and_then(|(_, p)| p.strip_suffix(")."))
-            .unwrap_or_else(|| panic!("`{term}`: one link to a page, then a full stop"));
+            .unwrap_or_else(|| {
+                panic!("`{term}`: one link to a page, then a full stop")
+            });
         entries.push(Entry {
             id: id.to_string(),
             term: term.to_string(),
@@ -283,11 +286,9 @@ fn the_notation_table_lists_each_symbol_once() {
     assert!(intro.contains("| $\\beta$ | the path throughput"));
     assert!(intro.contains("**every index starts at 0**"));
     assert!(intro.contains("from $q_{00}$ to $q_{33}$ (lesson 07's quadrics)"));
-    assert!(
-        intro.contains(
-            "the power heuristic's exponent has no letter: it is written as the number 2"
-        )
-    );
+    assert!(intro.contains(
+        "the power heuristic's exponent has no letter: it is written as the number 2"
+    ));
 }
 
 /// Pages before lesson 10 use none of the symbols lesson 10 keeps for itself.

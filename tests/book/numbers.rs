@@ -176,21 +176,24 @@ fn stated_numbers(text: &str) -> Vec<Stated> {
             let rest = &line[i..];
             let before = line[..i].chars().next_back();
             let starts = rest.starts_with(|c: char| c.is_ascii_digit())
-                && before.is_none_or(|b| !(b.is_alphanumeric() || b == '.' || b == '_'));
+                && before
+                    .is_none_or(|b| !(b.is_alphanumeric() || b == '.' || b == '_'));
             let parsed = starts.then(|| printed(rest)).flatten();
             let Some((p, after)) = parsed else {
                 i += rest.chars().next().map_or(1, char::len_utf8);
                 continue;
             };
             let digits = &rest[..rest.len() - after.len()];
-            // "exercises 7.1 to 7.3": a naming word before a run of numbers names them all.
+            // "exercises 7.1 to 7.3": a naming word before a run of numbers names them
+            // all.
             let mut before = lower[..i].trim_end();
             while let Some(rest) = ["to", "and", "or", ","]
                 .iter()
                 .find_map(|c| before.strip_suffix(c))
             {
                 let rest = rest.trim_end();
-                let number = rest.trim_end_matches(|c: char| c.is_ascii_digit() || c == '.');
+                let number =
+                    rest.trim_end_matches(|c: char| c.is_ascii_digit() || c == '.');
                 if number.len() == rest.len() {
                     break;
                 }
@@ -200,9 +203,10 @@ fn stated_numbers(text: &str) -> Vec<Stated> {
             let named = NAMING_WORDS
                 .iter()
                 .any(|w| lower[..i].ends_with(w) || before.ends_with(w));
-            let version =
-                after.starts_with('.') && after[1..].starts_with(|c: char| c.is_ascii_digit());
-            let percent = after.trim_start().starts_with('%') || after.starts_with("\\%");
+            let version = after.starts_with('.')
+                && after[1..].starts_with(|c: char| c.is_ascii_digit());
+            let percent =
+                after.trim_start().starts_with('%') || after.starts_with("\\%");
             let scientific = digits.contains('e') || digits.contains("10^");
             if !named && !version && is_a_result(digits, percent, scientific) {
                 out.push(Stated {
@@ -327,19 +331,26 @@ fn every_number_the_book_states_comes_from_a_source() {
 #[test]
 fn the_stated_number_checker_reads_prose_and_can_fail() {
     // What counts as a stated result.
-    let found =
-        |text: &str| -> Vec<String> { stated_numbers(text).into_iter().map(|s| s.text).collect() };
+    let found = |text: &str| -> Vec<String> {
+        stated_numbers(text).into_iter().map(|s| s.text).collect()
+    };
     assert_eq!(
-        found("A sphere at $t = 2.134$, 28 % of 16 384 rays, $1.2\\cdot 10^{-7}$ off, 1e-4."),
+        found(
+            "A sphere at $t = 2.134$, 28 % of 16 384 rays, $1.2\\cdot 10^{-7}$ off, 1e-4."
+        ),
         vec!["2.134", "28", "16 384", "1.2\\cdot 10^{-7}", "1e-4"]
     );
     assert_eq!(
-        found("Radius 0.5, Pharr (2016), exercises 7.1 to 7.3, S13, pbrt-v4 6.8.4, `0.866`."),
+        found(
+            "Radius 0.5, Pharr (2016), exercises 7.1 to 7.3, S13, pbrt-v4 6.8.4, `0.866`."
+        ),
         Vec::<String>::new(),
         "parameters, years, names, versions and code are no stated results"
     );
     assert_eq!(
-        found("```text\n2.134\n```\n<!-- 2.134 -->\n{{#include f.md:a}} 2.134\n[link](x/2.134.md)"),
+        found(
+            "```text\n2.134\n```\n<!-- 2.134 -->\n{{#include f.md:a}} 2.134\n[link](x/2.134.md)"
+        ),
         Vec::<String>::new()
     );
     assert_eq!(found("$r^2 = 13\\,300.8$"), vec!["13 300.8"]);
@@ -354,10 +365,12 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
         "#[test]\nfn pins_it() {\n    assert_eq!(n, 16_384);\n    insta::assert_snapshot!(\"numbers\", s);\n}\nfn other() { let x = 0.0145; }\n".to_string(),
     )];
     let snapshot = |path: &str| {
-        (path == "tests/snapshots/07_x__numbers.snap").then(|| "sigma 0.101".to_string())
+        (path == "tests/snapshots/07_x__numbers.snap")
+            .then(|| "sigma 0.101".to_string())
     };
     let check = |page: &str| {
-        let sources = included_text(page, &read) + &test_sources(page, &tests, &snapshot);
+        let sources =
+            included_text(page, &read) + &test_sources(page, &tests, &snapshot);
         unsourced("p.md", page, &sources, &[])
     };
     let good = "{{#include f.md:a}}\n\nHits at $t = 2.134$ (2.13), sigma 0.101 of\n16 384 rays.\n\n\

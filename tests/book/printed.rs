@@ -70,7 +70,9 @@ pub(crate) fn printed(text: &str) -> Option<(Printed, &str)> {
         let single = close == "\u{0}";
         let end = r
             .char_indices()
-            .find(|&(k, c)| !(c.is_ascii_digit() || (k == 0 && c == '-')) || (single && k == 1))
+            .find(|&(k, c)| {
+                !(c.is_ascii_digit() || (k == 0 && c == '-')) || (single && k == 1)
+            })
             .map_or(r.len(), |(k, _)| k);
         let close = if single { "" } else { close };
         if let Ok(e) = r[..end].parse::<i32>()

@@ -213,7 +213,10 @@ pub(crate) fn source(quote: &Quote, fragment: &str) -> Result<Printed, String> {
 }
 
 /// The problems of `quotes` with the chapters and fragments that `read` returns.
-fn check_quotes(read: &dyn Fn(&str) -> Option<String>, quotes: &[Quote]) -> Vec<String> {
+fn check_quotes(
+    read: &dyn Fn(&str) -> Option<String>,
+    quotes: &[Quote],
+) -> Vec<String> {
     let mut problems = Vec::new();
     for q in quotes {
         let here = format!("{} `{}`", q.chapter, q.context);
@@ -327,7 +330,8 @@ fn the_quote_checker_reads_numbers_as_printed_and_can_fail() {
 6.3e-8
 <!-- ANCHOR_END: v -->
 ";
-    let chapter = "Leaks **12** rays (5.0 %), off by $3.8\\cdot 10^{-5}$, at most 7e-8.";
+    let chapter =
+        "Leaks **12** rays (5.0 %), off by $3.8\\cdot 10^{-5}$, at most 7e-8.";
     let read = |rel: &str| match rel {
         "ch.md" => Some(chapter.to_string()),
         "f.md" => Some(fragment.to_string()),
@@ -385,7 +389,8 @@ fn typed_times(text: &str) -> Vec<String> {
         let mut rest = joined.as_str();
         while !rest.is_empty() {
             let before_ok = joined.len() == rest.len()
-                || !joined.as_bytes()[joined.len() - rest.len() - 1].is_ascii_alphanumeric();
+                || !joined.as_bytes()[joined.len() - rest.len() - 1]
+                    .is_ascii_alphanumeric();
             if let Some((p, after)) = printed(rest).filter(|_| before_ok) {
                 let unit = ["ns", "ms", "million"].into_iter().find(|u| {
                     after.trim_start().strip_prefix(u).is_some_and(|r| {
@@ -439,9 +444,14 @@ fn lesson_11_times_are_included_never_typed() {
         problems.join("\n  ")
     );
     assert_eq!(
-        typed_times("It takes 7.1 ns, or 2.14 million rays\nper second.\n\n```\n3 ns\n```\n"),
+        typed_times(
+            "It takes 7.1 ns, or 2.14 million rays\nper second.\n\n```\n3 ns\n```\n"
+        ),
         vec!["7.1 ns", "2.14 million"]
     );
     assert!(typed_times("With `cargo bench`, 28.2 ns.").is_empty());
-    assert!(typed_times("{{#include figures/11_7_scaling.md:bvh_mrays}} million").is_empty());
+    assert!(
+        typed_times("{{#include figures/11_7_scaling.md:bvh_mrays}} million")
+            .is_empty()
+    );
 }

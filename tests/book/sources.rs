@@ -54,7 +54,9 @@ pub(crate) fn named_functions(text: &str) -> Vec<(Option<String>, String)> {
                 .next()
                 .unwrap_or(span)
                 .trim_end_matches("()");
-            if !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+            if !name.is_empty()
+                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            {
                 names.push((None, name.to_string()));
             }
         }
@@ -144,7 +146,10 @@ pub(crate) struct Included {
 }
 
 /// The includes of a page, read by `read` relative to `chapters/`.
-pub(crate) fn included(text: &str, read: &dyn Fn(&str) -> Option<String>) -> Vec<Included> {
+pub(crate) fn included(
+    text: &str,
+    read: &dyn Fn(&str) -> Option<String>,
+) -> Vec<Included> {
     let mut out = Vec::new();
     for piece in text.split("{{#include ").skip(1) {
         let args = piece.split("}}").next().unwrap_or("").trim();
@@ -191,7 +196,10 @@ pub(crate) fn included(text: &str, read: &dyn Fn(&str) -> Option<String>) -> Vec
 }
 
 /// Everything a page includes, comments and all (the self-test's shorthand).
-pub(crate) fn included_text(text: &str, read: &dyn Fn(&str) -> Option<String>) -> String {
+pub(crate) fn included_text(
+    text: &str,
+    read: &dyn Fn(&str) -> Option<String>,
+) -> String {
     included(text, read)
         .into_iter()
         .map(|i| i.code + &i.comments)

@@ -35,7 +35,11 @@ pub fn slide_camera() -> OrthoCamera {
 
 /// The crate's own closest hit (`Scene::closest`) in the shape of coding exercise
 /// 8.1, `closest(ray, shapes, range)`: the reference a student's loop is held to.
-pub fn reference_closest(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
+pub fn reference_closest(
+    ray: &Ray,
+    shapes: &[Shape],
+    range: Interval,
+) -> Option<SceneHit> {
     let objects = shapes
         .iter()
         .map(|s| Object::diffuse(s.clone(), Vec3::ONE))

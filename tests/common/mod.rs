@@ -18,6 +18,8 @@ pub mod pixels;
 pub mod random;
 
 pub use compare::{assert_close, bits, close};
-pub use fixtures::{cube, ray, reference_closest, slide_camera, slide_film, unit_sphere};
+pub use fixtures::{
+    cube, ray, reference_closest, slide_camera, slide_film, unit_sphere,
+};
 pub use pixels::{blue_pixels, red_pixels};
 pub use random::{Rng, direction};

@@ -11,7 +11,8 @@ pub fn root() -> PathBuf {
 
 /// The file at `relative` to the root; panics naming it if it cannot be read.
 pub fn read(relative: &str) -> String {
-    fs::read_to_string(root().join(relative)).unwrap_or_else(|e| panic!("{relative}: {e}"))
+    fs::read_to_string(root().join(relative))
+        .unwrap_or_else(|e| panic!("{relative}: {e}"))
 }
 
 /// A page of the book (`chapters/NAME`), as written.
@@ -59,7 +60,8 @@ pub fn first_number(phrase: &str) -> &str {
         .find(|&(i, c)| {
             c.is_ascii_digit()
                 || (is_sign(c)
-                    && phrase[i + c.len_utf8()..].starts_with(|d: char| d.is_ascii_digit()))
+                    && phrase[i + c.len_utf8()..]
+                        .starts_with(|d: char| d.is_ascii_digit()))
         })
         .map(|(i, _)| i)
         .unwrap_or_else(|| panic!("no number in {phrase:?}"));
@@ -103,7 +105,8 @@ pub fn cell(snap: &str, label: &str, column: usize) -> f64 {
 
 /// The number that follows `before` in a snapshot (up to a space or `;`).
 pub fn after(snap: &str, before: &str) -> f64 {
-    let start = snap.find(before).unwrap_or_else(|| panic!("no {before:?}")) + before.len();
+    let start =
+        snap.find(before).unwrap_or_else(|| panic!("no {before:?}")) + before.len();
     let rest = &snap[start..];
     let end = rest.find([' ', ';', '\n', ')']).unwrap_or(rest.len());
     rest[..end].parse().unwrap()

@@ -166,7 +166,8 @@ fn no_two_public_types_share_a_name() {
         let words: Vec<&str> = code.split_whitespace().collect();
         for w in words.windows(3) {
             if w[0] == "pub" && ["struct", "enum", "type", "trait"].contains(&w[1]) {
-                let name: String = w[2].chars().take_while(|c| c.is_alphanumeric()).collect();
+                let name: String =
+                    w[2].chars().take_while(|c| c.is_alphanumeric()).collect();
                 if let Some(other) = seen.insert(name.clone(), module.clone()) {
                     panic!("two public types called {name}: in {other} and {module}");
                 }

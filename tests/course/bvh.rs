@@ -16,7 +16,9 @@ use render_lessons::bvh::{Bvh, BvhScene};
 use render_lessons::mesh::Mesh;
 use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
-use render_lessons::shapes::{Aabb, Cylinder, Instance, Plane, Quadric, Shape, Sphere, Triangle};
+use render_lessons::shapes::{
+    Aabb, Cylinder, Instance, Plane, Quadric, Shape, Sphere, Triangle,
+};
 use render_lessons::transform::Transform;
 
 pub(crate) fn object(shape: Shape) -> Object {
@@ -46,7 +48,12 @@ pub(crate) fn mesh_objects(mesh: &Mesh) -> Vec<Object> {
 /// Rays from random points in a cube of half-size `spread`, half of them aimed at
 /// random points of a cube of half-size `target` (so that many hit), half in random
 /// directions.
-pub(crate) fn random_rays(rng: &mut Rng, n: usize, spread: f32, target: f32) -> Vec<Ray> {
+pub(crate) fn random_rays(
+    rng: &mut Rng,
+    n: usize,
+    spread: f32,
+    target: f32,
+) -> Vec<Ray> {
     (0..n)
         .filter_map(|k| {
             let o = rng.point(spread);
@@ -125,12 +132,15 @@ pub(crate) fn random_soup(rng: &mut Rng, n: usize) -> Vec<Object> {
                     let inner = if k % 2 == 0 {
                         Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5).unwrap())
                     } else {
-                        Shape::Aabb(Aabb::new(Vec3::splat(-0.5), Vec3::splat(0.5)).unwrap())
+                        Shape::Aabb(
+                            Aabb::new(Vec3::splat(-0.5), Vec3::splat(0.5)).unwrap(),
+                        )
                     };
-                    let m = Transform::scale(rng.range(0.2, 2.0), rng.range(0.2, 2.0), 1.0)
-                        .then(Transform::rotation_y(rng.range(0.0, 6.0)))
-                        .then(Transform::rotation_x(rng.range(0.0, 6.0)))
-                        .then(Transform::translation(c.x, c.y, c.z));
+                    let m =
+                        Transform::scale(rng.range(0.2, 2.0), rng.range(0.2, 2.0), 1.0)
+                            .then(Transform::rotation_y(rng.range(0.0, 6.0)))
+                            .then(Transform::rotation_x(rng.range(0.0, 6.0)))
+                            .then(Transform::translation(c.x, c.y, c.z));
                     Shape::Instance(Box::new(Instance::new(inner, m).unwrap()))
                 }
             };
@@ -182,7 +192,8 @@ fn a_ray_along_any_face_of_a_box_hits_in_the_tree_as_in_the_list() {
             for side in [-1.0, 1.0] {
                 let (along, across) = ((axis + 1) % 3, (axis + 2) % 3);
                 let (mut o, mut d) = (Vec3::ZERO, Vec3::ZERO);
-                (o[axis], o[along], d[axis], d[across], d[along]) = (side, -5.0, zero, zero, 1.0);
+                (o[axis], o[along], d[axis], d[across], d[along]) =
+                    (side, -5.0, zero, zero, 1.0);
                 let r = Ray::new(o, d).unwrap();
                 let list = scene.closest(&r, Interval::AHEAD).map(|f| f.hit.t);
                 let tree = bvh.closest(&r, Interval::AHEAD).map(|f| f.hit.t);
@@ -238,7 +249,10 @@ fn watertight_through_the_tree_no_leaks_at_vertices_or_edges() {
         let bvh = BvhScene::new(scene.clone());
         let edges: BTreeSet<(usize, usize)> = indices
             .iter()
-            .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+            .flat_map(|t| {
+                (0..3)
+                    .map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3])))
+            })
             .collect();
         let targets: Vec<Vec3> = vertices
             .iter()

@@ -4,7 +4,9 @@
 //! whole renders through the tree are the renders through the list (the path tracer,
 //! lesson 10's teapot, the subdivided teapot of lessons 09 and 11).
 
-use crate::bvh::{assert_same_answers, mesh_objects, object, random_rays, random_soup, scene};
+use crate::bvh::{
+    assert_same_answers, mesh_objects, object, random_rays, random_soup, scene,
+};
 use crate::common;
 use crate::common::bits;
 use crate::examples::speed_vs_accuracy as lesson11;
@@ -28,7 +30,9 @@ fn degenerate_builds() {
     // No objects: no nodes, nothing hit.
     let empty = scene(Vec::new());
     let bvh = Bvh::build(empty.objects());
-    assert!(bvh.root().is_none() && bvh.nodes().is_empty() && bvh.unbounded().is_empty());
+    assert!(
+        bvh.root().is_none() && bvh.nodes().is_empty() && bvh.unbounded().is_empty()
+    );
     assert_eq!(bvh.sah_cost(), None);
     assert_same_answers(&empty, &rays);
 
@@ -210,7 +214,10 @@ fn structural_invariants_and_sah_beats_the_median_on_100k_triangles() {
 }
 
 /// 4 samples per pixel of the default path tracer, each pixel's bits.
-fn path_traced(scene: &impl Intersect, camera: &render_lessons::camera::Camera) -> Vec<Vec<u32>> {
+fn path_traced(
+    scene: &impl Intersect,
+    camera: &render_lessons::camera::Camera,
+) -> Vec<Vec<u32>> {
     use render_lessons::pathtrace::{Accumulator, PixelSampling, Settings};
     let settings = Settings::default();
     let image = Accumulator::new(camera, 7)

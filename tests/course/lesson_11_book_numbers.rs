@@ -12,7 +12,8 @@
 //!   (`cargo test --release --test course -- --ignored`).
 //!
 //! To refresh the fragments (and the charts):
-//! `cargo run --release --example 11_speed_vs_accuracy -- --full --out chapters/figures`.
+//!
+//!     cargo run --release --example 11_speed_vs_accuracy -- --full --out chapters/figures
 
 use std::path::{Path, PathBuf};
 
@@ -23,8 +24,7 @@ use render_lessons::course::report::{BookNumbers, Quoted, Run, anchored};
 
 use crate::examples::speed_vs_accuracy as lesson11;
 
-const REFRESH: &str =
-    "cargo run --release --example 11_speed_vs_accuracy -- --full --out chapters/figures";
+const REFRESH: &str = "cargo run --release --example 11_speed_vs_accuracy -- --full --out chapters/figures";
 
 fn figures() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters/figures")
@@ -33,8 +33,9 @@ fn figures() -> PathBuf {
 /// The committed fragment of chart `stem`.
 fn committed(stem: &str) -> String {
     let path = figures().join(format!("{stem}.md"));
-    std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("{}: {e} (write it with `{REFRESH}`)", path.display()))
+    std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!("{}: {e} (write it with `{REFRESH}`)", path.display())
+    })
 }
 
 /// Every exact table and value of `fresh` must read the same in the committed file.
@@ -121,13 +122,15 @@ fn every_chart_has_a_fragment_from_a_full_run_and_its_times_say_where() {
     for stem in stems {
         let text = committed(stem);
         assert!(text.contains("(quality: full)"), "{stem}.md: not --full");
-        let run = anchored(&text, "run").unwrap_or_else(|| panic!("{stem}.md: no `run`"));
+        let run =
+            anchored(&text, "run").unwrap_or_else(|| panic!("{stem}.md: no `run`"));
         assert!(
-            run.starts_with("Times from one `--full` run on ") && run.contains(" cores of "),
+            run.starts_with("Times from one `--full` run on ")
+                && run.contains(" cores of "),
             "{stem}.md: {run}"
         );
-        let machine =
-            anchored(&text, "machine").unwrap_or_else(|| panic!("{stem}.md: no `machine`"));
+        let machine = anchored(&text, "machine")
+            .unwrap_or_else(|| panic!("{stem}.md: no `machine`"));
         assert!(
             run.contains(machine.trim_end()),
             "{stem}.md: {machine} is not in {run}"
@@ -167,7 +170,10 @@ fn a_fragment_is_markdown_between_anchors() {
                 .row(vec!["1e3".into(), "3.7e-5".into()])
                 .row(vec!["1e4".into(), "0.52".into()]),
         )
-        .table(Quoted::new("times", true, &["method", "ns"]).row(vec!["a".into(), "7.1".into()]))
+        .table(
+            Quoted::new("times", true, &["method", "ns"])
+                .row(vec!["a".into(), "7.1".into()]),
+        )
         .value("worst", false, "6.3e-8".into());
     let text = fragment.markdown("11_9_test", &run);
     assert_eq!(

@@ -61,7 +61,8 @@ fn mixed_scene(rng: &mut Rng) -> Scene {
             .unwrap()
             .into(),
             4 => loop {
-                if let Ok(t) = Triangle::new(c, c + rng.point(1.5), c + rng.point(1.5)) {
+                if let Ok(t) = Triangle::new(c, c + rng.point(1.5), c + rng.point(1.5))
+                {
                     break t.into();
                 }
             },
@@ -69,12 +70,16 @@ fn mixed_scene(rng: &mut Rng) -> Scene {
                 .unwrap()
                 .into(),
             6 => Cylinder::new(rng.range(0.1, 1.0), -0.5, 0.5)
-                .and_then(|cyl| Instance::new(cyl.into(), Transform::translation(c.x, c.y, c.z)))
+                .and_then(|cyl| {
+                    Instance::new(cyl.into(), Transform::translation(c.x, c.y, c.z))
+                })
                 .unwrap()
                 .into(),
             _ if k % 16 == 7 => Quadric::cylinder(0.2).unwrap().into(),
             _ => Quadric::ellipsoid(Vec3::new(0.5, 1.0, 0.7))
-                .and_then(|q| Instance::new(q.into(), Transform::translation(c.x, c.y, c.z)))
+                .and_then(|q| {
+                    Instance::new(q.into(), Transform::translation(c.x, c.y, c.z))
+                })
                 .unwrap()
                 .into(),
         };
@@ -140,8 +145,10 @@ fn the_closest_hit_over_runs_of_one_kind_is_every_shape_asked_in_turn_bit_for_bi
                     .any(|o| o.shape.hit(&ray, range).is_some());
                 assert_eq!(scene.occluded(&ray, range), any, "{ray:?} {range:?}");
                 if let Some(found) = readable {
-                    let next = &scene.objects()[(found.object + 1).min(scene.objects().len() - 1)];
-                    ties += usize::from(next.shape == scene.objects()[found.object].shape);
+                    let next = &scene.objects()
+                        [(found.object + 1).min(scene.objects().len() - 1)];
+                    ties +=
+                        usize::from(next.shape == scene.objects()[found.object].shape);
                 }
             }
         }
@@ -157,10 +164,11 @@ fn the_still_lifes_image_made_row_by_row_is_the_lectures_pixel_loop_bit_for_bit(
     let fast = render(&camera, |r| shadowless(&scene, r)).unwrap();
     for y in 0..108 {
         for x in 0..192 {
-            let readable = match each_in_turn(&scene, &pinhole.ray(x, y), Interval::AHEAD) {
-                Some(found) => scene.object(&found).colour(),
-                None => scene.background(),
-            };
+            let readable =
+                match each_in_turn(&scene, &pinhole.ray(x, y), Interval::AHEAD) {
+                    Some(found) => scene.object(&found).colour(),
+                    None => scene.background(),
+                };
             let pixel = fast.get(x, y).unwrap();
             assert_eq!(bits(&pixel), bits(&readable), "pixel ({x}, {y})");
         }

@@ -3,7 +3,9 @@
 //! that every chart can be written.
 
 use render_lessons::course::measure::offsets::Placement;
-use render_lessons::course::measure::{Measured, Quality, offsets, precision, sphere, triangle};
+use render_lessons::course::measure::{
+    Measured, Quality, offsets, precision, sphere, triangle,
+};
 use render_lessons::spawn::Offset;
 
 /// The (x, y) of `points` at `x`.
@@ -18,7 +20,8 @@ fn at(points: &[(f64, f64)], x: f64) -> f64 {
 #[test]
 fn sphere_textbook_f32_fails_far_away_stable_holds() {
     let curves = sphere::data(Quality::Quick).unwrap();
-    let curve = |m: sphere::SphereMethod| curves.iter().find(|c| c.method == m).unwrap();
+    let curve =
+        |m: sphere::SphereMethod| curves.iter().find(|c| c.method == m).unwrap();
     let textbook = curve(sphere::SphereMethod::TextbookF32);
     let stable = curve(sphere::SphereMethod::StableF32);
     let stable64 = curve(sphere::SphereMethod::StableF64);

@@ -6,7 +6,9 @@ use std::sync::OnceLock;
 
 use render_lessons::course::chart::log_log_slope;
 use render_lessons::course::measure::monte_carlo::{self, Estimator, rmse_curve};
-use render_lessons::course::measure::renderers::{self, Plan, TECHNIQUES, time_to_reach};
+use render_lessons::course::measure::renderers::{
+    self, Plan, TECHNIQUES, time_to_reach,
+};
 
 // ---------------------------------------------------------------- chart 5
 

@@ -62,7 +62,8 @@ fn in_the_books_run_the_tree_wins_from_four_primitives_on() {
     for row in rows.lines().filter(|l| l.starts_with('|')) {
         let cells: Vec<&str> = row.split('|').map(str::trim).collect();
         let primitives: usize = cells[1].parse().unwrap();
-        let (Ok(list), Ok(tree)) = (cells[2].parse::<f64>(), cells[3].parse::<f64>()) else {
+        let (Ok(list), Ok(tree)) = (cells[2].parse::<f64>(), cells[3].parse::<f64>())
+        else {
             continue; // "not run"
         };
         if primitives >= 4 {

@@ -57,8 +57,9 @@ pub(crate) fn crossings(shape: &Shape, r: &Ray, want: &[f32]) {
 // Transform: composition written in the order of the paper (RTC ch. 4).
 
 /// RTC ch. 4, "Individual transformations are applied in sequence" and "Chained
-/// transformations must be applied in reverse order": p = (1, 0, 1), A = rotation_x(pi/2),
-/// B = scaling(5, 5, 5), C = translation(10, 5, 7); C B A p = (15, 0, 7).
+/// transformations must be applied in reverse order": p = (1, 0, 1), A =
+/// rotation_x(pi/2), B = scaling(5, 5, 5), C = translation(10, 5, 7); C B A p = (15, 0,
+/// 7).
 #[test]
 fn rtc_chained_transformations_apply_the_rightmost_first() {
     let p = v(1.0, 0.0, 1.0);
@@ -160,7 +161,8 @@ fn rtc_arbitrary_view_transformation_normalised() {
 
 #[test]
 fn camera_to_world_undoes_world_to_camera() {
-    let frame = Frame::look_at(v(1.0, 3.0, 2.0), v(4.0, -2.0, 8.0), v(1.0, 1.0, 0.0)).unwrap();
+    let frame =
+        Frame::look_at(v(1.0, 3.0, 2.0), v(4.0, -2.0, 8.0), v(1.0, 1.0, 0.0)).unwrap();
     let to_world = frame.camera_to_world();
     let to_camera = frame.world_to_camera().unwrap();
     assert_close((to_world * to_camera).matrix(), Mat4::IDENTITY, 1e-5);
@@ -181,7 +183,8 @@ fn camera_to_world_undoes_world_to_camera() {
 /// The rasterizer's view matrix is the frame's, bit for bit.
 #[test]
 fn pipeline_view_is_the_frames_world_to_camera() {
-    let frame = Frame::look_at(v(1.0, 3.0, 2.0), v(4.0, -2.0, 8.0), v(1.0, 1.0, 0.0)).unwrap();
+    let frame =
+        Frame::look_at(v(1.0, 3.0, 2.0), v(4.0, -2.0, 8.0), v(1.0, 1.0, 0.0)).unwrap();
     assert_eq!(
         projection::view(&frame).unwrap(),
         frame.world_to_camera().unwrap()
@@ -279,7 +282,8 @@ fn rtc_corner_ray_is_our_mirrored_column() {
 fn rtc_ray_when_the_camera_is_transformed() {
     let eye = v(0.0, 2.0, -5.0);
     let c = rtc_camera(eye, eye + v(1.0, 0.0, -1.0));
-    let rtc_transform = Transform::rotation_y(FRAC_PI_4) * Transform::translation(0.0, -2.0, 5.0);
+    let rtc_transform =
+        Transform::rotation_y(FRAC_PI_4) * Transform::translation(0.0, -2.0, 5.0);
     assert_close(
         c.frame().world_to_camera().unwrap().matrix(),
         rtc_transform.matrix(),
@@ -295,18 +299,23 @@ fn rtc_ray_when_the_camera_is_transformed() {
 /// pixel's ray goes left (-x), up (+y) and away (-z).
 #[test]
 fn top_left_pixel_looks_left_up_and_away() {
-    let c = PinholeCamera::look_at(Vec3::ZERO, Vec3::NEG_Z, Vec3::Y, 60.0, 4, 3).unwrap();
+    let c =
+        PinholeCamera::look_at(Vec3::ZERO, Vec3::NEG_Z, Vec3::Y, 60.0, 4, 3).unwrap();
     let d = c.ray(0, 0).direction();
     assert!(d.x < 0.0 && d.y > 0.0 && d.z < 0.0, "{d}");
-    // 60 degrees vertically: the top edge of the screen at distance 1 is tan(30 deg) up.
+    // 60 degrees vertically: the top edge of the screen at distance 1 is tan(30 deg)
+    // up.
     assert_close(c.film().y_extent().1, (PI / 6.0).tan(), 1e-6);
     assert_close(c.film().x_extent().1, (PI / 6.0).tan() * 4.0 / 3.0, 1e-6);
 }
 
 #[test]
 fn look_at_names_every_bad_parameter() {
-    let ok = |eye, target, up, vfov, w, h| PinholeCamera::look_at(eye, target, up, vfov, w, h);
-    let param = |r: render_lessons::Result<PinholeCamera>| r.unwrap_err().param().to_string();
+    let ok = |eye, target, up, vfov, w, h| {
+        PinholeCamera::look_at(eye, target, up, vfov, w, h)
+    };
+    let param =
+        |r: render_lessons::Result<PinholeCamera>| r.unwrap_err().param().to_string();
     let (o, t, up) = (Vec3::ZERO, Vec3::NEG_Z, Vec3::Y);
     assert!(ok(o, t, up, 90.0, 10, 10).is_ok());
     assert_eq!(param(ok(v(f32::NAN, 0.0, 0.0), t, up, 90.0, 10, 10)), "eye");

@@ -14,7 +14,9 @@ use std::f32::consts::{FRAC_PI_2, PI};
 
 use glam::Vec3;
 use render_lessons::ray::{Interval, Ray};
-use render_lessons::shapes::{Aabb, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle};
+use render_lessons::shapes::{
+    Aabb, Instance, Plane, Quad, Quadric, Shape, Sphere, Triangle,
+};
 use render_lessons::transform::Transform;
 
 // ---------------------------------------------------------------------------------
@@ -52,7 +54,8 @@ fn rtc_sphere_normals() {
 fn rtc_transformed_sphere_crossings() {
     let r = ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]);
     let scaled =
-        Instance::new(Shape::from(unit_sphere()), Transform::scale(2.0, 2.0, 2.0)).unwrap();
+        Instance::new(Shape::from(unit_sphere()), Transform::scale(2.0, 2.0, 2.0))
+            .unwrap();
     crossings(&Shape::Instance(Box::new(scaled)), &r, &[3.0, 7.0]);
     let moved = Instance::new(
         Shape::from(unit_sphere()),
@@ -220,7 +223,9 @@ fn rtc_triangle_crossings() {
 /// origin, t = -2. Outside the square, at x = 1.5: none.
 #[test]
 fn quad_crossings_and_normal() {
-    let q = Shape::Quad(Quad::new(v(-1.0, -1.0, 0.0), v(2.0, 0.0, 0.0), v(0.0, 2.0, 0.0)).unwrap());
+    let q = Shape::Quad(
+        Quad::new(v(-1.0, -1.0, 0.0), v(2.0, 0.0, 0.0), v(0.0, 2.0, 0.0)).unwrap(),
+    );
     assert_eq!(q.normal_at(v(0.3, -0.2, 0.0)), Vec3::Z);
     crossings(&q, &ray([0.5, 0.5, 3.0], [0.0, 0.0, -1.0]), &[3.0]);
     crossings(&q, &ray([0.0, 0.0, 2.0], [0.0, 0.0, 1.0]), &[-2.0]);
@@ -417,13 +422,19 @@ fn every_shape() -> Vec<(&'static str, Shape)> {
         (
             "triangle",
             Shape::Triangle(
-                Triangle::new(v(-2.0, -2.0, -4.0), v(2.0, -2.0, -4.5), v(0.0, 2.0, -4.0)).unwrap(),
+                Triangle::new(
+                    v(-2.0, -2.0, -4.0),
+                    v(2.0, -2.0, -4.5),
+                    v(0.0, 2.0, -4.0),
+                )
+                .unwrap(),
             ),
         ),
         (
             "quad",
             Shape::Quad(
-                Quad::new(v(-2.0, -2.0, -4.0), v(4.0, 0.0, -0.5), v(0.0, 4.0, 0.2)).unwrap(),
+                Quad::new(v(-2.0, -2.0, -4.0), v(4.0, 0.0, -0.5), v(0.0, 4.0, 0.2))
+                    .unwrap(),
             ),
         ),
         (

@@ -1,12 +1,14 @@
-//! The checks of the coding exercises of lessons 01 to 05, themselves checked (run by the
-//! default test suite, without the `exercises` feature): each check must pass the
+//! The checks of the coding exercises of lessons 01 to 05, themselves checked (run by
+//! the default test suite, without the `exercises` feature): each check must pass the
 //! crate's reference and an independent answer, and must fail the wrong answers its
 //! chapter warns about, each with a hint that names the mistake, so that a wrong check
 //! fails CI. The student's own tests are in `tests/exercises.rs`.
 
 use glam::{Mat4, Vec2, Vec3};
 use render_lessons::basis::Basis;
-use render_lessons::camera::{Film, Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide};
+use render_lessons::camera::{
+    Film, Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide,
+};
 use render_lessons::course::exercises::check::*;
 use render_lessons::ray::Ray;
 use render_lessons::transform::Transform;
@@ -37,13 +39,17 @@ fn rotation_y_rejects_mistakes() {
 #[test]
 fn compose_accepts_the_reference() {
     assert_eq!(
-        check_compose(|first: &Transform, second: &Transform| first.then(*second).matrix()),
+        check_compose(|first: &Transform, second: &Transform| first
+            .then(*second)
+            .matrix()),
         Outcome::Pass
     );
     assert_eq!(check_compose(compose_solution), Outcome::Pass);
     // `*` on transforms is written in the paper's order: `b * a` is "first a, then b".
     assert_eq!(
-        check_compose(|first: &Transform, second: &Transform| (*second * *first).matrix()),
+        check_compose(
+            |first: &Transform, second: &Transform| (*second * *first).matrix()
+        ),
         Outcome::Pass
     );
 }
@@ -174,7 +180,10 @@ fn pixel_to_plane_rejects_mistakes() {
 
 /// `plane_to_pixel` written out, with the row as `row(height, sy)` and `shift`
 /// added to both coordinates.
-fn plane_to_pixel_with(row: fn(f32, f32) -> f32, shift: f32) -> impl Fn(&Film, Vec2) -> Vec2 {
+fn plane_to_pixel_with(
+    row: fn(f32, f32) -> f32,
+    shift: f32,
+) -> impl Fn(&Film, Vec2) -> Vec2 {
     move |film, p| {
         let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
         let sx = (p.x - x0) / (x1 - x0) * film.width() as f32;
@@ -468,7 +477,12 @@ fn camera_basis_without_gram_schmidt(d: Vec3, k: Vec3) -> (Vec3, Vec3, Vec3) {
 }
 
 /// Lesson 05, "translating directions": the direction moved by p like a point.
-fn ortho_ray_direction_translated(film: &Film, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+fn ortho_ray_direction_translated(
+    film: &Film,
+    frame: &Frame,
+    px: u32,
+    py: u32,
+) -> (Vec3, Vec3) {
     let o = film.pixel_to_plane(px, py).extend(0.0);
     (frame.point_to_world(o), frame.point_to_world(-Vec3::Z))
 }

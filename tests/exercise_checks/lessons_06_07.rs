@@ -1,5 +1,5 @@
-//! The checks of the coding exercises of lessons 06 and 07, themselves checked (run by the
-//! default test suite, without the `exercises` feature): each check must pass the
+//! The checks of the coding exercises of lessons 06 and 07, themselves checked (run by
+//! the default test suite, without the `exercises` feature): each check must pass the
 //! crate's reference and an independent answer, and must fail the wrong answers its
 //! chapter warns about, each with a hint that names the mistake, so that a wrong check
 //! fails CI. The student's own tests are in `tests/exercises.rs`.
@@ -55,8 +55,9 @@ fn pinhole_ray_rejects_mistakes() {
 
 #[test]
 fn project_accepts_the_reference() {
-    let crate_answer =
-        |film: &Film, s, frame: &Frame, x| PinholeCamera::new(*film, s, *frame).unwrap().project(x);
+    let crate_answer = |film: &Film, s, frame: &Frame, x| {
+        PinholeCamera::new(*film, s, *frame).unwrap().project(x)
+    };
     assert_eq!(check_project(crate_answer), Outcome::Pass);
     // Independently: intersect the line from the eye to x with the screen plane
     // z = -s in camera space, then read the film's pixel coordinates by hand.
@@ -119,7 +120,8 @@ fn project_rejects_mistakes() {
 
 #[test]
 fn ray_plane_t_accepts_the_reference() {
-    let reference = |o, d, p0, n| Plane::new(p0, n).unwrap().t(&Ray::new(o, d).unwrap());
+    let reference =
+        |o, d, p0, n| Plane::new(p0, n).unwrap().t(&Ray::new(o, d).unwrap());
     assert_eq!(check_ray_plane_t(reference), Outcome::Pass);
     let by_hand = |o: Vec3, d: Vec3, p0: Vec3, n: Vec3| {
         let denom = d.dot(n);
@@ -158,7 +160,9 @@ fn sphere(c: Vec3, r: f32) -> Sphere {
 fn ray_sphere_roots_accepts_the_reference() {
     let ray = |o, d| Ray::new(o, d).unwrap();
     assert_eq!(
-        check_ray_sphere_roots(move |o, d, c, r| sphere(c, r).roots_stable(&ray(o, d)).pair()),
+        check_ray_sphere_roots(move |o, d, c, r| sphere(c, r)
+            .roots_stable(&ray(o, d))
+            .pair()),
         Outcome::Pass
     );
     // Written out independently: the Hearn-Baker discriminant r^2 - |l|^2 (with
@@ -355,13 +359,25 @@ fn pinhole_ray_as_on_the_slides(
 }
 
 /// Lesson 06, "forgetting to normalise": s - e as it is.
-fn pinhole_ray_unnormalised(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+fn pinhole_ray_unnormalised(
+    film: &Film,
+    s: f32,
+    frame: &Frame,
+    px: u32,
+    py: u32,
+) -> (Vec3, Vec3) {
     let screen = film.pixel_to_plane(px, py).extend(-s);
     (frame.position(), frame.vector_to_world(screen))
 }
 
 /// Lesson 06, "rows from the bottom" (STABILITY S11): the slide's row, unflipped.
-fn pinhole_ray_upside_down(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+fn pinhole_ray_upside_down(
+    film: &Film,
+    s: f32,
+    frame: &Frame,
+    px: u32,
+    py: u32,
+) -> (Vec3, Vec3) {
     let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
     let (w, h) = (film.width() as f32, film.height() as f32);
     let x = (px as f32 + 0.5) / w * (x1 - x0) + x0;
@@ -371,7 +387,12 @@ fn pinhole_ray_upside_down(film: &Film, s: f32, frame: &Frame, px: u32, py: u32)
 }
 
 /// Lesson 06, "points behind the eye": divided by -Z whatever its sign.
-fn project_behind_the_eye_too(film: &Film, s: f32, frame: &Frame, x: Vec3) -> Option<Vec2> {
+fn project_behind_the_eye_too(
+    film: &Film,
+    s: f32,
+    frame: &Frame,
+    x: Vec3,
+) -> Option<Vec2> {
     let c = frame.point_to_camera(x);
     Some(film.plane_to_pixel(c.truncate() * (s / -c.z)))
 }
@@ -382,7 +403,8 @@ fn project_upside_down(film: &Film, s: f32, frame: &Frame, x: Vec3) -> Option<Ve
     let p = c.truncate() * (s / -c.z);
     let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
     let (w, h) = (film.width() as f32, film.height() as f32);
-    (c.z < 0.0).then(|| Vec2::new((p.x - x0) / (x1 - x0) * w, (p.y - y0) / (y1 - y0) * h))
+    (c.z < 0.0)
+        .then(|| Vec2::new((p.x - x0) / (x1 - x0) * w, (p.y - y0) / (y1 - y0) * h))
 }
 
 /// Lesson 07, the plane's "dividing before checking": no test at all.
@@ -410,7 +432,12 @@ fn ray_sphere_roots_school(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f3
 }
 
 /// Lesson 07, "sign(0) = 0" (STABILITY S2): GLSL's sign in the stable roots.
-fn ray_sphere_roots_sign_of_zero_is_zero(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f32)> {
+fn ray_sphere_roots_sign_of_zero_is_zero(
+    o: Vec3,
+    d: Vec3,
+    c: Vec3,
+    r: f32,
+) -> Option<(f32, f32)> {
     let sign = |x: f32| {
         if x > 0.0 {
             1.0
@@ -432,7 +459,12 @@ fn ray_sphere_roots_sign_of_zero_is_zero(o: Vec3, d: Vec3, c: Vec3, r: f32) -> O
 }
 
 /// STABILITY S2's tangent: sign(0) = +1, but q = 0 not caught, so c/q = 0/0.
-fn ray_sphere_roots_q_zero_divided(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f32)> {
+fn ray_sphere_roots_q_zero_divided(
+    o: Vec3,
+    d: Vec3,
+    c: Vec3,
+    r: f32,
+) -> Option<(f32, f32)> {
     let f = o - c;
     let (a, b, cc) = (d.dot(d), 2.0 * f.dot(d), f.dot(f) - r * r);
     let l = f - (f.dot(d) / a) * d;

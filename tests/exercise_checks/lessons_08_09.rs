@@ -1,5 +1,5 @@
-//! The checks of the coding exercises of lessons 08 and 09, themselves checked (run by the
-//! default test suite, without the `exercises` feature): each check must pass the
+//! The checks of the coding exercises of lessons 08 and 09, themselves checked (run by
+//! the default test suite, without the `exercises` feature): each check must pass the
 //! crate's reference and an independent answer, and must fail the wrong answers its
 //! chapter warns about, each with a hint that names the mistake, so that a wrong check
 //! fails CI. The student's own tests are in `tests/exercises.rs`.
@@ -55,17 +55,18 @@ fn lambert_accepts_the_reference() {
         Outcome::Pass
     );
     // Independently, in f64 and with the cosine as a ratio of lengths.
-    let by_hand = |p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool| {
-        let to_light = (light.position - p).as_dvec3();
-        let cos = n.as_dvec3().dot(to_light) / to_light.length();
-        let direct = if visible && cos > 0.0 {
-            light.intensity.as_dvec3() * cos / to_light.length_squared()
-        } else {
-            glam::DVec3::ZERO
+    let by_hand =
+        |p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool| {
+            let to_light = (light.position - p).as_dvec3();
+            let cos = n.as_dvec3().dot(to_light) / to_light.length();
+            let direct = if visible && cos > 0.0 {
+                light.intensity.as_dvec3() * cos / to_light.length_squared()
+            } else {
+                glam::DVec3::ZERO
+            };
+            let ambient = f64::from(render_lessons::lighting::AMBIENT);
+            (albedo.as_dvec3() * (direct + ambient)).as_vec3()
         };
-        let ambient = f64::from(render_lessons::lighting::AMBIENT);
-        (albedo.as_dvec3() * (direct + ambient)).as_vec3()
-    };
     assert_eq!(check_lambert(by_hand), Outcome::Pass);
 }
 
@@ -82,7 +83,9 @@ struct LambertMistakes {
     no_albedo: bool,
 }
 
-fn lambert_with(m: LambertMistakes) -> impl Fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3 {
+fn lambert_with(
+    m: LambertMistakes,
+) -> impl Fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3 {
     move |p, n, albedo, light, visible| {
         let to_light = light.position - p;
         let d = to_light.length();
@@ -197,10 +200,15 @@ fn edges(a: P, b: P, c: P) -> Option<[(P, P); 3]> {
 /// The right rule with the arithmetic done in the type `to` converts to.
 fn covers_in<T>(to: fn(i64) -> T, a: P, b: P, c: P, p: P) -> bool
 where
-    T: Copy + Default + PartialOrd + std::ops::Sub<Output = T> + std::ops::Mul<Output = T>,
+    T: Copy
+        + Default
+        + PartialOrd
+        + std::ops::Sub<Output = T>
+        + std::ops::Mul<Output = T>,
 {
     let e = |u: P, v: P, q: P| {
-        (to(q.0) - to(u.0)) * (to(v.1) - to(u.1)) - (to(q.1) - to(u.1)) * (to(v.0) - to(u.0))
+        (to(q.0) - to(u.0)) * (to(v.1) - to(u.1))
+            - (to(q.1) - to(u.1)) * (to(v.0) - to(u.0))
     };
     let zero = T::default();
     let area = e(a, b, c);
@@ -222,7 +230,8 @@ fn covers_accepts_the_reference() {
     let independent = |a: P, b: P, c: P, p: P| {
         let e = |u: P, v: P, q: P| {
             let w = |x: i64| i128::from(x);
-            (w(q.0) - w(u.0)) * (w(v.1) - w(u.1)) - (w(q.1) - w(u.1)) * (w(v.0) - w(u.0))
+            (w(q.0) - w(u.0)) * (w(v.1) - w(u.1))
+                - (w(q.1) - w(u.1)) * (w(v.0) - w(u.0))
         };
         let area = e(a, b, c);
         area != 0
@@ -255,13 +264,15 @@ fn covers_accepts_the_reference() {
 fn covers_rejects_mistakes() {
     fails_with(
         check_covers(|a, b, c, p| {
-            edges(a, b, c).is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) >= 0))
+            edges(a, b, c)
+                .is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) >= 0))
         }),
         "double",
     );
     fails_with(
         check_covers(|a, b, c, p| {
-            edges(a, b, c).is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) > 0))
+            edges(a, b, c)
+                .is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) > 0))
         }),
         "cracks",
     );
@@ -291,7 +302,9 @@ fn covers_rejects_mistakes() {
         "not in floating point",
     );
     fails_with(
-        check_covers(|a, b, c, p| covers_in(|x| std::num::Wrapping(x as i32), a, b, c, p)),
+        check_covers(|a, b, c, p| {
+            covers_in(|x| std::num::Wrapping(x as i32), a, b, c, p)
+        }),
         "overflow i32",
     );
     // Plain i32 panics on overflow in a debug build and wraps in a release build:
@@ -305,7 +318,8 @@ fn covers_rejects_mistakes() {
 #[test]
 fn perspective_weights_accepts_the_reference() {
     use render_lessons::raster::rasterize::perspective_weights;
-    let crate_answer = |b, v: &[ScreenVertex; 3]| perspective_weights(b, v.map(|v| v.inv_w));
+    let crate_answer =
+        |b, v: &[ScreenVertex; 3]| perspective_weights(b, v.map(|v| v.inv_w));
     assert_eq!(check_perspective_weights(crate_answer), Outcome::Pass);
     // Independently, with w itself and in f64: (b_k / w_k) / sum_j (b_j / w_j).
     let with_w = |b: [f32; 3], v: &[ScreenVertex; 3]| {
@@ -357,14 +371,17 @@ fn perspective_weights_rejects_mistakes() {
 
 /// Lesson 08, "returning the first hit instead of the closest".
 fn closest_first_hit(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
-    shapes
-        .iter()
-        .enumerate()
-        .find_map(|(object, shape)| shape.hit(ray, range).map(|hit| SceneHit { hit, object }))
+    shapes.iter().enumerate().find_map(|(object, shape)| {
+        shape.hit(ray, range).map(|hit| SceneHit { hit, object })
+    })
 }
 
 /// Lesson 08, "accepting t <= 0": every crossing of the line counts, the range unused.
-fn closest_anywhere_on_the_line(ray: &Ray, shapes: &[Shape], _: Interval) -> Option<SceneHit> {
+fn closest_anywhere_on_the_line(
+    ray: &Ray,
+    shapes: &[Shape],
+    _: Interval,
+) -> Option<SceneHit> {
     let mut range = Interval::EVERYWHERE;
     let mut closest = None;
     for (object, shape) in shapes.iter().enumerate() {
@@ -395,7 +412,13 @@ fn lambert_without_falloff(
 }
 
 /// Lesson 08: the cosine unclamped, so a surface facing away darkens below ambient.
-fn lambert_unclamped(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+fn lambert_unclamped(
+    p: Vec3,
+    n: Vec3,
+    albedo: Vec3,
+    light: &PointLight,
+    visible: bool,
+) -> Vec3 {
     let to_light = light.position - p;
     let cos = n.dot(to_light.normalize());
     let direct = if visible {

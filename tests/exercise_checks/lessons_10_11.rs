@@ -1,5 +1,5 @@
-//! The checks of the coding exercises of lessons 10 and 11, themselves checked (run by the
-//! default test suite, without the `exercises` feature): each check must pass the
+//! The checks of the coding exercises of lessons 10 and 11, themselves checked (run by
+//! the default test suite, without the `exercises` feature): each check must pass the
 //! crate's reference and an independent answer, and must fail the wrong answers its
 //! chapter warns about, each with a hint that names the mistake, so that a wrong check
 //! fails CI. The student's own tests are in `tests/exercises.rs`.
@@ -37,7 +37,12 @@ fn cosine_sample_accepts_the_reference() {
 
 /// Malley's method with the pieces the mistakes below get wrong: the radius
 /// on the disc, the height, and the pdf of the direction.
-fn malley(u: Vec2, r: fn(f32) -> f32, z: fn(f32) -> f32, pdf: fn(Vec3) -> f32) -> (Vec3, f32) {
+fn malley(
+    u: Vec2,
+    r: fn(f32) -> f32,
+    z: fn(f32) -> f32,
+    pdf: fn(Vec3) -> f32,
+) -> (Vec3, f32) {
     let (s, c) = (std::f32::consts::TAU * u.y).sin_cos();
     let w = Vec3::new(r(u.x) * c, r(u.x) * s, z(u.x));
     (w, pdf(w))
@@ -75,7 +80,9 @@ fn cosine_sample_rejects_mistakes() {
     );
     // A right sampler, u.x and u.y swapped.
     fails_with(
-        check_cosine_sample(move |u| malley(Vec2::new(u.y, u.x), sqrt, lift, cos_over_pi)),
+        check_cosine_sample(move |u| {
+            malley(Vec2::new(u.y, u.x), sqrt, lift, cos_over_pi)
+        }),
         "swapped",
     );
 }
@@ -259,7 +266,9 @@ fn slab_rejects_mistakes() {
         "takes t_near when it is NaN",
     );
     fails_with(
-        check_slab(|o, inv_d, min, max, _| slab_solution(o, inv_d, min, max, Interval::EVERYWHERE)),
+        check_slab(|o, inv_d, min, max, _| {
+            slab_solution(o, inv_d, min, max, Interval::EVERYWHERE)
+        }),
         "start the interval at [range.min, range.max]",
     );
     fails_with(
@@ -274,13 +283,14 @@ fn slab_rejects_mistakes() {
 #[test]
 fn sah_cost_accepts_the_reference() {
     use render_lessons::bvh::build::{TRAVERSAL_COST, split_cost};
-    let crate_answer = |node: &Aabb, left: &Aabb, nl: usize, right: &Aabb, nr: usize| {
-        split_cost(
-            node.surface_area(),
-            (left.surface_area(), nl as u32),
-            (right.surface_area(), nr as u32),
-        )
-    };
+    let crate_answer =
+        |node: &Aabb, left: &Aabb, nl: usize, right: &Aabb, nr: usize| {
+            split_cost(
+                node.surface_area(),
+                (left.surface_area(), nl as u32),
+                (right.surface_area(), nr as u32),
+            )
+        };
     assert_eq!(check_sah_cost(crate_answer), Outcome::Pass);
     assert_eq!(check_sah_cost(sah_cost_solution), Outcome::Pass);
     // Independently, the areas by hand in f64.
@@ -298,22 +308,23 @@ fn sah_cost_accepts_the_reference() {
 #[test]
 fn sah_cost_rejects_mistakes() {
     use render_lessons::bvh::build::TRAVERSAL_COST;
-    let measured = |measure: fn(&Aabb) -> f32, c_trav: f32, divide: bool, count: bool| {
-        move |node: &Aabb, left: &Aabb, nl: usize, right: &Aabb, nr: usize| {
-            let (nl, nr) = if count {
-                (nl as f32, nr as f32)
-            } else {
-                (1.0, 1.0)
-            };
-            let weighted = measure(left) * nl + measure(right) * nr;
-            c_trav
-                + if divide {
-                    weighted / measure(node)
+    let measured =
+        |measure: fn(&Aabb) -> f32, c_trav: f32, divide: bool, count: bool| {
+            move |node: &Aabb, left: &Aabb, nl: usize, right: &Aabb, nr: usize| {
+                let (nl, nr) = if count {
+                    (nl as f32, nr as f32)
                 } else {
-                    weighted
-                }
-        }
-    };
+                    (1.0, 1.0)
+                };
+                let weighted = measure(left) * nl + measure(right) * nr;
+                c_trav
+                    + if divide {
+                        weighted / measure(node)
+                    } else {
+                        weighted
+                    }
+            }
+        };
     let area: fn(&Aabb) -> f32 = Aabb::surface_area;
     let volume: fn(&Aabb) -> f32 = |b| {
         let e = b.max() - b.min();
@@ -459,7 +470,13 @@ fn slab_letting_nan_in(
 }
 
 /// Lesson 11's heuristic weighed by volume, which a flat box does not have.
-fn sah_cost_by_volume(node: &Aabb, left: &Aabb, nl: usize, right: &Aabb, nr: usize) -> f32 {
+fn sah_cost_by_volume(
+    node: &Aabb,
+    left: &Aabb,
+    nl: usize,
+    right: &Aabb,
+    nr: usize,
+) -> f32 {
     let volume = |b: &Aabb| (b.max() - b.min()).element_product();
     let weighted = volume(left) * nl as f32 + volume(right) * nr as f32;
     render_lessons::bvh::build::TRAVERSAL_COST + weighted / volume(node)

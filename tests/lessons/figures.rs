@@ -243,7 +243,8 @@ fn the_width_check_reads_png_and_svg() {
 #[test]
 fn the_browser_test_knows_the_figures_text_sizes() {
     let check = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser/check.mjs"),
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/browser/check.mjs"),
     )
     .unwrap();
     let constant = |name: &str| -> f64 {

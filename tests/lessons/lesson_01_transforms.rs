@@ -97,7 +97,8 @@ fn translation_moves_points_but_not_vectors() {
 fn order_matters_translate_then_scale_vs_scale_then_translate() {
     let t = Transform::translation(1.0, 0.0, 0.0);
     let s = Transform::scale(2.0, 2.0, 2.0);
-    // Move the origin to x = 1, then double: x = 2. Double the origin, then move: x = 1.
+    // Move the origin to x = 1, then double: x = 2. Double the origin, then move: x =
+    // 1.
     assert_eq!(t.then(s).point(Vec3::ZERO), Vec3::new(2.0, 0.0, 0.0));
     assert_eq!(s.then(t).point(Vec3::ZERO), Vec3::new(1.0, 0.0, 0.0));
     // `then` puts the first transformation on the right of the product.

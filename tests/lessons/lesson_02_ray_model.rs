@@ -154,7 +154,8 @@ fn an_unnormalised_ray_keeps_t_through_a_transform() {
 }
 
 fn finite_vec(range: f32) -> impl Strategy<Value = Vec3> {
-    (-range..range, -range..range, -range..range).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+    (-range..range, -range..range, -range..range)
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
 }
 
 proptest! {
@@ -182,7 +183,8 @@ fn lesson_02_worked_numbers() {
     let offset = ray.at(2.5) - ray.origin();
     assert!((offset - Vec3::new(2.0, 1.5, 0.0)).length() < 1e-6);
     // The reversed ray: r(2.5) = (1 - 2, 1 - 1.5, 0).
-    let reversed = Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(-0.8, -0.6, 0.0)).unwrap();
+    let reversed =
+        Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(-0.8, -0.6, 0.0)).unwrap();
     assert!((reversed.at(2.5) - Vec3::new(-1.0, -0.5, 0.0)).length() < 1e-6);
     // The x axis is crossed at t = -5/3, at x = -1/3.
     let crossing = ray.at(-5.0 / 3.0);

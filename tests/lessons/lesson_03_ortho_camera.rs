@@ -26,7 +26,8 @@ fn the_flags_default_to_the_slide_camera() {
 
 #[test]
 fn a_long_table_says_how_many_pixels_it_leaves_out() {
-    let cam = OrthoCamera::at_origin(Film::new(8, 6, (-8.0, 8.0), (-6.0, 6.0)).unwrap());
+    let cam =
+        OrthoCamera::at_origin(Film::new(8, 6, (-8.0, 8.0), (-6.0, 6.0)).unwrap());
     let text = lesson::numbers(&cam);
     assert_eq!(text.lines().filter(|l| l.starts_with('(')).count(), 24);
     assert!(text.ends_with("... (24 more pixels)\n"));

@@ -116,8 +116,8 @@ fn figure_draws() {
 
 #[test]
 fn s12_frisvad_breaks_near_minus_z_and_duff_does_not() {
-    // STABILITY S12: a unit normal just outside Frisvad's -Z guard. Its z is given there
-    // as -0.99999988079, which is the f32 written here as -0.9999999.
+    // STABILITY S12: a unit normal just outside Frisvad's -Z guard. Its z is given
+    // there as -0.99999988079, which is the f32 written here as -0.9999999.
     let n = Vec3::new(0.000_385_273_16, 0.000_384_600_16, -0.999_999_9);
     assert_eq!(n.z, "-0.99999988079".parse::<f32>().unwrap());
     let frisvad = Basis::around_frisvad(n).orthonormality_error();

@@ -8,7 +8,9 @@ use glam::{Mat3, Vec3};
 use proptest::prelude::*;
 use render_lessons::Error;
 use render_lessons::basis::Basis;
-use render_lessons::camera::{Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide};
+use render_lessons::camera::{
+    Frame, OrthoCamera, camera_basis, camera_basis_as_on_slide,
+};
 use render_lessons::error::Problem;
 
 /// The example's camera, from its default flags.
@@ -40,7 +42,8 @@ fn erratum_the_slides_w_makes_the_camera_look_backwards() {
     let slide = camera_basis_as_on_slide(d, Vec3::Y).unwrap();
     let slide_camera = OrthoCamera::new(film, Frame::from_basis(Vec3::ZERO, slide));
     let ours = OrthoCamera::new(film, Frame::look(Vec3::ZERO, d, Vec3::Y).unwrap());
-    // With w = d/|d| the local direction (0, 0, -1) becomes -d: the camera looks backwards.
+    // With w = d/|d| the local direction (0, 0, -1) becomes -d: the camera looks
+    // backwards.
     assert!((slide_camera.ray(1, 1).direction() + d.normalize()).length() < 1e-6);
     assert!((ours.ray(1, 1).direction() - d.normalize()).length() < 1e-6);
     // And at the origin looking down -Z, the slide's basis is not the identity.
@@ -110,8 +113,12 @@ fn s10_up_parallel_to_direction_is_an_error_not_nan() {
     );
 }
 
-/// The worst orthonormality error over many nearly-parallel (d, k) pairs at angle `angle`.
-fn worst_error(angle: f32, build: fn(Vec3, Vec3) -> render_lessons::Result<Basis>) -> f32 {
+/// The worst orthonormality error over many nearly-parallel (d, k) pairs at angle
+/// `angle`.
+fn worst_error(
+    angle: f32,
+    build: fn(Vec3, Vec3) -> render_lessons::Result<Basis>,
+) -> f32 {
     (0..200)
         .map(|i| {
             let phi = i as f32 * 0.1;
@@ -137,7 +144,9 @@ fn s10_nearly_parallel_up_keeps_the_basis_orthonormal() {
             ours < 1e-6,
             "one Gram-Schmidt step keeps it at {angle} rad: {ours}"
         );
-        eprintln!("S10 at {angle:e} rad: slide basis error {naive:.1e}, ours {ours:.1e}");
+        eprintln!(
+            "S10 at {angle:e} rad: slide basis error {naive:.1e}, ours {ours:.1e}"
+        );
         printed.push(format!("{naive:.1e} {ours:.1e}"));
     }
     // The numbers where_methods_fail_cameras.md prints (cross products and square

@@ -1,4 +1,5 @@
-//! Lesson 06: the pinhole camera, the slide erratum, and handedness (S11) for both cameras.
+//! Lesson 06: the pinhole camera, the slide erratum, and handedness (S11) for both
+//! cameras.
 
 use crate::common::{self, bits, slide_film};
 use crate::examples::pinhole_camera as lesson;
@@ -11,8 +12,8 @@ use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 use render_lessons::error::Problem;
 use render_lessons::ray::Ray;
 
-/// The example's flags with `extra` added, the frame they give and its two 4 x 3 cameras
-/// (at the origin, and placed by the frame).
+/// The example's flags with `extra` added, the frame they give and its two 4 x 3
+/// cameras (at the origin, and placed by the frame).
 fn example(extra: &[&str]) -> (lesson::Args, Frame, PinholeCamera, PinholeCamera) {
     let args = lesson::Args::parse_from([&["06_pinhole_camera"], extra].concat());
     let frame = Frame::look(args.position, args.direction, args.up).unwrap();
@@ -47,7 +48,8 @@ fn screen_point_is_c_plus_u_a_plus_v_b() {
                 (y_from_bottom as f32 + 0.5) / res_y,
             );
             assert!(
-                (cam.screen_point(Film::pixel_centre(px, py)) - (c + u * a + v * b)).length()
+                (cam.screen_point(Film::pixel_centre(px, py)) - (c + u * a + v * b))
+                    .length()
                     < 1e-6
             );
         }
@@ -67,7 +69,8 @@ fn pixel_0_0_ray_by_hand() {
 
 #[test]
 fn erratum_the_slides_repeated_orthographic_rays_are_parallel() {
-    // Literally as on the arbitrary-pinhole slide: origin (x, y, 0), direction (0, 0, -1).
+    // Literally as on the arbitrary-pinhole slide: origin (x, y, 0), direction (0, 0,
+    // -1).
     let literal = OrthoCamera::at_origin(slide_film());
     let pinhole = PinholeCamera::at_origin(slide_film(), 8.0).unwrap();
     let (a, b) = (literal.ray(0, 0), literal.ray(3, 2));
@@ -82,8 +85,8 @@ fn erratum_the_slides_repeated_orthographic_rays_are_parallel() {
         let r = pinhole.ray(px, py);
         assert!((r.at(r.t_closest_to(Vec3::ZERO))).length() < 1e-6);
     }
-    // Depth: a point and the same point ten times farther land on the same pixel with the
-    // literal rays, but not with the pinhole.
+    // Depth: a point and the same point ten times farther land on the same pixel with
+    // the literal rays, but not with the pinhole.
     let (near, far) = (Vec3::new(4.0, 2.0, -5.0), Vec3::new(4.0, 2.0, -50.0));
     assert_eq!(literal.project(near), literal.project(far));
     let (pn, pf) = (
@@ -168,7 +171,8 @@ proptest! {
 #[test]
 fn side_by_side_orthographic_sees_only_floor_and_pinhole_sees_the_sky() {
     let (args, frame, ..) = example(&["--view-width", "64"]);
-    let views = lesson::views(frame, args.view_width, args.screen_distance * 0.5).unwrap();
+    let views =
+        lesson::views(frame, args.view_width, args.screen_distance * 0.5).unwrap();
     let image = lesson::side_by_side(&views).unwrap();
     let sky = glam::Vec3::new(0.6, 0.75, 0.95);
     // Every orthographic ray points along d = (0, -1, -2): all of them reach the floor.
@@ -280,9 +284,9 @@ fn row_rays_are_the_slides_rays_bit_for_bit() {
                 // The slide's ray, from the eye at the camera-space origin, carried
                 // to the world whole: the eye made once (B 0 + p) changes no bit.
                 let screen = camera.screen_point(centre);
-                let slide = camera
-                    .frame()
-                    .ray_to_world(&Ray::new_unnormalised(Vec3::ZERO, screen.normalize()).unwrap());
+                let slide = camera.frame().ray_to_world(
+                    &Ray::new_unnormalised(Vec3::ZERO, screen.normalize()).unwrap(),
+                );
                 assert_eq!(bits(&slide), readable);
                 assert_eq!(bits(&Camera::from(camera).ray(px, py)), readable);
                 assert_eq!(bits(&lens.ray(px, py)), readable);

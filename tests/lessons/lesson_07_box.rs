@@ -12,8 +12,8 @@ use render_lessons::shapes::{Aabb, Shape};
 
 // ---------------------------------------------------------------- box (S8)
 
-/// A slab test written the naive way round: `t0 = if t0 > t_near { t0 } else { t_near }`
-/// lets a NaN from 0 * inf replace the interval (kept to show the failure).
+/// A slab test written the naive way round:
+/// `t0 = if t0 > t_near { t0 } else { t_near }` lets a NaN from 0 * inf replace the interval (kept to show the failure).
 fn naive_slab(b: &Aabb, r: &Ray, range: Interval) -> Slab {
     let (mut t0, mut t1) = (range.min, range.max);
     for i in 0..3 {

@@ -15,7 +15,8 @@ use render_lessons::transform::Transform;
 #[test]
 fn scaled_translated_sphere_is_the_ellipsoid() {
     let shift = Vec3::new(1.0, -2.0, 3.0);
-    let m = Transform::scale(2.0, 1.0, 1.0).then(Transform::translation(shift.x, shift.y, shift.z));
+    let m = Transform::scale(2.0, 1.0, 1.0)
+        .then(Transform::translation(shift.x, shift.y, shift.z));
     let inst = Shape::Instance(Box::new(
         Instance::new(Shape::from(unit_sphere()), m).unwrap(),
     ));
@@ -72,7 +73,8 @@ fn instance_normal_is_the_inverse_transpose_one() {
     // The true normal: the gradient (x/2, 2y, 2z) of x^2/4 + y^2 + z^2.
     let want = Vec3::new(0.5, 2.0 * y, 0.0).normalize();
     assert!((h.normal - want).length() <= 1e-6, "{:?}", h.normal);
-    // It is what Transform::normal gives for the object-space normal (1/2, sqrt 3/2, 0).
+    // It is what Transform::normal gives for the object-space normal (1/2, sqrt 3/2,
+    // 0).
     let n_obj = Vec3::new(0.5, y, 0.0);
     assert!((m.normal(n_obj).unwrap().normalize() - h.normal).length() <= 1e-6);
     // A tangent of the sphere there, carried by M, is a tangent of the ellipsoid: the

@@ -3,7 +3,8 @@
 //! surface (a property over random rays), bad input, and the numbers the pages work
 //! out. The shapes one by one, with the STABILITY cases of each: `lesson_07_sphere`
 //! (S1, S2), `lesson_07_plane` (S3), `lesson_07_box` (S6, S8), `lesson_07_triangle`
-//! (S4, S5, S7), `lesson_07_quadrics` (S9), `lesson_07_instances`, `lesson_07_cylinder`.
+//! (S4, S5, S7), `lesson_07_quadrics` (S9), `lesson_07_instances`,
+//! `lesson_07_cylinder`.
 //!
 //! Expected values are worked out by hand (or in f64 from the same f32 inputs), not
 //! by the code under test. Failure rates are measured, never hard-coded: the tests
@@ -97,15 +98,18 @@ fn point() -> impl Strategy<Value = Vec3> {
 /// Rays aimed at a random point near the shape, so that many of them hit. Directions
 /// with exact zero components are mixed in on purpose.
 fn aimed_ray() -> impl Strategy<Value = Ray> {
-    (point(), point(), 0u8..8).prop_filter_map("origin != target", |(o, target, zero_mask)| {
-        let mut d = target - o;
-        for i in 0..3 {
-            if zero_mask & (1 << i) != 0 {
-                d[i] = 0.0;
+    (point(), point(), 0u8..8).prop_filter_map(
+        "origin != target",
+        |(o, target, zero_mask)| {
+            let mut d = target - o;
+            for i in 0..3 {
+                if zero_mask & (1 << i) != 0 {
+                    d[i] = 0.0;
+                }
             }
-        }
-        Ray::new(o, d).ok()
-    })
+            Ray::new(o, d).ok()
+        },
+    )
 }
 
 fn no_nan(h: &render_lessons::shapes::Hit) -> bool {
@@ -226,9 +230,8 @@ fn lesson_crossings_lie_on_their_surfaces() {
             let p = case.ray.at(t);
             let residual = match case.name {
                 "sphere" => p.length() - 1.0,
-                "plane" => {
-                    (p - Vec3::new(0.0, -0.5, 0.0)).dot(Vec3::new(1.0, 2.0, 0.0).normalize())
-                }
+                "plane" => (p - Vec3::new(0.0, -0.5, 0.0))
+                    .dot(Vec3::new(1.0, 2.0, 0.0).normalize()),
                 "box" => p.abs().max_element() - 1.0,
                 "triangle" => p.x - 1.0,
                 "paraboloid" => p.x * p.x + p.y * p.y - p.z,
@@ -306,7 +309,8 @@ fn lesson_07_worked_numbers() {
         format!("{t0:.3} {t1:.3} {:.3}", 0.75f64.sqrt()),
         "2.134 3.866 0.866"
     );
-    // The plane: (p0 - o) . n and d . n with n = (1, 2, 0)/sqrt 5, d = (1, -1, 0)/sqrt 2.
+    // The plane: (p0 - o) . n and d . n with n = (1, 2, 0)/sqrt 5, d = (1, -1, 0)/sqrt
+    // 2.
     let n = DVec3::new(1.0, 2.0, 0.0).normalize();
     let d = DVec3::new(1.0, -1.0, 0.0).normalize();
     let along = DVec3::new(2.0, -2.5, 0.0).dot(n);
@@ -394,7 +398,8 @@ fn lesson_07_worked_numbers() {
     let centre = 1e4 * aim;
     let f = -centre;
     let (a, b, c) = (aim.dot(aim), 2.0 * f.dot(aim), f.dot(f) - 1.0);
-    let school = |sign: f32| (-b + sign * (b * b - 4.0 * a * c).max(0.0).sqrt()) / (2.0 * a);
+    let school =
+        |sign: f32| (-b + sign * (b * b - 4.0 * a * c).max(0.0).sqrt()) / (2.0 * a);
     assert_eq!(b * b - 4.0 * a * c, 0.0);
     assert_eq!(
         format!("{:.3} {:.3}", school(-1.0), school(1.0)),
@@ -408,8 +413,9 @@ fn lesson_07_worked_numbers() {
     assert_eq!(format!("{t0:.0} {t1:.0}"), "9999 10001");
 }
 
-/// The numbers of one row of lesson 07's table (snapshot `lessons__lesson_07_intersections__numbers`):
-/// the crossings, the hit point and the outward normal.
+/// The numbers of one row of lesson 07's table (snapshot
+/// `lessons__lesson_07_intersections__numbers`): the crossings, the hit point and the
+/// outward normal.
 fn lesson_07_row(shape: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     let snap = common::pages::snapshot(module_path!(), "numbers");
     // The shape's row in the table of rays, then in the table of hits.

@@ -69,7 +69,8 @@ fn s3_wall(wall: Shape) -> (u32, u32, Vec<Vec3>) {
         points.push(hit.point);
         let frame = Basis::around(hit.normal);
         for u in grid(8) {
-            let bounce = Ray::new(hit.point, frame.to_world(cosine_hemisphere(u))).unwrap();
+            let bounce =
+                Ray::new(hit.point, frame.to_world(cosine_hemisphere(u))).unwrap();
             total += 1;
             self_hits += u32::from(
                 wall.hit(&bounce, Interval::new(1e-4, f32::INFINITY))
@@ -87,7 +88,8 @@ fn s3_a_wall_modelled_as_a_huge_sphere_hits_itself_in_f32_a_plane_does_not() {
     let plane = Shape::Plane(Plane::new(Vec3::new(1.0, 0.0, 0.0), Vec3::X).unwrap());
     let (sphere_hits, total, sphere_points) = s3_wall(sphere);
     let (plane_hits, _, plane_points) = s3_wall(plane);
-    let off_plane = |points: &[Vec3]| points.iter().map(|p| (p.x - 1.0).abs()).fold(0.0, f32::max);
+    let off_plane =
+        |points: &[Vec3]| points.iter().map(|p| (p.x - 1.0).abs()).fold(0.0, f32::max);
     let (sphere_off, plane_off) = (off_plane(&sphere_points), off_plane(&plane_points));
     // In f64, how far the exact sphere bulges past x = 1 at the hit points' y and z
     // (curvature, not error), and how far the f32 hit points lie from the exact

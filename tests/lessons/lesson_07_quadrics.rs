@@ -4,8 +4,8 @@
 //! `lesson_07_instances`, the capped cylinder in `lesson_07_cylinder`.
 //!
 //! Expected values are worked out by hand in the comments, or in f64 from the same f32
-//! inputs; the measured S9 numbers are the snapshot `s9_table` (the page includes it) and
-//! are printed with `eprintln!` (run with
+//! inputs; the measured S9 numbers are the snapshot `s9_table` (the page includes it)
+//! and are printed with `eprintln!` (run with
 //! `cargo test --test lessons lesson_07_quadrics -- --nocapture` to see them).
 
 use crate::common::pages::{assert_page_says, sci};
@@ -177,7 +177,8 @@ fn ellipsoid_known_answers() {
     // Along +X from x = -10: x = -3 at t = 7. Along +Y from y = -10: y = -2 at t = 8.
     assert_t(&e, &ray([-10.0, 0.0, 0.0], [1.0, 0.0, 0.0]), 0.0, 7.0);
     assert_t(&e, &ray([0.0, -10.0, 0.0], [0.0, 1.0, 0.0]), 0.0, 8.0);
-    // From the centre along (1, 1, 0)/sqrt 2: (s^2 / 2)(1/9 + 1/4) = 1, s = sqrt(72/13).
+    // From the centre along (1, 1, 0)/sqrt 2: (s^2 / 2)(1/9 + 1/4) = 1, s =
+    // sqrt(72/13).
     assert_t(
         &e,
         &ray([0.0, 0.0, 0.0], [1.0, 1.0, 0.0]),

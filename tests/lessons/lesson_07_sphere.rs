@@ -34,7 +34,9 @@ fn sphere_known_answers_both_root_finders() {
             ("stable", s.roots_stable(&r).pair()),
         ] {
             match (got, expected) {
-                (Some(g), Some(e)) => assert!(close(g, e, 1e-6), "{name} {o:?}: {g:?} vs {e:?}"),
+                (Some(g), Some(e)) => {
+                    assert!(close(g, e, 1e-6), "{name} {o:?}: {g:?} vs {e:?}")
+                }
                 (None, None) => {}
                 _ => panic!("{name} {o:?}: got {got:?}, expected {expected:?}"),
             }
@@ -52,7 +54,8 @@ fn sphere_hit_nearest_in_range_and_normal() {
     assert_eq!(h.point, Vec3::new(0.0, 0.0, -1.0));
     assert_eq!(h.normal, Vec3::new(0.0, 0.0, -1.0));
     assert!(h.front_face);
-    // With t_min past the first root, the exit is the nearest crossing; seen from inside.
+    // With t_min past the first root, the exit is the nearest crossing; seen from
+    // inside.
     let h = s
         .hit(
             &ray([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]),
@@ -99,8 +102,9 @@ fn s1_disagreements(dist: f32, n: usize) -> (f64, f64, f64) {
             let sv = -1.2 + 2.4 * (j as f32 + 0.5) / n as f32;
             let r = Ray::new(Vec3::ZERO, centre + su * u + sv * v).unwrap();
             let reference = reference_roots(&r, centre, 1.0);
-            textbook_wrong +=
-                usize::from(sphere.roots_textbook(&r).pair().is_some() != reference.is_some());
+            textbook_wrong += usize::from(
+                sphere.roots_textbook(&r).pair().is_some() != reference.is_some(),
+            );
             let stable = sphere.roots_stable(&r).pair();
             stable_wrong += usize::from(stable.is_some() != reference.is_some());
             if let (Some(s), Some(e)) = (stable, reference) {

@@ -142,7 +142,8 @@ fn triangle_known_answers() {
 fn s7_barycentric_point_stays_on_the_plane() {
     // The unit triangle in the plane x + y + z = 1, hit from distance about 1e4.
     let t = Triangle::new(Vec3::X, Vec3::Y, Vec3::Z).unwrap();
-    let off_plane = |p: Vec3| ((p.x as f64 + p.y as f64 + p.z as f64) - 1.0).abs() / 3f64.sqrt();
+    let off_plane =
+        |p: Vec3| ((p.x as f64 + p.y as f64 + p.z as f64) - 1.0).abs() / 3f64.sqrt();
     let mut rng = common::Rng::seeded(0x9E37_79B9_7F4A_7C15);
     let (mut bary, mut ray_point) = (Vec::new(), Vec::new());
     for _ in 0..1000 {
@@ -153,7 +154,8 @@ fn s7_barycentric_point_stays_on_the_plane() {
             (u, v)
         };
         let aim = (1.0 - u - v) * Vec3::X + u * Vec3::Y + v * Vec3::Z;
-        let dir = Vec3::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, 0.0) + Vec3::ONE;
+        let dir =
+            Vec3::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, 0.0) + Vec3::ONE;
         let o = aim + 1e4 * dir.normalize();
         let r = Ray::new(o, aim - o).unwrap();
         if let Some(h) = t.hit(&r, Interval::AHEAD) {

@@ -99,7 +99,8 @@ fn the_lambert_image_matches_the_book_within_one_level() {
     .unwrap()
     .to_srgb8()
     .unwrap();
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters/figures/08_lambert.png");
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters/figures/08_lambert.png");
     let reference = image::open(&path).unwrap().to_rgba8().into_raw();
     assert_eq!(ours.len(), reference.len());
     let off = ours
@@ -159,9 +160,11 @@ fn self_hits(x: f32, offset: Offset) -> (u32, u32) {
     let (mut wrong, mut total) = (0, 0);
     for (i, aim) in grid(8).enumerate() {
         // Primary rays from 5 units away, aimed at points spread over the visible cap.
-        let target = centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
+        let target =
+            centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
         let origin = centre + Vec3::new(0.3, -0.2, 5.0) + Vec3::splat(i as f32 * 1e-3);
-        let Some(hit) = sphere.hit(&Ray::new(origin, target - origin).unwrap(), Interval::AHEAD)
+        let Some(hit) =
+            sphere.hit(&Ray::new(origin, target - origin).unwrap(), Interval::AHEAD)
         else {
             continue;
         };
@@ -292,7 +295,13 @@ fn mine_draws_the_shadowless_pinhole_image_with_the_given_closest() {
 fn mine_draws_the_lambert_image_with_the_given_lambert() {
     // The crate's Lambert formula, in the shape of exercise 8.7, must draw exactly the
     // lesson's Lambert image (shadow rays and all).
-    fn reference(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+    fn reference(
+        p: Vec3,
+        n: Vec3,
+        albedo: Vec3,
+        light: &PointLight,
+        visible: bool,
+    ) -> Vec3 {
         render_lessons::lighting::lambert(p, n, albedo, light, || visible)
     }
     let mine = lesson::my_lambert_image(reference, SMALL).unwrap();
@@ -305,7 +314,13 @@ fn mine_says_a_lambert_that_rounds_otherwise_draws_the_book_but_for_rounding() {
     // A right formula as students write it, the cosine from `normalize` and d^2 from
     // `length_squared`: at the book's size it differed from the lesson's image in one
     // pixel by one level, and `cmp` said the files differ (issue 30).
-    fn normalised(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+    fn normalised(
+        p: Vec3,
+        n: Vec3,
+        albedo: Vec3,
+        light: &PointLight,
+        visible: bool,
+    ) -> Vec3 {
         let to_light = light.position - p;
         let cos = n.dot(to_light.normalize());
         let direct = if visible && cos > 0.0 {
@@ -315,7 +330,13 @@ fn mine_says_a_lambert_that_rounds_otherwise_draws_the_book_but_for_rounding() {
         };
         albedo * (render_lessons::lighting::AMBIENT + direct)
     }
-    fn no_falloff(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
+    fn no_falloff(
+        p: Vec3,
+        n: Vec3,
+        albedo: Vec3,
+        light: &PointLight,
+        visible: bool,
+    ) -> Vec3 {
         normalised(p, n, albedo, light, visible) * (light.position - p).length_squared()
     }
     use render_lessons::course::mine::Comparison;
@@ -349,12 +370,13 @@ fn mine_says_a_lambert_that_rounds_otherwise_draws_the_book_but_for_rounding() {
     two[6] = 103;
     let verdict = |mine: &[u8]| Comparison::of(mine, &same).verdict("m.png", "l.png");
     assert_eq!(verdict(&same), "m.png is l.png, byte for byte");
+    assert!(verdict(&one).starts_with(
+        "m.png is l.png but for rounding: 1 pixel of 1000 differs by 1 level"
+    ));
     assert!(
-        verdict(&one)
-            .starts_with("m.png is l.png but for rounding: 1 pixel of 1000 differs by 1 level")
-    );
-    assert!(
-        verdict(&two).starts_with("m.png is not l.png: 2 pixels of 1000 differ, by up to 3 levels")
+        verdict(&two).starts_with(
+            "m.png is not l.png: 2 pixels of 1000 differ, by up to 3 levels"
+        )
     );
 }
 /// The numbers `08_ray_casting.md` and `08_1_light_and_shadows.md` work out by hand,
@@ -377,7 +399,8 @@ fn exercise_8_5_far_comparisons_count_the_pages_pixels() {
         ),
     ] {
         let images = lesson::images(BOOK, EPSILON, far).unwrap();
-        let differing = |image| agreement(image, &images.lambert, &[], 2.0 / 255.0).differing;
+        let differing =
+            |image| agreement(image, &images.lambert, &[], 2.0 / 255.0).differing;
         let (fixed, scaled) = (
             differing(&images.far_fixed_epsilon),
             differing(&images.far_scaled_offset),

@@ -1,8 +1,9 @@
 //! Rays spawned from a hit must not find their own surface again (STABILITY S13,
-//! and issue 20's far-sphere case): for every shape (the capped cylinder too), and through an instance, the
-//! error-bound offset (pbrt-v4 section 6.8) gives 0 re-hits from near and far, while
-//! the scaled offset of Wachter and Binder fails when the camera is far from a
-//! surface near the origin (its offset follows |p|, the point's error follows t).
+//! and issue 20's far-sphere case): for every shape (the capped cylinder too), and
+//! through an instance, the error-bound offset (pbrt-v4 section 6.8) gives 0 re-hits
+//! from near and far, while the scaled offset of Wachter and Binder fails when the
+//! camera is far from a surface near the origin (its offset follows |p|, the point's
+//! error follows t).
 //!
 //! Each surface here is convex (or flat): a ray leaving it on the side of the
 //! normal it starts from can never meet it again, so every re-hit is a rounding
@@ -84,7 +85,14 @@ struct How {
 
 /// Re-hits of `shape` among `spawned` rays leaving `hit` (of `ray`) in directions
 /// uniform on the sphere, started as `how` says; and how many rays were spawned.
-fn spawn(shape: &Shape, ray: &Ray, hit: &Hit, how: How, spawned: u32, rng: &mut Rng) -> (u32, u32) {
+fn spawn(
+    shape: &Shape,
+    ray: &Ray,
+    hit: &Hit,
+    how: How,
+    spawned: u32,
+    rng: &mut Rng,
+) -> (u32, u32) {
     let point = if how.raw_point {
         ray.at(hit.t)
     } else {
@@ -134,7 +142,8 @@ fn targets(centre: Vec3, r: f32, n: u32) -> Vec<Vec3> {
 /// Asserts 0 re-hits of `shape` at every distance, with a real number of rays.
 fn assert_never_re_hit(name: &str, shape: &Shape, aim: &[Vec3], solid: bool) {
     for d in DISTANCES {
-        let (wrong, total) = re_hits(shape, d, aim, 16, solid, Offset::ErrorBound, false);
+        let (wrong, total) =
+            re_hits(shape, d, aim, 16, solid, Offset::ErrorBound, false);
         eprintln!("{name} from {d:e}: {wrong} of {total}");
         assert!(total > 1000, "{name} from {d:e}: only {total} rays spawned");
         assert_eq!(wrong, 0, "{name} from {d:e}: {wrong} of {total} re-hit");
@@ -188,10 +197,14 @@ fn scaled_offset_fails_on_the_point_o_plus_t_d_seen_from_far_away() {
     // before, the scaled offset follows |p| (about 1 here) while the point's error
     // follows t (about the distance); a fixed epsilon fails too.
     let (sphere, aim) = (Shape::from(unit_sphere()), targets(Vec3::ZERO, 0.9, 24));
-    let run = |d: f32, offset: Offset, raw: bool| re_hits(&sphere, d, &aim, 16, true, offset, raw);
+    let run = |d: f32, offset: Offset, raw: bool| {
+        re_hits(&sphere, d, &aim, 16, true, offset, raw)
+    };
     let (near, _) = run(10.0, Offset::Scaled, true);
     let (far, total) = run(1e4, Offset::Scaled, true);
-    eprintln!("scaled offset from o + t d: {near} re-hits from 10, {far} of {total} from 1e4");
+    eprintln!(
+        "scaled offset from o + t d: {near} re-hits from 10, {far} of {total} from 1e4"
+    );
     assert_eq!(near, 0);
     assert!(far * 10 > total, "{far} of {total}");
     let (fixed, total) = run(1e4, Offset::Fixed(1e-4), true);

@@ -10,8 +10,8 @@ use glam::{Vec2, Vec3};
 use render_lessons::camera::{Camera, Film, PinholeCamera};
 use render_lessons::mesh::{Mesh, Model};
 use render_lessons::raster::{
-    CameraTransforms, ClipVertex, Cull, RasterSettings, ScreenVertex, Shading, Varyings,
-    clip_triangle, rasterize, rasterize_triangle,
+    CameraTransforms, ClipVertex, Cull, RasterSettings, ScreenVertex, Shading,
+    Varyings, clip_triangle, rasterize, rasterize_triangle,
 };
 use render_lessons::scenes::squares::{Squares, squares};
 use render_lessons::transform::Transform;
@@ -29,7 +29,8 @@ fn screen_vertex(p: Vec2) -> ScreenVertex {
 fn fan_coverage(centre: Vec2, corners: &[Vec2], size: u32) -> HashMap<(u32, u32), u32> {
     let mut counts = HashMap::new();
     for i in 0..corners.len() {
-        let t = [centre, corners[i], corners[(i + 1) % corners.len()]].map(screen_vertex);
+        let t =
+            [centre, corners[i], corners[(i + 1) % corners.len()]].map(screen_vertex);
         rasterize_triangle(&t, Cull::None, size, 0..size, |f| {
             *counts.entry((f.x, f.y)).or_insert(0) += 1;
         });
@@ -120,15 +121,17 @@ fn shared_edges_are_covered_exactly_once() {
                 let covered = counts.get(&(x, y)).copied().unwrap_or(0);
                 match inside_convex(p, &corners, 1e-3) {
                     Some(true) => assert_eq!(covered, 1, "crack at ({x}, {y})"),
-                    Some(false) => assert_eq!(covered, 0, "outside drawn at ({x}, {y})"),
+                    Some(false) => {
+                        assert_eq!(covered, 0, "outside drawn at ({x}, {y})")
+                    }
                     None => {}
                 }
             }
         }
     }
     // A square split along its diagonal through pixel centres: area exactly once.
-    let [a, b, c, d] =
-        [(2.5, 2.5), (12.5, 2.5), (12.5, 12.5), (2.5, 12.5)].map(|(x, y)| Vec2::new(x, y));
+    let [a, b, c, d] = [(2.5, 2.5), (12.5, 2.5), (12.5, 12.5), (2.5, 12.5)]
+        .map(|(x, y)| Vec2::new(x, y));
     let mut counts = HashMap::new();
     for t in [[a, b, c], [a, c, d]] {
         rasterize_triangle(&t.map(screen_vertex), Cull::None, 16, 0..16, |f| {
@@ -153,8 +156,10 @@ fn z_buffer_order_does_not_matter() {
             shading,
             ..RasterSettings::default()
         };
-        let a = rasterize(&[near.clone(), far.clone()], &camera, &light, &settings).unwrap();
-        let b = rasterize(&[far.clone(), near.clone()], &camera, &light, &settings).unwrap();
+        let a = rasterize(&[near.clone(), far.clone()], &camera, &light, &settings)
+            .unwrap();
+        let b = rasterize(&[far.clone(), near.clone()], &camera, &light, &settings)
+            .unwrap();
         assert_eq!(a, b);
         let centre = a.get(8, 4).unwrap();
         assert!(
@@ -172,10 +177,12 @@ fn z_buffer_order_does_not_matter() {
 #[test]
 fn interpolation_is_perspective_correct() {
     // A quad receding in depth; its texture coordinates (u, v) are interpolated.
-    let camera: Camera =
-        PinholeCamera::at_origin(Film::new(64, 64, (-1.0, 1.0), (-1.0, 1.0)).unwrap(), 1.0)
-            .unwrap()
-            .into();
+    let camera: Camera = PinholeCamera::at_origin(
+        Film::new(64, 64, (-1.0, 1.0), (-1.0, 1.0)).unwrap(),
+        1.0,
+    )
+    .unwrap()
+    .into();
     let pipeline = CameraTransforms::new(&camera, DEPTH).unwrap();
     let corners = [
         Vec3::new(-1.0, -1.0, -1.5),
@@ -205,7 +212,8 @@ fn interpolation_is_perspective_correct() {
         rasterize_triangle(&screen, Cull::None, 64, 0..64, |f| {
             // The analytic value: this pixel's ray meets the quad's plane at p.
             let ray = camera.ray(f.x, f.y);
-            let (a, e1, e2) = (corners[0], corners[1] - corners[0], corners[3] - corners[0]);
+            let (a, e1, e2) =
+                (corners[0], corners[1] - corners[0], corners[3] - corners[0]);
             let n = e1.cross(e2);
             let s = (a - ray.origin()).dot(n) / ray.direction().dot(n);
             let p = ray.origin() + s * ray.direction();
@@ -229,8 +237,8 @@ fn interpolation_is_perspective_correct() {
             );
             assert!((f.varyings.world - p).length() < 1e-2);
             // Screen-space (affine) interpolation would be far off.
-            let screen_v =
-                (f.y as f32 + 0.5 - screen[0].pixel.y) / (screen[2].pixel.y - screen[0].pixel.y);
+            let screen_v = (f.y as f32 + 0.5 - screen[0].pixel.y)
+                / (screen[2].pixel.y - screen[0].pixel.y);
             worst_affine = worst_affine.max((screen_v.clamp(0.0, 1.0) - v).abs());
             checked += 1;
         });
@@ -252,7 +260,8 @@ fn near_plane_clipping() {
     };
     let in_front = [Vec3::new(-1.0, -1.0, -3.0), Vec3::new(1.0, -1.0, -3.0)];
     // One vertex behind the eye: a quadrilateral remains, two triangles.
-    let one_behind = clip_triangle(&[v(in_front[0]), v(in_front[1]), v(Vec3::new(0.0, 1.0, 2.0))]);
+    let one_behind =
+        clip_triangle(&[v(in_front[0]), v(in_front[1]), v(Vec3::new(0.0, 1.0, 2.0))]);
     assert_eq!(one_behind.len(), 2);
     // Two behind: one triangle.
     let two_behind = clip_triangle(&[

@@ -164,9 +164,10 @@ fn a_bad_file_gives_an_error_naming_the_path() {
     ];
     let invalid = dir.path().join("invalid-utf8.obj");
     std::fs::write(&invalid, b"v 0 0 0\n\xff\xfe\n").unwrap();
-    for (path, line, says) in cases
-        .into_iter()
-        .chain([(invalid, None, "cannot be read as text")])
+    for (path, line, says) in
+        cases
+            .into_iter()
+            .chain([(invalid, None, "cannot be read as text")])
     {
         let err = Mesh::from_obj(&path).unwrap_err();
         let Error::File { line: got, .. } = &err else {
@@ -233,7 +234,8 @@ fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted()
 fn mesh_on_the_floor_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
     use render_lessons::transform::Transform;
     let torus = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;
-    let placed = Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
+    let placed =
+        Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
     assert_eq!(torus.model, placed);
     // The teapot, centred and scaled: its box's longest half side is the torus's 1.4.
     let teapot = mesh_on_the_floor(Path::new(TEAPOT_OBJ), 0).unwrap().model;
@@ -257,7 +259,8 @@ fn mesh_on_the_floor_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
 }
 
 #[test]
-fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_same_image() {
+fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_same_image()
+ {
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(96, 54).unwrap();
     let model = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;

@@ -23,7 +23,8 @@ use render_lessons::raster::{
 use render_lessons::render::with_threads;
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::{
-    PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
+    PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole,
+    still_life_shadows,
 };
 use render_lessons::transform::Transform;
 
@@ -74,8 +75,10 @@ fn lecture_tables() {
     insta::assert_snapshot!("lecture_tables", out);
 
     // The full triangle list needs vertices the slide does not show.
-    let positions: Vec<Vec3> = LECTURE_VERTICES.iter().map(|&p| Vec3::from(p)).collect();
-    let triangles: Vec<[u32; 3]> = LECTURE_TRIANGLES.iter().map(|t| t.map(|i| i - 1)).collect();
+    let positions: Vec<Vec3> =
+        LECTURE_VERTICES.iter().map(|&p| Vec3::from(p)).collect();
+    let triangles: Vec<[u32; 3]> =
+        LECTURE_TRIANGLES.iter().map(|t| t.map(|i| i - 1)).collect();
     let err = Mesh::new(positions.clone(), triangles).unwrap_err();
     assert_eq!(
         err,
@@ -90,7 +93,8 @@ fn lecture_tables() {
     );
     assert!(err.to_string().contains("triangle 0 refers to vertex 4"));
 
-    // The fixture: the four vertices, slide triangles 3 and 4: the square y = 5, facing +Y.
+    // The fixture: the four vertices, slide triangles 3 and 4: the square y = 5, facing
+    // +Y.
     let mesh = Mesh::lecture_fixture();
     assert_eq!(mesh.positions, positions);
     assert_eq!(mesh.triangles, vec![[1, 0, 3], [2, 1, 3]]);
@@ -168,7 +172,10 @@ fn projection_matches_the_cameras() {
             let screen = pipeline
                 .to_screen(pipeline.to_clip(&Transform::IDENTITY, p))
                 .unwrap();
-            assert!((screen.truncate() - expected).length() < 1e-4 * expected.length().max(1.0));
+            assert!(
+                (screen.truncate() - expected).length()
+                    < 1e-4 * expected.length().max(1.0)
+            );
         }
     }
 }
@@ -350,7 +357,8 @@ fn numbers() {
 
 #[test]
 fn cuboid_and_floor_face_outwards() {
-    let cuboid = Mesh::cuboid(Vec3::new(-1.0, 0.0, 2.0), Vec3::new(0.5, 3.0, 2.5)).unwrap();
+    let cuboid =
+        Mesh::cuboid(Vec3::new(-1.0, 0.0, 2.0), Vec3::new(0.5, 3.0, 2.5)).unwrap();
     assert_eq!((cuboid.positions.len(), cuboid.triangles.len()), (24, 12));
     let centre = Vec3::new(-0.25, 1.5, 2.25);
     let floor = Mesh::floor(Vec3::new(1.0, -2.0, 3.0), 4.0).unwrap();

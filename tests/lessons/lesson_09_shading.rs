@@ -17,7 +17,8 @@ use render_lessons::scene::PointLight;
 use render_lessons::scenes::{still_life, still_life_pinhole};
 
 #[test]
-fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_objects_change() {
+fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_objects_change()
+ {
     // One pass gives what two passes gave: the colours of lit_unshadowed, bit for bit,
     // and a silhouette flag wherever one of the 8 neighbours sees another object.
     use render_lessons::raycast::lit_unshadowed;
@@ -36,7 +37,8 @@ fn the_reference_is_the_unshadowed_ray_cast_and_its_silhouettes_are_where_object
     let mut flagged = 0;
     for y in 0..54i64 {
         for x in 0..96i64 {
-            let edge = (-1..=1).any(|dy| (-1..=1).any(|dx| id(x + dx, y + dy) != id(x, y)));
+            let edge =
+                (-1..=1).any(|dy| (-1..=1).any(|dx| id(x + dx, y + dy) != id(x, y)));
             assert_eq!(
                 one_pass.silhouettes[(y * 96 + x) as usize],
                 edge,

@@ -16,7 +16,9 @@ use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{Mesh, patch_point, teapot_obj};
 use render_lessons::scenes::floor_and_mesh;
 use render_lessons::scenes::{TEAPOT_OBJ, asset_path, still_life};
-use render_lessons::scenes::{mesh_on_the_floor, still_life_pinhole, still_life_shadows};
+use render_lessons::scenes::{
+    mesh_on_the_floor, still_life_pinhole, still_life_shadows,
+};
 
 /// The teapot's grid of the committed file.
 const GRID: u32 = 8;

@@ -11,13 +11,14 @@
 
 use glam::{DVec3, Vec2, Vec3};
 use render_lessons::pathtrace::light::{
-    LightPoint, LightShape, SphereSampling, quad_area_pdf, sphere_area_pdf, sphere_cone_pdf,
+    LightPoint, LightShape, SphereSampling, quad_area_pdf, sphere_area_pdf,
+    sphere_cone_pdf,
 };
 use render_lessons::rng::Rng;
 use render_lessons::sampling::{
-    cosine_hemisphere, cosine_hemisphere_pdf, uniform_cone, uniform_cone_pdf, uniform_disc,
-    uniform_disc_pdf, uniform_hemisphere, uniform_hemisphere_pdf, uniform_sphere,
-    uniform_sphere_pdf,
+    cosine_hemisphere, cosine_hemisphere_pdf, uniform_cone, uniform_cone_pdf,
+    uniform_disc, uniform_disc_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
+    uniform_sphere, uniform_sphere_pdf,
 };
 use render_lessons::shapes::{Quad, Sphere};
 use std::f64::consts::{PI, TAU};
@@ -262,7 +263,8 @@ impl Seen<'_> {
         let mut rng = Rng::for_pixel(21, 10, 0);
         let mut counts = vec![0u32; BINS * BINS];
         for _ in 0..SAMPLES {
-            let Some(LightPoint { point, .. }) = self.light.sample(P, rng.next_vec2()) else {
+            let Some(LightPoint { point, .. }) = self.light.sample(P, rng.next_vec2())
+            else {
                 continue;
             };
             let w = (point - P).as_dvec3().normalize();

@@ -39,7 +39,12 @@ pub(crate) fn stats(n: u32, mut f: impl FnMut(u32) -> f32) -> (f64, f64) {
 }
 
 /// `|mean - exact| <= 4 sigma / sqrt(n)`, with a floor for zero-variance estimators.
-pub(crate) fn assert_within_4_sigma(label: &str, (mean, sigma): (f64, f64), n: u32, exact: f64) {
+pub(crate) fn assert_within_4_sigma(
+    label: &str,
+    (mean, sigma): (f64, f64),
+    n: u32,
+    exact: f64,
+) {
     let bound = 4.0 * sigma / f64::from(n).sqrt() + 1e-6;
     assert!(
         (mean - exact).abs() <= bound,
@@ -59,7 +64,8 @@ pub(crate) fn pixel_samples(
     let mut rng = Rng::for_pixel(seed, 0, 0);
     stats(n, |i| {
         let (x, y) = (i % w, (i / w) % h);
-        let ray = camera.ray_through(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), Vec2::ZERO);
+        let ray =
+            camera.ray_through(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), Vec2::ZERO);
         radiance(scene, ray, &mut rng, s).x
     })
 }
@@ -269,7 +275,12 @@ fn s19_direct_lighting_estimators_are_unbiased() {
             let mut rng = Rng::for_pixel(7, 0, 0);
             let st = stats(n, |_| radiance(&scene, ray, &mut rng, &s).x);
             eprintln!("S19 R = {r} {label}: mean {:.6} sigma {:.4}", st.0, st.1);
-            assert_within_4_sigma(&format!("R = {r}, {label}"), st, n, f64::from(r * r));
+            assert_within_4_sigma(
+                &format!("R = {r}, {label}"),
+                st,
+                n,
+                f64::from(r * r),
+            );
             sigma[row][column] = st.1;
         }
     }
@@ -301,7 +312,8 @@ fn s19_direct_lighting_estimators_are_unbiased() {
         &format!("({:.4}/{:.4})^2 \\approx", sigma[0][0], sigma[2][0]),
         sigma[0][0],
     );
-    let says = |row: usize| format!("/{:.4})^2 \\approx {:.0}$", sigma[2][0], ratio(row));
+    let says =
+        |row: usize| format!("/{:.4})^2 \\approx {:.0}$", sigma[2][0], ratio(row));
     assert_quotes(page, &says(1), sigma[2][0]);
     assert_quotes(page, &says(0), sigma[2][0]);
 }

@@ -48,7 +48,8 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 assert_eq!(path.eye, ray.origin());
                 let mut watched = rng;
                 let expected = radiance(&scene, ray, &mut rng, &s);
-                let vertices: Vec<_> = Path::new(&scene, ray, &mut watched, &s).collect();
+                let vertices: Vec<_> =
+                    Path::new(&scene, ray, &mut watched, &s).collect();
                 let observed = vertices
                     .iter()
                     .fold(Vec3::ZERO, |sum, v| sum + v.emitted + v.direct);
@@ -56,7 +57,9 @@ fn the_recorded_paths_of_the_figure_are_the_estimators_paths() {
                 assert_eq!(bits(&observed), bits(&expected), "pixel ({x}, {y})");
                 assert_eq!(watched.next_u32(), rng.next_u32(), "pixel ({x}, {y})");
                 let surfaces = vertices.iter().filter_map(|v| match v.at {
-                    At::Surface { point, object } => Some((point, object, v.light_sample)),
+                    At::Surface { point, object } => {
+                        Some((point, object, v.light_sample))
+                    }
                     At::Escaped { .. } => None,
                 });
                 let recorded = path
@@ -134,7 +137,8 @@ fn each_step_figure_is_what_its_command_writes() {
         assert!(printed.lines().any(|l| l == command), "{page}: {command}");
         // The figure's size is the flags' (or the default): its own image is large,
         // so the test renders a small one with every other flag the same.
-        let as_written = lesson::Args::parse_from([&["10_path_tracing"], step.flags].concat());
+        let as_written =
+            lesson::Args::parse_from([&["10_path_tracing"], step.flags].concat());
         assert_eq!(
             (as_written.width, as_written.height),
             step.size,
@@ -142,7 +146,8 @@ fn each_step_figure_is_what_its_command_writes() {
             step.file
         );
         let sized = |flag: &&str| ["--width", "--height"].contains(flag);
-        let skip = |i: usize| sized(&step.flags[i]) || (i > 0 && sized(&step.flags[i - 1]));
+        let skip =
+            |i: usize| sized(&step.flags[i]) || (i > 0 && sized(&step.flags[i - 1]));
         let mut argv = vec!["10_path_tracing", "--width", "32", "--height", "24"];
         argv.extend(["--out", "target/test-out/10"]);
         argv.extend(
@@ -169,7 +174,8 @@ fn each_step_figure_is_what_its_command_writes() {
             .iter()
             .map(|s| &renders.strategies.iter().find(|(t, _)| t == s).unwrap().1)
             .collect();
-        let written = render_lessons::framebuffer::Framebuffer::beside(&written, 4).unwrap();
+        let written =
+            render_lessons::framebuffer::Framebuffer::beside(&written, 4).unwrap();
         assert!(written == step.render(32, 24).unwrap(), "{}", step.file);
     }
 }

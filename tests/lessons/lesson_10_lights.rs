@@ -27,7 +27,13 @@ use render_lessons::spawn::{Offset, SHADOW_EPSILON};
 /// uniform sphere light wholly above its horizon: rho L (r/d)^2 cos theta_c, d the
 /// distance to the centre and theta_c the angle of the centre from the normal (the
 /// sphere's irradiance pi L (r/d)^2 cos theta_c, times rho / pi). In f64.
-fn sphere_light_on_floor(p: [f64; 3], rho: f64, centre: [f64; 3], r: f64, radiance: f64) -> f64 {
+fn sphere_light_on_floor(
+    p: [f64; 3],
+    rho: f64,
+    centre: [f64; 3],
+    r: f64,
+    radiance: f64,
+) -> f64 {
     let to_c = [centre[0] - p[0], centre[1] - p[1], centre[2] - p[2]];
     let d2 = to_c[0] * to_c[0] + to_c[1] * to_c[1] + to_c[2] * to_c[2];
     let cos_c = to_c[1] / d2.sqrt();
@@ -39,7 +45,12 @@ fn sphere_light_on_floor(p: [f64; 3], rho: f64, centre: [f64; 3], r: f64, radian
 /// formula for a polygon, E = (L / 2) |sum_i Theta_i n . g_i|, Theta_i the angle
 /// that edge i subtends at p and g_i the unit normal of the plane through p and that
 /// edge (Arvo 1995, "Applications of Irradiance Tensors", eq. 4), times rho / pi.
-fn polygon_light_on_floor(p: [f64; 3], rho: f64, poly: &[[f64; 3]], radiance: f64) -> f64 {
+fn polygon_light_on_floor(
+    p: [f64; 3],
+    rho: f64,
+    poly: &[[f64; 3]],
+    radiance: f64,
+) -> f64 {
     let sub = |a: [f64; 3]| [a[0] - p[0], a[1] - p[1], a[2] - p[2]];
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let cross = |a: [f64; 3], b: [f64; 3]| {
@@ -71,7 +82,13 @@ fn s20_estimators() -> Vec<(&'static str, Settings)> {
 
 /// Mean and sigma of `n` samples of direct light (depth 1) at the floor point
 /// (x, 0, z), seen by a ray straight down from 0.5 above it.
-fn floor_point_samples(scene: &Scene, s: &Settings, x: f32, z: f32, n: u32) -> (f64, f64) {
+fn floor_point_samples(
+    scene: &Scene,
+    s: &Settings,
+    x: f32,
+    z: f32,
+    n: u32,
+) -> (f64, f64) {
     let ray = Ray::new(Vec3::new(x, 0.5, z), -Vec3::Y).unwrap();
     let mut rng = Rng::for_pixel(20, x.to_bits(), z.to_bits());
     stats(n, |_| radiance(scene, ray, &mut rng, s).x)
@@ -96,7 +113,12 @@ fn assert_floor_matches(
                 st.0,
                 100.0 * (st.0 / exact - 1.0)
             );
-            assert_within_3_sigma(&format!("{name} ({x}, 0, {z}), {label}"), st, n, exact);
+            assert_within_3_sigma(
+                &format!("{name} ({x}, 0, {z}), {label}"),
+                st,
+                n,
+                exact,
+            );
         }
     }
 }
@@ -181,7 +203,8 @@ fn s20_shadow_rays_ended_at_the_error_bound_alone_find_their_own_light() {
                 (SphereSampling::Area, "area"),
                 (SphereSampling::Cone, "cone"),
             ] {
-                let shape = LightShape::new(&scene.objects()[light].shape, sampler).unwrap();
+                let shape =
+                    LightShape::new(&scene.objects()[light].shape, sampler).unwrap();
                 let mut cells = [0.0f64; 4];
                 for (k, (offset, share)) in [
                     (Offset::ErrorBound, 0.0),

@@ -61,7 +61,8 @@ fn the_monte_carlo_chart_is_the_committed_figure() {
     let args = monte_carlo_args(&[]);
     let rows = monte_carlo_rows(&args);
     let svg = monte_carlo::chart(args.runs, &rows).svg().unwrap();
-    let committed = std::fs::read_to_string("chapters/figures/10_monte_carlo.svg").unwrap();
+    let committed =
+        std::fs::read_to_string("chapters/figures/10_monte_carlo.svg").unwrap();
     assert!(
         svg == committed,
         "chapters/figures/10_monte_carlo.svg is stale: run the example and copy out/10_monte_carlo.svg"

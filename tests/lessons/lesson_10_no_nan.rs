@@ -20,22 +20,28 @@ use render_lessons::spawn::Offset;
 // ---------------------------------------------------------------- no NaN
 
 fn any_sampling() -> impl Strategy<Value = Settings> {
-    (0..4usize, any::<bool>(), any::<bool>(), 0..3u32).prop_map(|(s, area, rr, depth)| Settings {
-        sampling: [
-            Sampling::UniformHemisphere,
-            Sampling::Cosine,
-            Sampling::NextEvent,
-            Sampling::Mis,
-        ][s],
-        sphere_lights: if area {
-            SphereSampling::Area
-        } else {
-            SphereSampling::Cone
+    (0..4usize, any::<bool>(), any::<bool>(), 0..3u32).prop_map(
+        |(s, area, rr, depth)| Settings {
+            sampling: [
+                Sampling::UniformHemisphere,
+                Sampling::Cosine,
+                Sampling::NextEvent,
+                Sampling::Mis,
+            ][s],
+            sphere_lights: if area {
+                SphereSampling::Area
+            } else {
+                SphereSampling::Cone
+            },
+            max_depth: [Some(1), Some(8), None][depth as usize].or(if rr {
+                None
+            } else {
+                Some(8)
+            }),
+            russian_roulette: rr,
+            offset: Offset::Scaled,
         },
-        max_depth: [Some(1), Some(8), None][depth as usize].or(if rr { None } else { Some(8) }),
-        russian_roulette: rr,
-        offset: Offset::Scaled,
-    })
+    )
 }
 
 fn all_scenes() -> Vec<Scene> {

@@ -135,8 +135,10 @@ fn the_light_sample_exercises_are_the_crates_numbers() {
     // Step 6's exercise: the power-heuristic weights of the same light sample.
     let p_bsdf = 1.0 / std::f32::consts::PI;
     let page = "10_6_mis.md";
-    let w_light = f64::from(render_lessons::pathtrace::mis::power_heuristic(pdf, p_bsdf));
-    let w_bsdf = f64::from(render_lessons::pathtrace::mis::power_heuristic(p_bsdf, pdf));
+    let w_light =
+        f64::from(render_lessons::pathtrace::mis::power_heuristic(pdf, p_bsdf));
+    let w_bsdf =
+        f64::from(render_lessons::pathtrace::mis::power_heuristic(p_bsdf, pdf));
     assert_quotes(page, r"\approx 0.9976$", w_light);
     assert_quotes(page, r"w_\text{bsdf} \approx 0.0024$", w_bsdf);
     assert!((w_light + w_bsdf - 1.0).abs() < 1e-6);

@@ -44,7 +44,9 @@ pub(crate) fn small_args(extra: &[&str]) -> lesson::Args {
 }
 
 /// What `main` makes of the flags: the scene, its camera and the study.
-pub(crate) fn setup(args: &lesson::Args) -> render_lessons::Result<(Scene, Camera, Study)> {
+pub(crate) fn setup(
+    args: &lesson::Args,
+) -> render_lessons::Result<(Scene, Camera, Study)> {
     let lens = (args.lens.aperture, args.lens.focus);
     let Staged { scene, camera } =
         lesson::scene_and_camera(args.scene, (args.width, args.height), lens)?;
@@ -55,8 +57,12 @@ pub(crate) fn setup(args: &lesson::Args) -> render_lessons::Result<(Scene, Camer
 /// What `main` does with the flags: the scene, the study, and its images, on a pool
 /// of `--threads` threads.
 pub(crate) fn render(args: &lesson::Args) -> render_lessons::Result<(Study, Renders)> {
-    let threads =
-        render_lessons::course::lesson::budget(args.width, args.height, args.threads, 20)?;
+    let threads = render_lessons::course::lesson::budget(
+        args.width,
+        args.height,
+        args.threads,
+        20,
+    )?;
     let (scene, camera, study) = setup(args)?;
     let mut samples = 0;
     let renders = with_threads(threads, || {
@@ -85,10 +91,14 @@ fn numbers() {
 #[test]
 #[ignore = "the default 160 x 120 run with a 512-sample reference; run with --release -- --ignored"]
 fn default_run_numbers() {
-    let args = lesson::Args::parse_from(["10_path_tracing", "--out", "target/test-out/10"]);
+    let args =
+        lesson::Args::parse_from(["10_path_tracing", "--out", "target/test-out/10"]);
     let (study, renders) = render(&args).unwrap();
     assert_eq!(renders.non_finite, 0);
-    insta::assert_snapshot!("default_run", lesson::numbers(args.scene, &study, &renders));
+    insta::assert_snapshot!(
+        "default_run",
+        lesson::numbers(args.scene, &study, &renders)
+    );
 }
 
 #[test]
@@ -195,7 +205,11 @@ fn the_lesson_is_the_same_with_jitter_on_any_thread_count() {
     );
 }
 
-pub(crate) fn settings(sampling: Sampling, max_depth: Option<u32>, rr: bool) -> Settings {
+pub(crate) fn settings(
+    sampling: Sampling,
+    max_depth: Option<u32>,
+    rr: bool,
+) -> Settings {
     Settings {
         sampling,
         max_depth,
@@ -252,8 +266,9 @@ fn bad_input_is_an_error_naming_the_parameter() {
     let Staged { scene, camera } = cornell(4, 4).unwrap();
     let mut acc = Accumulator::new(&camera, 0);
     let s = Settings::default();
-    let pass =
-        |acc: &mut Accumulator, s: &Settings, p, spp| acc.render_pass(&scene, &camera, s, p, spp);
+    let pass = |acc: &mut Accumulator, s: &Settings, p, spp| {
+        acc.render_pass(&scene, &camera, s, p, spp)
+    };
     assert_eq!(
         param(pass(&mut acc, &s, PixelSampling::Independent, 0).unwrap_err()),
         "spp"
@@ -301,12 +316,14 @@ fn bad_input_is_an_error_naming_the_parameter() {
     );
 
     let sphere = || Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());
-    let nan = Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, f32::NAN, 1.0));
+    let nan =
+        Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, f32::NAN, 1.0));
     assert_eq!(
         param(Scene::new(vec![nan], Vec3::ZERO).unwrap_err()),
         "emission"
     );
-    let negative = Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, -1.0, 1.0));
+    let negative =
+        Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, -1.0, 1.0));
     assert_eq!(
         param(Scene::new(vec![negative], Vec3::ZERO).unwrap_err()),
         "emission"

@@ -162,6 +162,7 @@ fn pfm_has_its_header_and_rows_from_the_bottom() {
     let path = dir.path().join("x.pfm");
     render_lessons::framebuffer::pfm::save_pfm(&path, &img).unwrap();
     assert_eq!(std::fs::read(&path).unwrap(), bytes);
-    let nan = render_lessons::framebuffer::Framebuffer::from_fn(1, 1, |_, _| Vec3::NAN).unwrap();
+    let nan = render_lessons::framebuffer::Framebuffer::from_fn(1, 1, |_, _| Vec3::NAN)
+        .unwrap();
     assert!(render_lessons::framebuffer::pfm::pfm_bytes(&nan).is_err());
 }

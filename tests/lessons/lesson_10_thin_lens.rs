@@ -1,13 +1,15 @@
-//! Lesson 10, the cameras of the path tracer (chapter 10_8): the thin lens with aperture
-//! 0 is the pinhole camera bit for bit, its rays meet on the plane in focus and its
-//! focus point lies in front of the eye at the focus distance; and the grey furnace
-//! renders through the orthographic camera of Lecture 4.
+//! Lesson 10, the cameras of the path tracer (chapter 10_8): the thin lens with
+//! aperture 0 is the pinhole camera bit for bit, its rays meet on the plane in focus
+//! and its focus point lies in front of the eye at the focus distance; and the grey
+//! furnace renders through the orthographic camera of Lecture 4.
 
 use crate::common::pages::page;
 use crate::lesson_10_path_tracing::settings;
 
 use glam::{Vec2, Vec3};
-use render_lessons::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera, ThinLensCamera};
+use render_lessons::camera::{
+    Camera, Film, Frame, OrthoCamera, PinholeCamera, ThinLensCamera,
+};
 use render_lessons::pathtrace::{Accumulator, PixelSampling, Sampling};
 use render_lessons::ray::Ray;
 use render_lessons::scenes::path_tracing::{Staged, cornell, grey_furnace};
@@ -143,7 +145,8 @@ fn the_grey_furnace_renders_through_an_orthographic_camera() {
         for x in 0..24 {
             // The pixel's nearest and farthest points from the axis, in world units.
             let p = (centre(x, y) - Vec2::splat(12.0)) * 0.125;
-            let (near, far) = (p.abs() - Vec2::splat(0.0625), p.abs() + Vec2::splat(0.0625));
+            let (near, far) =
+                (p.abs() - Vec2::splat(0.0625), p.abs() + Vec2::splat(0.0625));
             let value = image.get(x, y).unwrap();
             if far.length() < 1.0 {
                 assert!(
@@ -169,9 +172,11 @@ fn the_grey_furnace_renders_through_an_orthographic_camera() {
         image.mean()
     );
     // A pinhole `Camera` renders as the thin lens of aperture 0, bit for bit.
-    let pinhole =
-        PinholeCamera::at_origin(Film::new(8, 6, (-1.0, 1.0), (-0.75, 0.75)).unwrap(), 1.0)
-            .unwrap();
+    let pinhole = PinholeCamera::at_origin(
+        Film::new(8, 6, (-1.0, 1.0), (-0.75, 0.75)).unwrap(),
+        1.0,
+    )
+    .unwrap();
     let (u, pixel) = (Vec2::new(0.2, 0.9), Vec2::new(3.3, 4.7));
     let lens = ThinLensCamera::new(pinhole, 0.0, 1.0).unwrap();
     assert_eq!(

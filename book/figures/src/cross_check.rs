@@ -119,7 +119,8 @@ pub fn zmap_figure(text: &str) -> Result<Diagram> {
     }
     d.image_px(2 * GAP, bar_top, bar_w, &rgba);
     for tick in [-4, -2, 0, 2, 4] {
-        let x = 2 * GAP + ((tick as f32 / Z_FULL + 1.0) / 2.0 * (bar_w - 1) as f32) as u32;
+        let x =
+            2 * GAP + ((tick as f32 / Z_FULL + 1.0) / 2.0 * (bar_w - 1) as f32) as u32;
         let at = Vec2::new(x as f32, (bar_top + bar_h + 4) as f32);
         let label = if tick > 0 {
             format!("+{tick}")

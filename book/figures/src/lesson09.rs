@@ -14,7 +14,9 @@ use render_lessons::framebuffer::{Framebuffer, to_srgb8};
 use render_lessons::mesh::{Model, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{CameraTransforms, Shadows, floor_settings, point_light};
-use render_lessons::raster::{ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings};
+use render_lessons::raster::{
+    ClipVertex, Cull, DepthRange, Fragment, ScreenVertex, Varyings,
+};
 use render_lessons::raster::{RasterSettings, rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
@@ -28,9 +30,9 @@ use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
 /// Writes `09_side_by_side.png`, `09_shadows.png`, `09_shadow_bias.png`,
-/// `09_mesh.png`, `09_teapot.png`, `09_z_buffer.png` and `09_pipeline_stages.png`: lesson 09 at its
-/// defaults (480 x 270, spheres of 64 segments, a 1024^2 shadow map, a bias of one
-/// texel footprint), and with `--mesh assets/meshes/teapot.obj`.
+/// `09_mesh.png`, `09_teapot.png`, `09_z_buffer.png` and `09_pipeline_stages.png`:
+/// lesson 09 at its defaults (480 x 270, spheres of 64 segments, a 1024^2 shadow map, a
+/// bias of one texel footprint), and with `--mesh assets/meshes/teapot.obj`.
 pub fn figures(output: &Output) -> Result<()> {
     let scene = still_life(Vec3::ZERO)?;
     let camera = still_life_pinhole(480, 270)?;
@@ -85,9 +87,11 @@ pub fn z_buffer() -> Result<Framebuffer> {
     for models in &orders {
         let image = rasterize(models, &camera, &light, &settings)?;
         let block = 24;
-        let big = Framebuffer::from_fn(image.width() * block, image.height() * block, |x, y| {
-            image.get(x / block, y / block).unwrap_or(Vec3::ZERO)
-        })?;
+        let big = Framebuffer::from_fn(
+            image.width() * block,
+            image.height() * block,
+            |x, y| image.get(x / block, y / block).unwrap_or(Vec3::ZERO),
+        )?;
         images.push(big);
     }
     Framebuffer::beside(&images.iter().collect::<Vec<_>>(), 8)
@@ -179,8 +183,9 @@ fn stage_panels(
         let (column, row) = (k % 2.0, (k / 2.0).floor());
         Vec2::new(20.0 * column + 2.0 + x, 17.0 * (1.0 - row) + 2.0 + y)
     };
-    let label =
-        |d: &mut Diagram, k: f32, s: &str| d.text(at(k, 8.0, -1.0), s, palette::INK, Place::Below);
+    let label = |d: &mut Diagram, k: f32, s: &str| {
+        d.text(at(k, 8.0, -1.0), s, palette::INK, Place::Below)
+    };
     // 1: world (x, y), scaled to fit.
     let w2 = world.map(|v| at(0.0, 5.0 * (v.x + 1.6), 5.0 * (v.y + 0.5)));
     d.outline(&w2, palette::INK, 2.0);
@@ -191,7 +196,8 @@ fn stage_panels(
     label(&mut d, 0.0, "1. three vertices (world x, y)");
     // 2: NDC: the square [-1, 1]^2 drawn 16 x 12.
     let ndc = |x: f32, y: f32| at(1.0, 8.0 + 8.0 * x, 6.0 + 6.0 * y);
-    let square = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| ndc(x, y));
+    let square =
+        [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| ndc(x, y));
     for i in 0..4 {
         d.dashed(square[i], square[(i + 1) % 4], palette::GRID, 1.0);
     }

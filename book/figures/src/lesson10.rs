@@ -15,7 +15,8 @@ use render_lessons::pathtrace::progressive::render_progressive;
 use render_lessons::pathtrace::{Passes, PixelSampling, Sampling, Settings};
 use render_lessons::rng::Rng;
 use render_lessons::sampling::{
-    cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_pdf,
+    cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere,
+    uniform_hemisphere_pdf,
 };
 use render_lessons::scene::Scene;
 use render_lessons::scenes::path_tracing;
@@ -199,10 +200,17 @@ impl Step {
         let mut images = Vec::new();
         for &sampling in self.shown {
             let settings = self.settings(sampling);
-            render_progressive(&scene, &camera, &settings, passes, &[self.spp], |pass| {
-                images.push(pass.image);
-                Ok(())
-            })?;
+            render_progressive(
+                &scene,
+                &camera,
+                &settings,
+                passes,
+                &[self.spp],
+                |pass| {
+                    images.push(pass.image);
+                    Ok(())
+                },
+            )?;
         }
         Framebuffer::beside(&images.iter().collect::<Vec<_>>(), 4)
     }
@@ -249,8 +257,8 @@ fn is_diffuse(scene: &Scene, v: &PathVertex) -> bool {
 /// page), with two real paths of the default render: one that bounces between the
 /// diffuse walls, its light sample at the first bounce drawn dashed, and one that
 /// goes through the glass sphere. Both are recorded by `record_path` from the
-/// estimator's own `Path`, with next event estimation (MIS draws the same random numbers,
-/// so its paths take the same turns).
+/// estimator's own `Path`, with next event estimation (MIS draws the same random
+/// numbers, so its paths take the same turns).
 pub fn path_figure() -> Result<Diagram> {
     let Staged { scene, camera } = path_tracing::cornell(160, 120)?;
     let s = Settings {
@@ -272,7 +280,8 @@ pub fn path_figure() -> Result<Diagram> {
         .collect();
     let glass_path = find_path(&scene, &camera, &s, |scene, p| {
         (4..=5).contains(&p.vertices.len())
-            && scene.objects()[p.vertices[0].object].material == Material::Glass { ior: 1.5 }
+            && scene.objects()[p.vertices[0].object].material
+                == Material::Glass { ior: 1.5 }
             && p.vertices[1].object == p.vertices[0].object
             && is_diffuse(scene, &p.vertices[p.vertices.len() - 1])
             && spread(p, &taken)

@@ -1,7 +1,8 @@
 //! Lesson 10's variance figure: where the noise of the Cornell box comes from, one
 //! sample's standard deviation in every pixel, smallpt's estimator beside MIS
-//! (`course::measure::variance`; `cargo bench -p render-benches --bench path_tracing -- equal-time`
-//! prints the same analysis as a table).
+//! (`course::measure::variance`). The bench prints the same analysis as a table:
+//!
+//!     cargo bench -p render-benches --bench path_tracing -- equal-time
 
 use render_lessons::Result;
 use render_lessons::course::lesson::Output;

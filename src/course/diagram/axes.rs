@@ -13,7 +13,13 @@ impl Diagram {
     ///
     /// A tick value that would cover another label is left out when the diagram is
     /// saved (the tick mark stays).
-    pub fn axes(&mut self, x: (f32, f32), y: (f32, f32), step: f32, names: (&str, &str)) {
+    pub fn axes(
+        &mut self,
+        x: (f32, f32),
+        y: (f32, f32),
+        step: f32,
+        names: (&str, &str),
+    ) {
         self.drawing_axes = true;
         self.arrow(Vec2::new(x.0, 0.0), Vec2::new(x.1, 0.0), palette::INK, 1.5);
         self.arrow(Vec2::new(0.0, y.0), Vec2::new(0.0, y.1), palette::INK, 1.5);

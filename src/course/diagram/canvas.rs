@@ -5,7 +5,9 @@
 use std::path::Path;
 
 use glam::Vec2;
-use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, PremultipliedColorU8, Stroke, Transform};
+use tiny_skia::{
+    FillRule, Paint, PathBuilder, Pixmap, PremultipliedColorU8, Stroke, Transform,
+};
 
 use super::glyphs::draw_label;
 use super::{Diagram, Rgb, Segment};
@@ -42,8 +44,13 @@ impl Diagram {
             },
             ..Stroke::default()
         };
-        self.pixmap
-            .stroke_path(&path, &paint(color), &stroke, Transform::identity(), None);
+        self.pixmap.stroke_path(
+            &path,
+            &paint(color),
+            &stroke,
+            Transform::identity(),
+            None,
+        );
     }
 
     /// The polyline through `points` (diagram coordinates) in pixels, closed if
@@ -87,8 +94,13 @@ impl Diagram {
         };
         let mut p = paint(color);
         p.set_color_rgba8(color.0, color.1, color.2, alpha);
-        self.pixmap
-            .fill_path(&path, &p, FillRule::Winding, Transform::identity(), None);
+        self.pixmap.fill_path(
+            &path,
+            &p,
+            FillRule::Winding,
+            Transform::identity(),
+            None,
+        );
     }
 
     /// An arrow from `from` to `to`, its head at `to`.
@@ -102,7 +114,8 @@ impl Diagram {
         let side = dir.perp() * (size * 0.45);
         let base = b - dir * size;
         let head = [b, base + side, base - side];
-        let head = head.map(|p| (p - self.origin_px) / self.scale * Vec2::new(1.0, -1.0));
+        let head =
+            head.map(|p| (p - self.origin_px) / self.scale * Vec2::new(1.0, -1.0));
         self.fill(&head, color, 255);
     }
 
@@ -153,8 +166,13 @@ impl Diagram {
                 width: width_px,
                 ..Stroke::default()
             };
-            self.pixmap
-                .stroke_path(&path, &paint(color), &stroke, Transform::identity(), None);
+            self.pixmap.stroke_path(
+                &path,
+                &paint(color),
+                &stroke,
+                Transform::identity(),
+                None,
+            );
         }
     }
 

@@ -25,8 +25,8 @@ pub fn cross_section(name: &str, shape: &Shape, ray: &Ray) -> Result<Diagram> {
     ));
     let names = ("x", if in_xy { "y" } else { "z" });
     d.axes((lo.x, hi.x), (lo.y, hi.y), 1.0, names);
-    // The surface's trace in the plane, found by the same `Shape::crossings`: a dot wherever a
-    // grid of rays along x and along the plane's second axis crosses it.
+    // The surface's trace in the plane, found by the same `Shape::crossings`: a dot
+    // wherever a grid of rays along x and along the plane's second axis crosses it.
     for i in -400..=400 {
         let s = i as f32 / 100.0;
         for (o, dir) in [(up * s, Vec3::X), (Vec3::X * s, up)] {

@@ -48,7 +48,9 @@ impl std::fmt::Display for Collision {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Collision::Labels(a, b) => write!(f, "label {a:?} overlaps label {b:?}"),
-            Collision::Axis(a) => write!(f, "label {a:?} lies on an axis or a tick mark"),
+            Collision::Axis(a) => {
+                write!(f, "label {a:?} lies on an axis or a tick mark")
+            }
         }
     }
 }
@@ -68,7 +70,8 @@ impl Diagram {
     pub fn text(&mut self, p: Vec2, s: &str, color: Rgb, place: Place) {
         let at = self.to_px(p);
         let readable = ink_box(at, s, LABEL_SIZE, place).is_none_or(|b| {
-            let on_label = |l: &Label| l.kind != LabelKind::Tick && l.bounds.overlaps(&b);
+            let on_label =
+                |l: &Label| l.kind != LabelKind::Tick && l.bounds.overlaps(&b);
             let on_axis = |g: &Segment| g.axis && b.touches(g.a, g.b, g.half_width);
             !self.labels.iter().any(on_label) && !self.segments.iter().any(on_axis)
         });
@@ -83,9 +86,17 @@ impl Diagram {
     /// line or dot drawn so far (draw the lines first); where none is clear, at the
     /// one that covers least (labels and axes weigh most, then tick values, then each
     /// line or dot). Returns the place taken.
-    pub fn text_clear(&mut self, p: Vec2, s: &str, color: Rgb, places: &[Place]) -> Place {
+    pub fn text_clear(
+        &mut self,
+        p: Vec2,
+        s: &str,
+        color: Rgb,
+        places: &[Place],
+    ) -> Place {
         let at = self.to_px(p);
-        let cost = |place: &Place| ink_box(at, s, LABEL_SIZE, *place).map_or(0, |b| self.cost(&b));
+        let cost = |place: &Place| {
+            ink_box(at, s, LABEL_SIZE, *place).map_or(0, |b| self.cost(&b))
+        };
         let mut best = (u64::MAX, places.first().copied().unwrap_or(Place::Right));
         for place in places {
             let c = cost(place);
@@ -139,7 +150,8 @@ impl Diagram {
         for y in y0..y1 {
             for x in x0..x1 {
                 let p = pixels[(y * w + x) as usize];
-                let deficit = 3 * 255 - p.red() as u32 - p.green() as u32 - p.blue() as u32;
+                let deficit =
+                    3 * 255 - p.red() as u32 - p.green() as u32 - p.blue() as u32;
                 if deficit > 90 {
                     inked += 1;
                 }
@@ -199,12 +211,15 @@ impl Diagram {
         // trace a surface) hides a tick value within a gap of it, as a label does.
         let on_dot = |l: &Label| {
             self.segments.iter().any(|g| {
-                g.a == g.b && g.half_width >= 3.0 && l.bounds.touches(g.a, g.b, g.half_width + GAP)
+                g.a == g.b
+                    && g.half_width >= 3.0
+                    && l.bounds.touches(g.a, g.b, g.half_width + GAP)
             })
         };
         for l in &self.labels {
             let hides = |o: &&Label| o.bounds.overlaps(&l.bounds);
-            let covered = others.iter().any(hides) || shown.iter().any(hides) || on_dot(l);
+            let covered =
+                others.iter().any(hides) || shown.iter().any(hides) || on_dot(l);
             if l.kind == LabelKind::Tick && covered {
                 continue;
             }

@@ -92,9 +92,14 @@ pub struct Diagram {
 }
 
 impl Diagram {
-    /// A white `width` x `height` pixel canvas showing at least [x.0, x.1] x [y.0, y.1],
-    /// centred, with a margin of 50 px.
-    pub fn new(width: u32, height: u32, x: (f32, f32), y: (f32, f32)) -> Result<Diagram> {
+    /// A white `width` x `height` pixel canvas showing at least [x.0, x.1] x [y.0,
+    /// y.1], centred, with a margin of 50 px.
+    pub fn new(
+        width: u32,
+        height: u32,
+        x: (f32, f32),
+        y: (f32, f32),
+    ) -> Result<Diagram> {
         let pixmap = Pixmap::new(width, height).ok_or(Error::Value {
             param: "diagram size",
             problem: Problem::Resolution {
@@ -115,10 +120,11 @@ impl Diagram {
         };
         let (w, h) = (span("x range", x)?, span("y range", y)?);
         let margin = 50.0;
-        let scale = ((width as f32 - 2.0 * margin) / w).min((height as f32 - 2.0 * margin) / h);
+        let scale =
+            ((width as f32 - 2.0 * margin) / w).min((height as f32 - 2.0 * margin) / h);
         let centre = Vec2::new(x.0 + x.1, y.0 + y.1) * 0.5;
-        let origin_px =
-            Vec2::new(width as f32, height as f32) * 0.5 - Vec2::new(centre.x, -centre.y) * scale;
+        let origin_px = Vec2::new(width as f32, height as f32) * 0.5
+            - Vec2::new(centre.x, -centre.y) * scale;
         let mut d = Diagram {
             pixmap,
             origin_px,

@@ -22,7 +22,8 @@ impl Answer for f32 {
         *self == *other
             || (self.is_finite()
                 && other.is_finite()
-                && (self - other).abs() <= TOLERANCE * 1f32.max(self.abs()).max(other.abs()))
+                && (self - other).abs()
+                    <= TOLERANCE * 1f32.max(self.abs()).max(other.abs()))
     }
     fn show(&self) -> String {
         if !self.is_finite() {

@@ -14,7 +14,9 @@ use crate::transform::Transform;
 /// glam stores a matrix column by column: `Mat4::from_cols_array_2d` takes columns,
 /// so write the slide's rows and transpose them (or build the four columns yourself).
 pub fn rotation_y(theta: f32) -> Mat4 {
-    todo!("Coding exercise 1.5 (chapter 01, Geometric transformations): the rotation about Y")
+    todo!(
+        "Coding exercise 1.5 (chapter 01, Geometric transformations): the rotation about Y"
+    )
 }
 
 /// Coding exercise 1.6: the matrix of "first `first`, then `second`", from their
@@ -22,5 +24,7 @@ pub fn rotation_y(theta: f32) -> Mat4 {
 /// `Mat4`). A matrix acts on the column vector to its right. (`first.then(second)` is
 /// the crate's answer.)
 pub fn compose(first: &Transform, second: &Transform) -> Mat4 {
-    todo!("Coding exercise 1.6 (chapter 01, Geometric transformations): compose two transforms")
+    todo!(
+        "Coding exercise 1.6 (chapter 01, Geometric transformations): compose two transforms"
+    )
 }

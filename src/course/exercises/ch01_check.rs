@@ -29,14 +29,15 @@ pub fn check_rotation_y(f: impl Fn(f32) -> Mat4 + Send + Sync + 'static) -> Outc
     rotation_y_checked(Box::new(f))
 }
 
-/// [`check_rotation_y`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_rotation_y`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
 fn rotation_y_checked(f: Box<dyn Fn(f32) -> Mat4 + Send + Sync>) -> Outcome {
     let cases: Vec<Case<f32>> = [0.5f32, 1.0, -0.3, 2.0, std::f32::consts::FRAC_PI_2]
         .into_iter()
         .map(|theta| (format!("theta = {} rad", theta.show()), theta))
         .collect();
-    let reference = |theta: f32| crate::transform::Transform::rotation_y(theta).matrix();
+    let reference =
+        |theta: f32| crate::transform::Transform::rotation_y(theta).matrix();
     run(
         &cases,
         |&theta| reference(theta),
@@ -77,7 +78,9 @@ pub fn check_compose(
 
 /// [`check_compose`] for the answer as a trait object: compiled once, here, not again
 /// for every closure a test passes (see [`super::harness`]).
-fn compose_checked(f: Box<dyn Fn(&Transform, &Transform) -> Mat4 + Send + Sync>) -> Outcome {
+fn compose_checked(
+    f: Box<dyn Fn(&Transform, &Transform) -> Mat4 + Send + Sync>,
+) -> Outcome {
     let theta = 30f32.to_radians();
     let rotate_z = Transform::rotation_z(theta);
     let rotate_x = Transform::rotation_x(theta);

@@ -15,7 +15,9 @@ use crate::ray::Ray;
 /// for a direction such as (1e30, 1e30, 0) |d|^2 overflows `f32`, and for
 /// (1e-30, 1e-30, 0) it underflows to 0; `Ray::new` accepts both, and so must you.
 pub fn point_at(o: Vec3, d: Vec3, t: f32) -> Vec3 {
-    todo!("Coding exercise 2.5 (chapter 02, The ray): the point at distance t along the ray")
+    todo!(
+        "Coding exercise 2.5 (chapter 02, The ray): the point at distance t along the ray"
+    )
 }
 
 /// Coding exercise 2.6: the `t` of the point of the ray's line closest to `p`: for a

@@ -27,7 +27,9 @@ pub const T_CLOSEST: Exercise = Exercise {
 /// Checks `point_at(o, d, t)`: the point r(t) = o + t d/|d|, `t` a distance, also
 /// for directions whose |d|^2 overflows or underflows `f32` (lesson 02's last
 /// pitfall), which `Ray::new` accepts.
-pub fn check_point_at(f: impl Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static) -> Outcome {
+pub fn check_point_at(
+    f: impl Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync + 'static,
+) -> Outcome {
     point_at_checked(Box::new(f))
 }
 
@@ -58,7 +60,8 @@ fn point_at_checked(f: Box<dyn Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Ou
     ]
     .into_iter()
     .map(|(o, d, t, extreme)| {
-        let d_shown = extreme.map_or_else(|| format!("d = {}", d.show()), str::to_string);
+        let d_shown =
+            extreme.map_or_else(|| format!("d = {}", d.show()), str::to_string);
         (
             format!("o = {}, {d_shown}, t = {}", o.show(), t.show()),
             (o, d, t),
@@ -85,11 +88,15 @@ fn point_at_checked(f: Box<dyn Fn(Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Ou
                 hint: "t is a distance only along a unit direction: use d / |d| (d.normalize()), not d",
             },
             Mistake {
-                looks_like: &gives(&|&(_, d, t): &(Vec3, Vec3, f32)| Some(t * d.normalize())),
+                looks_like: &gives(&|&(_, d, t): &(Vec3, Vec3, f32)| {
+                    Some(t * d.normalize())
+                }),
                 hint: "the ray starts at o: r(t) = o + t d/|d|",
             },
             Mistake {
-                looks_like: &gives(&|&(o, d, t): &(Vec3, Vec3, f32)| Some(o - t * d.normalize())),
+                looks_like: &gives(&|&(o, d, t): &(Vec3, Vec3, f32)| {
+                    Some(o - t * d.normalize())
+                }),
                 hint: "positive t goes forward, along d: r(t) = o + t d/|d|",
             },
         ],
@@ -102,7 +109,9 @@ type ClosestArgs = (Ray, Vec3);
 
 /// Checks `t_closest(ray, p)`: the `t` of the point of the ray's line closest to `p`,
 /// (p - o) . d for the unit direction d.
-pub fn check_t_closest(f: impl Fn(&Ray, Vec3) -> f32 + Send + Sync + 'static) -> Outcome {
+pub fn check_t_closest(
+    f: impl Fn(&Ray, Vec3) -> f32 + Send + Sync + 'static,
+) -> Outcome {
     t_closest_checked(Box::new(f))
 }
 
@@ -153,7 +162,9 @@ fn t_closest_checked(f: Box<dyn Fn(&Ray, Vec3) -> f32 + Send + Sync>) -> Outcome
                 hint: "the sign is wrong: t = (p - o) . d, from the origin to the point",
             },
             Mistake {
-                looks_like: &gives(&|&(ray, p): &ClosestArgs| Some((p - ray.origin()).length())),
+                looks_like: &gives(&|&(ray, p): &ClosestArgs| {
+                    Some((p - ray.origin()).length())
+                }),
                 hint: "|p - o| is the distance to p, not its t: the two agree only for a point \
                        ahead on the ray. Project p - o onto the direction: t = (p - o) . d",
             },
@@ -165,7 +176,8 @@ fn t_closest_checked(f: Box<dyn Fn(&Ray, Vec3) -> f32 + Send + Sync>) -> Outcome
             Mistake {
                 looks_like: &gives(&|&(ray, p): &ClosestArgs| {
                     let to_p = p - ray.origin();
-                    (to_p.length() > 0.0).then(|| to_p.dot(ray.direction()) / to_p.length())
+                    (to_p.length() > 0.0)
+                        .then(|| to_p.dot(ray.direction()) / to_p.length())
                 }),
                 hint: "dividing by |p - o| gives the cosine of the angle at o, not a distance: \
                        d already has length 1, so t = (p - o) . d",

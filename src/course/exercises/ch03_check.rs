@@ -88,9 +88,11 @@ pub fn check_pixel_to_plane(
     pixel_to_plane_checked(Box::new(f))
 }
 
-/// [`check_pixel_to_plane`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
-fn pixel_to_plane_checked(f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>) -> Outcome {
+/// [`check_pixel_to_plane`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
+fn pixel_to_plane_checked(
+    f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>,
+) -> Outcome {
     let cases: Vec<Case<PixelArgs>> = films()
         .into_iter()
         .flat_map(|(film, pixels)| {
@@ -106,7 +108,9 @@ fn pixel_to_plane_checked(f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>)
         move |(film, px, py)| f(&film, px, py),
         &[
             Mistake {
-                looks_like: &gives(&|a: &PixelArgs| Some(plane_point(a, a.2 as f32, 0.5))),
+                looks_like: &gives(&|a: &PixelArgs| {
+                    Some(plane_point(a, a.2 as f32, 0.5))
+                }),
                 hint: "py counts rows from the top of the image, the slide's formula counts \
                        them from the bottom: use y_pixel = height - 1 - py (the row flip)",
             },
@@ -121,12 +125,15 @@ fn pixel_to_plane_checked(f: Box<dyn Fn(&Film, u32, u32) -> Vec2 + Send + Sync>)
                 looks_like: &|&(film, px, py): &PixelArgs, got: &Vec2| {
                     // Square pixels of the columns' size, counted from the top or from
                     // the bottom edge.
-                    let ((x_min, x_max), (y_min, y_max)) = (film.x_extent(), film.y_extent());
+                    let ((x_min, x_max), (y_min, y_max)) =
+                        (film.x_extent(), film.y_extent());
                     let size = (x_max - x_min) / film.width() as f32;
                     let x = (px as f32 + 0.5) * size + x_min;
                     let from_top = y_max - (py as f32 + 0.5) * size;
-                    let from_bottom = ((film.height() - 1 - py) as f32 + 0.5) * size + y_min;
-                    got.close(&Vec2::new(x, from_top)) || got.close(&Vec2::new(x, from_bottom))
+                    let from_bottom =
+                        ((film.height() - 1 - py) as f32 + 0.5) * size + y_min;
+                    got.close(&Vec2::new(x, from_top))
+                        || got.close(&Vec2::new(x, from_bottom))
                 },
                 hint: "the rows used the columns' pixel size: a pixel is (x_max - x_min) / width \
                        wide but (y_max - y_min) / height high, and the two differ when the pixels \
@@ -159,13 +166,17 @@ fn from_bottom_left(&(film, p): &PlaneArgs) -> Vec2 {
 
 /// Checks `plane_to_pixel(film, p)`: continuous pixel coordinates of the plane point
 /// `p`, rows counted from the top, a pixel centre at (px + 0.5, py + 0.5).
-pub fn check_plane_to_pixel(f: impl Fn(&Film, Vec2) -> Vec2 + Send + Sync + 'static) -> Outcome {
+pub fn check_plane_to_pixel(
+    f: impl Fn(&Film, Vec2) -> Vec2 + Send + Sync + 'static,
+) -> Outcome {
     plane_to_pixel_checked(Box::new(f))
 }
 
-/// [`check_plane_to_pixel`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
-fn plane_to_pixel_checked(f: Box<dyn Fn(&Film, Vec2) -> Vec2 + Send + Sync>) -> Outcome {
+/// [`check_plane_to_pixel`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
+fn plane_to_pixel_checked(
+    f: Box<dyn Fn(&Film, Vec2) -> Vec2 + Send + Sync>,
+) -> Outcome {
     let mut cases: Vec<Case<PlaneArgs>> = Vec::new();
     for (film, pixels) in films() {
         let ((x0, x1), (y0, y1)) = (film.x_extent(), film.y_extent());
@@ -217,7 +228,8 @@ fn plane_to_pixel_checked(f: Box<dyn Fn(&Film, Vec2) -> Vec2 + Send + Sync>) -> 
                 looks_like: &|a: &PlaneArgs, got: &Vec2| {
                     let s = from_bottom_left(a);
                     let right = Vec2::new(s.x, a.0.height() as f32 - s.y);
-                    *got == got.floor() && (got.close(&right.floor()) || got.close(&right.round()))
+                    *got == got.floor()
+                        && (got.close(&right.floor()) || got.close(&right.round()))
                 },
                 hint: "continuous coordinates, not the index of the pixel: do not round or \
                        floor them (the centre of pixel (0, 0) is (0.5, 0.5))",

@@ -89,7 +89,9 @@ pub fn check_to_world(
 
 /// [`check_to_world`] for the answer as a trait object: compiled once, here, not again
 /// for every closure a test passes (see [`super::harness`]).
-fn to_world_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync>) -> Outcome {
+fn to_world_checked(
+    f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync>,
+) -> Outcome {
     run(
         &basis_cases("b"),
         |a| basis(a).to_world(a.3),
@@ -113,7 +115,9 @@ pub fn check_to_local(
 
 /// [`check_to_local`] for the answer as a trait object: compiled once, here, not again
 /// for every closure a test passes (see [`super::harness`]).
-fn to_local_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync>) -> Outcome {
+fn to_local_checked(
+    f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Vec3 + Send + Sync>,
+) -> Outcome {
     run(
         &basis_cases("a"),
         |a| basis(a).to_local(a.3),

@@ -4,7 +4,9 @@
 
 use glam::Vec3;
 
-use super::harness::{Answer, Case, Exercise, Mistake, Outcome, gives, run, run_compared, v};
+use super::harness::{
+    Answer, Case, Exercise, Mistake, Outcome, gives, run, run_compared, v,
+};
 use crate::camera::{Film, Frame, OrthoCamera, camera_basis};
 
 /// Coding exercise 5.4.
@@ -67,12 +69,14 @@ fn right_basis(&(d, k): &(Vec3, Vec3), expected: &Uvw, got: &Uvw) -> bool {
 /// Checks `camera_basis(d, k)`: the camera basis (u, v, w) from a view direction `d`
 /// and an up vector `k`, neither necessarily of unit length; the last case is
 /// STABILITY S10's up vector nearly parallel to `d`.
-pub fn check_camera_basis(f: impl Fn(Vec3, Vec3) -> Uvw + Send + Sync + 'static) -> Outcome {
+pub fn check_camera_basis(
+    f: impl Fn(Vec3, Vec3) -> Uvw + Send + Sync + 'static,
+) -> Outcome {
     camera_basis_checked(Box::new(f))
 }
 
-/// [`check_camera_basis`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_camera_basis`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
 fn camera_basis_checked(f: Box<dyn Fn(Vec3, Vec3) -> Uvw + Send + Sync>) -> Outcome {
     let mut cases: Vec<Case<(Vec3, Vec3)>> = [
         (v(0.0, 0.0, -1.0), Vec3::Y),
@@ -114,7 +118,9 @@ fn camera_basis_checked(f: Box<dyn Fn(Vec3, Vec3) -> Uvw + Send + Sync>) -> Outc
         &[
             Mistake {
                 looks_like: &|&(d, k): &(Vec3, Vec3), got: &Uvw| {
-                    (d, k) == S10 && off_orthonormal(got) > 1e-5 && got.2.close(&-d.normalize())
+                    (d, k) == S10
+                        && off_orthonormal(got) > 1e-5
+                        && got.2.close(&-d.normalize())
                 },
                 hint: "k is only 1e-5 rad from d here (STABILITY S10): k x w is tiny, and the \
                        rounding of its components tilts u out of the plane perpendicular to w, \
@@ -130,7 +136,8 @@ fn camera_basis_checked(f: Box<dyn Fn(Vec3, Vec3) -> Uvw + Send + Sync>) -> Outc
             },
             Mistake {
                 looks_like: &|&(d, k): &(Vec3, Vec3), got: &Uvw| {
-                    got.1.close(&k.normalize()) && !got.1.close(&wrong(false)(&(d, k)).unwrap().1)
+                    got.1.close(&k.normalize())
+                        && !got.1.close(&wrong(false)(&(d, k)).unwrap().1)
                 },
                 hint: "v is not the up vector: k need not be perpendicular to d. Take v = w x u",
             },
@@ -159,7 +166,12 @@ fn camera_basis_checked(f: Box<dyn Fn(Vec3, Vec3) -> Uvw + Send + Sync>) -> Outc
 // ANCHOR: ortho_ray
 /// A worked solution of exercise 5.5: the origin is a point, turned by B and moved
 /// to p; the direction is an arrow, only turned.
-pub fn ortho_ray_solution(film: &Film, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+pub fn ortho_ray_solution(
+    film: &Film,
+    frame: &Frame,
+    px: u32,
+    py: u32,
+) -> (Vec3, Vec3) {
     let origin = film.pixel_to_plane(px, py).extend(0.0);
     let direction = Vec3::new(0.0, 0.0, -1.0);
     let b = frame.basis();
@@ -216,7 +228,9 @@ fn ortho_ray_checked(
     .into_iter()
     .map(|(frame, px, py, where_)| {
         (
-            format!("pixel ({px}, {py}), 4x3 film over [-8, 8] x [-6, 6], camera {where_}"),
+            format!(
+                "pixel ({px}, {py}), 4x3 film over [-8, 8] x [-6, 6], camera {where_}"
+            ),
             (film, frame, px, py),
         )
     })

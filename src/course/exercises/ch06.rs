@@ -16,7 +16,13 @@ use crate::camera::{Film, Frame};
 /// on the plane z = -s; `film.pixel_to_plane(px, py)` gives the pixel centre's
 /// (x, y) on it. `frame` carries camera space to the world: see
 /// `Frame::point_to_world` and `Frame::vector_to_world`.
-pub fn pinhole_ray(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec3, Vec3) {
+pub fn pinhole_ray(
+    film: &Film,
+    s: f32,
+    frame: &Frame,
+    px: u32,
+    py: u32,
+) -> (Vec3, Vec3) {
     todo!(
         "Coding exercise 6.3 (chapter 06, The pinhole camera): the ray from the eye through the screen point"
     )
@@ -31,5 +37,7 @@ pub fn pinhole_ray(film: &Film, s: f32, frame: &Frame, px: u32, py: u32) -> (Vec
 /// down its -Z, so "in front" means Z < 0. (`PinholeCamera::project` is the crate's
 /// answer.)
 pub fn project(film: &Film, s: f32, frame: &Frame, x: Vec3) -> Option<Vec2> {
-    todo!("Coding exercise 6.4 (chapter 06, The pinhole camera): where a point lands in the image")
+    todo!(
+        "Coding exercise 6.4 (chapter 06, The pinhole camera): where a point lands in the image"
+    )
 }

@@ -34,13 +34,14 @@ pub fn check_pinhole_ray(
     pinhole_ray_checked(Box::new(f))
 }
 
-/// [`check_pinhole_ray`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_pinhole_ray`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
 fn pinhole_ray_checked(
     f: Box<dyn Fn(&Film, f32, &Frame, u32, u32) -> (Vec3, Vec3) + Send + Sync>,
 ) -> Outcome {
     let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).expect("valid film");
-    let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y).expect("valid frame");
+    let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y)
+        .expect("valid frame");
     let origin = Frame::AT_ORIGIN;
     let cases: Vec<Case<PinholeArgs>> = [
         (origin, 8.0, 0, 0, "at the origin"),
@@ -80,7 +81,8 @@ fn pinhole_ray_checked(
         )
     })
     .collect();
-    let screen = |&(film, s, _, px, py): &PinholeArgs| film.pixel_to_plane(px, py).extend(-s);
+    let screen =
+        |&(film, s, _, px, py): &PinholeArgs| film.pixel_to_plane(px, py).extend(-s);
     run(
         &cases,
         |&(film, s, frame, px, py)| {
@@ -102,7 +104,9 @@ fn pinhole_ray_checked(
                        (s - e)/|s - e|",
             },
             Mistake {
-                looks_like: &|_: &PinholeArgs, got: &(Vec3, Vec3)| !got.1.length().close(&1.0),
+                looks_like: &|_: &PinholeArgs, got: &(Vec3, Vec3)| {
+                    !got.1.length().close(&1.0)
+                },
                 hint: "the direction must have length 1: (s - e)/|s - e|",
             },
             Mistake {
@@ -162,7 +166,8 @@ fn project_checked(
     f: Box<dyn Fn(&Film, f32, &Frame, Vec3) -> Option<Vec2> + Send + Sync>,
 ) -> Outcome {
     let film = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).expect("valid film");
-    let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y).expect("valid frame");
+    let placed = Frame::look(v(0.0, 3.0, 6.0), v(0.0, -1.0, -2.0), Vec3::Y)
+        .expect("valid frame");
     let origin = Frame::AT_ORIGIN;
     let at_origin = "at the origin";
     let at_p = "at (0, 3, 6) looking along (0, -1, -2), up (0, 1, 0)";
@@ -294,7 +299,9 @@ fn project_checked(
                        flips the rows (height - sy); use it",
             },
             Mistake {
-                looks_like: &gives(&|a: &ProjectArgs| landing(a, local(a), -local(a).z * a.1)),
+                looks_like: &gives(&|a: &ProjectArgs| {
+                    landing(a, local(a), -local(a).z * a.1)
+                }),
                 hint: "scale by s / -Z: the screen lies at distance s from the eye",
             },
             Mistake {

@@ -39,7 +39,13 @@ pub fn ray_sphere_roots(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<(f32, f32)>
 /// required). The triangle has two sides: a ray may hit it from the back. A point on
 /// an edge or a corner is inside, so that a ray through the edge that two triangles
 /// share hits both.
-pub fn moller_trumbore(o: Vec3, d: Vec3, v0: Vec3, v1: Vec3, v2: Vec3) -> Option<(f32, f32, f32)> {
+pub fn moller_trumbore(
+    o: Vec3,
+    d: Vec3,
+    v0: Vec3,
+    v1: Vec3,
+    v2: Vec3,
+) -> Option<(f32, f32, f32)> {
     todo!(
         "Coding exercise 7.18 (chapter 07, Ray/primitive intersections): the Möller-Trumbore ray/triangle test"
     )

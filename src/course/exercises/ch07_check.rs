@@ -43,8 +43,8 @@ pub fn check_ray_plane_t(
     ray_plane_t_checked(Box::new(f))
 }
 
-/// [`check_ray_plane_t`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_ray_plane_t`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
 fn ray_plane_t_checked(
     f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3) -> Option<f32> + Send + Sync>,
 ) -> Outcome {
@@ -108,7 +108,9 @@ fn ray_plane_t_checked(
                        infinity",
             },
             Mistake {
-                looks_like: &|_: &PlaneArgs, got: &Option<f32>| got.is_some_and(f32::is_infinite),
+                looks_like: &|_: &PlaneArgs, got: &Option<f32>| {
+                    got.is_some_and(f32::is_infinite)
+                },
                 hint: "refuse a quotient that is not finite: d . n is not 0 here, but so small \
                        that (p0 - o) . n / (d . n) overflows to infinity, which a later \
                        comparison such as t > t_min lets through (the plane's pitfall \
@@ -144,8 +146,8 @@ pub fn check_ray_sphere_roots(
     ray_sphere_roots_checked(Box::new(f))
 }
 
-/// [`check_ray_sphere_roots`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_ray_sphere_roots`] for the answer as a trait object: compiled once, here,
+/// not again for every closure a test passes (see [`super::harness`]).
 fn ray_sphere_roots_checked(
     f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Option<(f32, f32)> + Send + Sync>,
 ) -> Outcome {
@@ -199,11 +201,15 @@ fn ray_sphere_roots_checked(
         move |(o, d, c, r)| f(o, d, c, r),
         &[
             Mistake {
-                looks_like: &gives(&|a: &SphereArgs| Some(reference(a).map(|(t0, t1)| (t1, t0)))),
+                looks_like: &gives(&|a: &SphereArgs| {
+                    Some(reference(a).map(|(t0, t1)| (t1, t0)))
+                }),
                 hint: "return the roots in ascending order, (t0, t1) with t0 <= t1",
             },
             Mistake {
-                looks_like: &gives(&|a: &SphereArgs| Some(reference(a).map(|(t0, t1)| (-t1, -t0)))),
+                looks_like: &gives(&|a: &SphereArgs| {
+                    Some(reference(a).map(|(t0, t1)| (-t1, -t0)))
+                }),
                 hint: "the signs are flipped: f = o - c goes from the centre to the ray's origin, \
                        and b = 2 f . d",
             },
@@ -228,7 +234,8 @@ fn ray_sphere_roots_checked(
             Mistake {
                 looks_like: &|&(o, d, c, _): &SphereArgs, got: &Option<(f32, f32)>| {
                     (o - c).dot(d) == 0.0
-                        && got.is_some_and(|(t0, t1)| !(t0.is_finite() && t1.is_finite()))
+                        && got
+                            .is_some_and(|(t0, t1)| !(t0.is_finite() && t1.is_finite()))
                 },
                 hint: "b = 2 f . d is 0 here (STABILITY S2: the origin at the centre, or a \
                        tangent): a sign function with sign(0) = 0 makes \
@@ -276,15 +283,20 @@ fn cramer(&(o, d, v0, v1, v2): &TriangleArgs) -> (f64, f64, f64) {
 /// every one of them, as the crate's does. (With rounding, Möller-Trumbore can still
 /// let such a ray through: STABILITY S4, S5, which the watertight test fixes.)
 pub fn check_moller_trumbore(
-    f: impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)> + Send + Sync + 'static,
+    f: impl Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)>
+    + Send
+    + Sync
+    + 'static,
 ) -> Outcome {
     moller_trumbore_checked(Box::new(f))
 }
 
-/// [`check_moller_trumbore`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_moller_trumbore`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
 fn moller_trumbore_checked(
-    f: Box<dyn Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)> + Send + Sync>,
+    f: Box<
+        dyn Fn(Vec3, Vec3, Vec3, Vec3, Vec3) -> Option<(f32, f32, f32)> + Send + Sync,
+    >,
 ) -> Outcome {
     let down = -Vec3::Z;
     let unit = (Vec3::ZERO, Vec3::X, Vec3::Y);

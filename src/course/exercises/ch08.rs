@@ -17,7 +17,9 @@ use crate::shapes::Shape;
 /// `shape.hit(ray, range)` tests one shape and returns its nearest crossing in that
 /// range (a `Hit`, whose field `t` is the distance).
 pub fn closest(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
-    todo!("Coding exercise 8.3 (chapter 08, Ray casting): the closest-hit loop over every shape")
+    todo!(
+        "Coding exercise 8.3 (chapter 08, Ray casting): the closest-hit loop over every shape"
+    )
 }
 
 /// Coding exercise 8.7: Lambert's cosine law. The colour of a surface point `p` with
@@ -31,6 +33,14 @@ pub fn closest(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit>
 /// direction l from `p` to the light, and V = 1 if `visible`, else 0.
 /// `crate::lighting::AMBIENT` is the ambient share, 0.1. (`lighting::lambert` is the
 /// crate's answer.)
-pub fn lambert(p: Vec3, n: Vec3, albedo: Vec3, light: &PointLight, visible: bool) -> Vec3 {
-    todo!("Coding exercise 8.7 (chapter 08, Ray casting): Lambert's cosine law from a point light")
+pub fn lambert(
+    p: Vec3,
+    n: Vec3,
+    albedo: Vec3,
+    light: &PointLight,
+    visible: bool,
+) -> Vec3 {
+    todo!(
+        "Coding exercise 8.7 (chapter 08, Ray casting): Lambert's cosine law from a point light"
+    )
 }

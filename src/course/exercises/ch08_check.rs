@@ -33,7 +33,11 @@ type ClosestArgs = (Ray, Vec<Shape>, Interval);
 /// A worked solution of exercise 8.3, written as lesson 08 teaches it: ask every
 /// shape for its nearest crossing in `range`, and let each hit shrink `range.max`,
 /// so that a later shape counts only if it is nearer.
-pub fn closest_solution(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
+pub fn closest_solution(
+    ray: &Ray,
+    shapes: &[Shape],
+    range: Interval,
+) -> Option<SceneHit> {
     let mut closest = None;
     let mut range = range;
     for (i, shape) in shapes.iter().enumerate() {
@@ -63,10 +67,9 @@ pub fn each_hit<'a>(
     shapes: &'a [Shape],
     range: Interval,
 ) -> impl DoubleEndedIterator<Item = SceneHit> + 'a {
-    shapes
-        .iter()
-        .enumerate()
-        .filter_map(move |(object, s)| s.hit(ray, range).map(|hit| SceneHit { hit, object }))
+    shapes.iter().enumerate().filter_map(move |(object, s)| {
+        s.hit(ray, range).map(|hit| SceneHit { hit, object })
+    })
 }
 
 /// Checks `closest(ray, shapes, range)`: the closest hit within `range` over all
@@ -82,9 +85,11 @@ pub fn check_closest(
 fn closest_checked(
     f: Box<dyn Fn(&Ray, &[Shape], Interval) -> Option<SceneHit> + Send + Sync>,
 ) -> Outcome {
-    let sphere =
-        |z: f32, r: f32| Shape::Sphere(Sphere::new(v(0.0, 0.0, z), r).expect("valid sphere"));
-    let floor = Shape::Plane(Plane::new(v(0.0, -1.0, 0.0), Vec3::Y).expect("valid plane"));
+    let sphere = |z: f32, r: f32| {
+        Shape::Sphere(Sphere::new(v(0.0, 0.0, z), r).expect("valid sphere"))
+    };
+    let floor =
+        Shape::Plane(Plane::new(v(0.0, -1.0, 0.0), Vec3::Y).expect("valid plane"));
     let down = Ray::new(v(0.0, 0.0, 5.0), -Vec3::Z).expect("valid ray");
     let up = Ray::new(v(0.0, 0.0, 5.0), Vec3::Z).expect("valid ray");
     let slanted = Ray::new(v(0.0, 0.0, 5.0), v(0.0, -1.0, -2.0)).expect("valid ray");
@@ -123,8 +128,9 @@ fn closest_checked(
         &[
             Mistake {
                 looks_like: &|(_, _, range): &ClosestArgs, got: &Option<SceneHit>| {
-                    got.as_ref()
-                        .is_some_and(|found| !(found.hit.t > range.min && found.hit.t < range.max))
+                    got.as_ref().is_some_and(|found| {
+                        !(found.hit.t > range.min && found.hit.t < range.max)
+                    })
                 },
                 hint: "that hit lies outside range: count only range.min < t < range.max. Pass \
                        range itself to shape.hit (not Interval::AHEAD or a range of your own), \
@@ -285,7 +291,9 @@ fn lambert_checked(
                        a surface in shadow or facing away is dim, not black",
             },
             Mistake {
-                looks_like: &|a: &LambertArgs, got: &Vec3| !a.4 && got.close(&Vec3::ZERO),
+                looks_like: &|a: &LambertArgs, got: &Vec3| {
+                    !a.4 && got.close(&Vec3::ZERO)
+                },
                 hint: "a point in shadow keeps its ambient share: albedo AMBIENT, not black",
             },
             Mistake {

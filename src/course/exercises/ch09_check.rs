@@ -59,14 +59,14 @@ fn covers_wrongly(rule: Inside, (a, b, c, p): CoversArgs) -> bool {
         match rule {
             Inside::F32 => {
                 let f = |x: i64| x as f32;
-                let e =
-                    (f(q.0) - f(u.0)) * (f(v.1) - f(u.1)) - (f(q.1) - f(u.1)) * (f(v.0) - f(u.0));
+                let e = (f(q.0) - f(u.0)) * (f(v.1) - f(u.1))
+                    - (f(q.1) - f(u.1)) * (f(v.0) - f(u.0));
                 e.partial_cmp(&0.0).unwrap_or(Equal)
             }
             Inside::F64 => {
                 let f = |x: i64| x as f64;
-                let e =
-                    (f(q.0) - f(u.0)) * (f(v.1) - f(u.1)) - (f(q.1) - f(u.1)) * (f(v.0) - f(u.0));
+                let e = (f(q.0) - f(u.0)) * (f(v.1) - f(u.1))
+                    - (f(q.1) - f(u.1)) * (f(v.0) - f(u.0));
                 e.partial_cmp(&0.0).unwrap_or(Equal)
             }
             Inside::I32 => {
@@ -92,7 +92,9 @@ fn covers_wrongly(rule: Inside, (a, b, c, p): CoversArgs) -> bool {
         match rule {
             Inside::Strict => e == Greater,
             Inside::NonStrict => e != Less,
-            Inside::SignsOnly if clockwise => e == Less || (e == Equal && top_left(u, v)),
+            Inside::SignsOnly if clockwise => {
+                e == Less || (e == Equal && top_left(u, v))
+            }
             _ => e == Greater || (e == Equal && top_left(u, v)),
         }
     })
@@ -108,7 +110,9 @@ pub fn check_covers(
 
 /// [`check_covers`] for the answer as a trait object: compiled once, here, not again
 /// for every closure a test passes (see [`super::harness`]).
-fn covers_checked(f: Box<dyn Fn(Fixed, Fixed, Fixed, Fixed) -> bool + Send + Sync>) -> Outcome {
+fn covers_checked(
+    f: Box<dyn Fn(Fixed, Fixed, Fixed, Fixed) -> bool + Send + Sync>,
+) -> Outcome {
     // Two triangles sharing the diagonal from (0, 0) to (8, 8), both counter-clockwise
     // on the image (positive area): `lower` has a left and a bottom edge, `upper` a
     // top and a right edge; the diagonal is lower's right edge and upper's left edge.
@@ -225,10 +229,9 @@ fn covers_checked(f: Box<dyn Fn(Fixed, Fixed, Fixed, Fixed) -> bool + Send + Syn
         let cases = &cases;
         move |args: &CoversArgs, got: &bool| {
             *got == covers_wrongly(rule, *args)
-                && cases
-                    .iter()
-                    .take_while(|(_, earlier)| earlier != args)
-                    .all(|(_, earlier)| covers_wrongly(rule, *earlier) == reference(earlier))
+                && cases.iter().take_while(|(_, earlier)| earlier != args).all(
+                    |(_, earlier)| covers_wrongly(rule, *earlier) == reference(earlier),
+                )
         }
     };
     let strict = wrong_first_here(Inside::Strict);
@@ -311,8 +314,8 @@ pub fn check_perspective_weights(
     perspective_weights_checked(Box::new(f))
 }
 
-/// [`check_perspective_weights`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_perspective_weights`] for the answer as a trait object: compiled once, here,
+/// not again for every closure a test passes (see [`super::harness`]).
 fn perspective_weights_checked(
     f: Box<dyn Fn([f32; 3], &[ScreenVertex; 3]) -> [f32; 3] + Send + Sync>,
 ) -> Outcome {

@@ -28,5 +28,7 @@ pub fn cosine_sample(u: Vec2) -> (Vec3, f32) {
 /// angle between `n` and `wi`. A direction below the surface (cos(theta) <= 0)
 /// carries nothing, and neither does a direction of density 0 (never divide by it).
 pub fn bounce_weight(albedo: Vec3, n: Vec3, wi: Vec3, pdf: f32) -> Vec3 {
-    todo!("Coding exercise 10.12 (chapter 10, Path tracing): the throughput factor of a bounce")
+    todo!(
+        "Coding exercise 10.12 (chapter 10, Path tracing): the throughput factor of a bounce"
+    )
 }

@@ -2,12 +2,12 @@
 //! answer for each, and the hints for the typical mistakes. The student's functions
 //! are in `ch10.rs`, beside this file; the harness is `harness.rs`.
 //!
-//! The check of exercise 10.11 runs in two rounds. First three statistics over 4096 directions from a
-//! fixed random stream (so the check is never flaky): how many directions are not of
-//! unit length or lie below the horizon, the mean of cos(theta), and an estimate of
-//! the integral of cos(theta) / pi over the hemisphere (1) with the student's own pdf.
-//! Any correct cosine sampler passes them. Then exact cases against the crate's
-//! `cosine_hemisphere` for fixed points of the unit square.
+//! The check of exercise 10.11 runs in two rounds. First three statistics over 4096
+//! directions from a fixed random stream (so the check is never flaky): how many
+//! directions are not of unit length or lie below the horizon, the mean of cos(theta),
+//! and an estimate of the integral of cos(theta) / pi over the hemisphere (1) with the
+//! student's own pdf. Any correct cosine sampler passes them. Then exact cases against
+//! the crate's `cosine_hemisphere` for fixed points of the unit square.
 
 use std::f32::consts::PI;
 
@@ -79,7 +79,9 @@ fn statistic(f: &dyn Fn(Vec2) -> (Vec3, f32), measure: Measure) -> Statistic {
     for _ in 0..SAMPLES {
         let (w, pdf) = f(rng.next_vec2());
         sum += match measure {
-            Measure::Bad => f64::from(u8::from(!((w.length() - 1.0).abs() <= 1e-3 && w.z >= 0.0))),
+            Measure::Bad => {
+                f64::from(u8::from(!((w.length() - 1.0).abs() <= 1e-3 && w.z >= 0.0)))
+            }
             Measure::MeanCos => f64::from(w.z) / f64::from(SAMPLES),
             Measure::Integral => f64::from(w.z / PI / pdf) / f64::from(SAMPLES),
         };
@@ -88,12 +90,14 @@ fn statistic(f: &dyn Fn(Vec2) -> (Vec3, f32), measure: Measure) -> Statistic {
 }
 
 /// Checks `cosine_sample(u)`: a cosine-weighted direction around +Z and its pdf.
-pub fn check_cosine_sample(f: impl Fn(Vec2) -> (Vec3, f32) + Send + Sync + 'static) -> Outcome {
+pub fn check_cosine_sample(
+    f: impl Fn(Vec2) -> (Vec3, f32) + Send + Sync + 'static,
+) -> Outcome {
     cosine_sample_checked(Box::new(f))
 }
 
-/// [`check_cosine_sample`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
+/// [`check_cosine_sample`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
 fn cosine_sample_checked(f: Box<dyn Fn(Vec2) -> (Vec3, f32) + Send + Sync>) -> Outcome {
     let stats: Vec<Case<Measure>> = vec![
         (
@@ -116,12 +120,16 @@ fn cosine_sample_checked(f: Box<dyn Fn(Vec2) -> (Vec3, f32) + Send + Sync>) -> O
         ),
     ];
     let near = |value: f32| {
-        move |m: &Measure, got: &Statistic| *m == Measure::MeanCos && (got.0 - value).abs() < 0.02
+        move |m: &Measure, got: &Statistic| {
+            *m == Measure::MeanCos && (got.0 - value).abs() < 0.02
+        }
     };
     let uniform = near(0.5);
     let no_sqrt = near(PI / 4.0);
     let integral_near = |value: f32| {
-        move |m: &Measure, got: &Statistic| *m == Measure::Integral && (got.0 - value).abs() < 0.02
+        move |m: &Measure, got: &Statistic| {
+            *m == Measure::Integral && (got.0 - value).abs() < 0.02
+        }
     };
     let no_pi = integral_near(1.0 / PI);
     let uniform_pdf = integral_near(4.0 / 3.0);
@@ -220,9 +228,11 @@ pub fn check_bounce_weight(
     bounce_weight_checked(Box::new(f))
 }
 
-/// [`check_bounce_weight`] for the answer as a trait object: compiled once, here, not again
-/// for every closure a test passes (see [`super::harness`]).
-fn bounce_weight_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + Sync>) -> Outcome {
+/// [`check_bounce_weight`] for the answer as a trait object: compiled once, here, not
+/// again for every closure a test passes (see [`super::harness`]).
+fn bounce_weight_checked(
+    f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + Sync>,
+) -> Outcome {
     let grey = Vec3::splat(0.5);
     let red = v(0.75, 0.25, 0.25);
     let up = Vec3::Z;
@@ -293,7 +303,8 @@ fn bounce_weight_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + S
     })
     .collect();
     let plain = |&(albedo, n, wi, pdf): &BounceArgs| albedo / PI * n.dot(wi) / pdf;
-    let right = |&(albedo, n, wi, pdf): &BounceArgs| bounce_weight_solution(albedo, n, wi, pdf);
+    let right =
+        |&(albedo, n, wi, pdf): &BounceArgs| bounce_weight_solution(albedo, n, wi, pdf);
     run(
         &cases,
         right,
@@ -317,7 +328,9 @@ fn bounce_weight_checked(f: Box<dyn Fn(Vec3, Vec3, Vec3, f32) -> Vec3 + Send + S
                        times the light it receives",
             },
             Mistake {
-                looks_like: &|a: &BounceArgs, got: &Vec3| right(a) != Vec3::ZERO && got.close(&a.0),
+                looks_like: &|a: &BounceArgs, got: &Vec3| {
+                    right(a) != Vec3::ZERO && got.close(&a.0)
+                },
                 hint: "the factor is the albedo only for cosine sampling, where pdf = cos/pi \
                        cancels f_r cos: compute f_r cos(theta) / pdf for the pdf you are given",
             },

@@ -175,9 +175,10 @@ fn same(a: &SlabAnswer, b: &SlabAnswer) -> bool {
 }
 
 /// Checks `slab(o, inv_d, min, max, range)`: the interval of the ray inside
-/// the closed box, clipped to `[range.min, range.max]`, against the crate's [`Aabb::slab`],
-/// on rays parallel to slabs (`inv_d` infinite), lying in a face's plane (0 * inf =
-/// NaN), starting inside, touching a flat box, and with d < 0 and d = -0.
+/// the closed box, clipped to `[range.min, range.max]`, against the crate's
+/// [`Aabb::slab`], on rays parallel to slabs (`inv_d` infinite), lying in a face's
+/// plane (0 * inf = NaN), starting inside, touching a flat box, and with d < 0 and d =
+/// -0.
 pub fn check_slab(
     f: impl Fn(Vec3, Vec3, Vec3, Vec3, Interval) -> SlabAnswer + Send + Sync + 'static,
 ) -> Outcome {
@@ -367,10 +368,11 @@ fn slab_checked(
         let cases = &cases;
         move |args: &SlabArgs, got: &SlabAnswer| {
             same(got, &slab_wrongly(rule, args))
-                && cases
-                    .iter()
-                    .take_while(|(_, earlier)| earlier != args)
-                    .all(|(_, earlier)| same(&slab_wrongly(rule, earlier), &reference(earlier)))
+                && cases.iter().take_while(|(_, earlier)| earlier != args).all(
+                    |(_, earlier)| {
+                        same(&slab_wrongly(rule, earlier), &reference(earlier))
+                    },
+                )
         }
     };
     let divides = wrong_first_here(Slab::Divides);

@@ -130,13 +130,19 @@ fn sah_cost_checked(
             Mistake {
                 looks_like: &gives(&|a: &SahArgs| {
                     let (_, left, nl, right, nr) = a;
-                    Some(TRAVERSAL_COST + area(left) * *nl as f32 + area(right) * *nr as f32)
+                    Some(
+                        TRAVERSAL_COST
+                            + area(left) * *nl as f32
+                            + area(right) * *nr as f32,
+                    )
                 }),
                 hint: "divide by the node's surface area: A(child) / A(node) is the probability \
                        that a ray through the node's box hits the child's box",
             },
             Mistake {
-                looks_like: &gives(&|a: &SahArgs| Some(cost_by(a, volume, TRAVERSAL_COST))),
+                looks_like: &gives(&|a: &SahArgs| {
+                    Some(cost_by(a, volume, TRAVERSAL_COST))
+                }),
                 hint: "the heuristic weighs boxes by their surface area, 2 (xy + yz + zx), not \
                        their volume: a random ray hits a box in proportion to its area (and a \
                        flat box has no volume at all)",

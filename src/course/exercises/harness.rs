@@ -93,7 +93,9 @@ impl Reason {
                     None => format!("panicked: {first}"),
                 })
             }
-            Reason::TimedOut { seconds } => Some(format!("no answer within {seconds} s")),
+            Reason::TimedOut { seconds } => {
+                Some(format!("no answer within {seconds} s"))
+            }
         }
     }
 }
@@ -121,7 +123,9 @@ impl fmt::Display for Outcome {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Outcome::Pass => write!(f, "PASS: every case gives the expected answer"),
-            Outcome::NotStarted => write!(f, "NOT STARTED: the function is still todo!()"),
+            Outcome::NotStarted => {
+                write!(f, "NOT STARTED: the function is still todo!()")
+            }
             Outcome::Fail {
                 case,
                 expected,

@@ -78,7 +78,8 @@ fn writable(dir: &Path) -> std::result::Result<(), String> {
     if dir.as_os_str().is_empty() {
         return Err("must name a folder".to_string());
     }
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create the folder ({e})"))?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("cannot create the folder ({e})"))?;
     if !dir.is_dir() {
         return Err("is not a folder".to_string());
     }

@@ -18,10 +18,12 @@ pub fn as_typed(e: &Error) -> String {
 /// (files, and parameters that are no flag) read as the renderer wrote them.
 fn typed(e: &Error, flag_for: impl Fn(&str) -> Option<&'static str>) -> String {
     match e {
-        Error::Value { param, .. } | Error::Machine { param, .. } => match flag_for(param) {
-            Some(flag) => format!("{flag} {}", e.what()),
-            None => e.to_string(),
-        },
+        Error::Value { param, .. } | Error::Machine { param, .. } => {
+            match flag_for(param) {
+                Some(flag) => format!("{flag} {}", e.what()),
+                None => e.to_string(),
+            }
+        }
         Error::File { .. } => e.to_string(),
     }
 }

@@ -4,7 +4,8 @@
 use crate::course::failure::{Failure, LessonResult};
 
 /// Set by Ctrl-C once [`stop_on_ctrl_c`] has been called.
-static INTERRUPTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+static INTERRUPTED: std::sync::atomic::AtomicBool =
+    std::sync::atomic::AtomicBool::new(false);
 
 /// From now on Ctrl-C does not kill the lesson: it asks it to stop at the next
 /// [`check_interrupt`], so that a long render ends with every finished image saved

@@ -1,8 +1,8 @@
 //! What every lesson's example shares, one job per file: reading its flags
 //! ([`command_line`]), checking their values and running a lesson that renders
-//! images ([`budget`](mod@budget)), where its files go and what it prints ([`output`]), Ctrl-C
-//! ([`interrupt`]), and the renderer's errors written with the flags the user typed
-//! ([`errors`]). Bad input is reported in one line on stderr with exit code 2,
+//! images ([`budget`](mod@budget)), where its files go and what it prints ([`output`]),
+//! Ctrl-C ([`interrupt`]), and the renderer's errors written with the flags the user
+//! typed ([`errors`]). Bad input is reported in one line on stderr with exit code 2,
 //! never a panic.
 
 pub mod budget;

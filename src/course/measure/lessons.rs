@@ -10,7 +10,10 @@ use crate::course::report::{BookNumbers, Quoted};
 use crate::error::{Error, Problem, Result};
 
 /// The best of `repeats` wall times of `work`, in milliseconds, and its last result.
-pub fn best_ms<T>(repeats: u32, mut work: impl FnMut() -> Result<T>) -> Result<(f64, T)> {
+pub fn best_ms<T>(
+    repeats: u32,
+    mut work: impl FnMut() -> Result<T>,
+) -> Result<(f64, T)> {
     let mut best = f64::INFINITY;
     let mut result = None;
     for _ in 0..repeats.max(1) {
@@ -79,7 +82,9 @@ pub fn lessons_measured(
     let (small, large) = maps.range();
     let (map, n) = (segments.fixed, maps.fixed);
     let chart = Chart::new(
-        &format!("Lessons 08 and 09 on lesson 08's scene, {width} x {height}, every core"),
+        &format!(
+            "Lessons 08 and 09 on lesson 08's scene, {width} x {height}, every core"
+        ),
         ("time per frame (ms)", Scale::Log),
         (
             "pixels differing from the ray-traced image (%)",
@@ -87,7 +92,9 @@ pub fn lessons_measured(
         ),
     )
     .with(
-        &format!("rasterized + {map}^2 shadow map, spheres of {few} to {many} segments"),
+        &format!(
+            "rasterized + {map}^2 shadow map, spheres of {few} to {many} segments"
+        ),
         segments.line(),
     )
     .with(
@@ -133,7 +140,8 @@ fn lessons_quoted(
     maps: &Sweep,
     no_shadows: (f64, f64),
 ) -> BookNumbers {
-    let mut settings = vec![("ray cast with shadow rays".to_string(), (traced_ms, 0.0))];
+    let mut settings =
+        vec![("ray cast with shadow rays".to_string(), (traced_ms, 0.0))];
     settings.push(("rasterized, no shadows".into(), no_shadows));
     let map = segments.fixed;
     for &(n, p) in &segments.points {

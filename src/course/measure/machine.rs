@@ -123,5 +123,6 @@ pub fn interleaved_min(rounds: u32, work: &mut [&mut dyn FnMut()]) -> Vec<Durati
 /// (`--list`). Benchmarks run their long measurements only then.
 pub fn benchmarking() -> bool {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test" || a == "--list")
+    args.iter().any(|a| a == "--bench")
+        && !args.iter().any(|a| a == "--test" || a == "--list")
 }

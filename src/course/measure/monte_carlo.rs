@@ -87,7 +87,9 @@ impl Estimator {
     /// The path tracer's settings for it: one bounce, no Russian roulette.
     fn settings(self) -> Settings {
         let (sampling, sphere_lights) = match self {
-            Estimator::UniformHemisphere => (Sampling::UniformHemisphere, SphereSampling::Cone),
+            Estimator::UniformHemisphere => {
+                (Sampling::UniformHemisphere, SphereSampling::Cone)
+            }
             Estimator::Cosine => (Sampling::Cosine, SphereSampling::Cone),
             Estimator::LightArea => (Sampling::NextEvent, SphereSampling::Area),
             Estimator::LightCone | Estimator::LightConeJittered => {
@@ -219,7 +221,12 @@ fn powers_of_two(max: u32) -> Vec<u32> {
 /// The chart and its findings: `reps` estimates per point, N up to `max_n`,
 /// `variance_samples` samples for each variance, three timings of `calls` samples
 /// each.
-pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result<Measured> {
+pub fn chart(
+    max_n: u32,
+    reps: u32,
+    variance_samples: u32,
+    calls: u32,
+) -> Result<Measured> {
     let setup = Setup::new()?;
     let ns = powers_of_two(max_n);
     let mut chart = Chart::new(
@@ -306,7 +313,8 @@ pub fn chart(max_n: u32, reps: u32, variance_samples: u32, calls: u32) -> Result
         summary = summary.row(cells);
     }
     let ratio = |a: Estimator, b: Estimator| {
-        let e = |x: Estimator| costs.iter().find(|c| c.0 == x).map_or(f64::NAN, efficiency);
+        let e =
+            |x: Estimator| costs.iter().find(|c| c.0 == x).map_or(f64::NAN, efficiency);
         e(a) / e(b)
     };
     let quoted = BookNumbers::default()

@@ -89,7 +89,8 @@ pub fn self_hit_rate(
     let (mut wrong, mut total) = (0u64, 0u64);
     for (i, aim) in grid(primaries).enumerate() {
         // Primary rays aimed at points spread over the visible cap.
-        let target = centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
+        let target =
+            centre + Vec3::new(aim.x - 0.5, aim.y - 0.5, 1.0).normalize() * 0.9;
         let origin = base + Vec3::splat(i as f32 * 1e-3);
         let ray = Ray::new(origin, target - origin)?;
         let Some(hit) = sphere.hit(&ray, Interval::AHEAD) else {
@@ -150,7 +151,13 @@ pub fn data(quality: Quality) -> Result<Vec<Vec<(f64, f64)>>> {
             DISTANCES
                 .iter()
                 .map(|&x| {
-                    let rate = self_hit_rate(placement, x, METHODS[method].1, primaries, bounces)?;
+                    let rate = self_hit_rate(
+                        placement,
+                        x,
+                        METHODS[method].1,
+                        primaries,
+                        bounces,
+                    )?;
                     Ok((f64::from(x), rate))
                 })
                 .collect()
@@ -226,8 +233,9 @@ pub(crate) fn label(x: f64) -> String {
 /// away) at [`QUOTED_CAMERA_DISTANCES`] (from `rates`, as [`data`] returns them);
 /// table `contact`, S14's contact shadow.
 pub fn quoted(rates: &[Vec<(f64, f64)>]) -> Result<BookNumbers> {
-    let cell =
-        |series: (Placement, usize), x: f32| format!("{:.2}", percent(rates, series, f64::from(x)));
+    let cell = |series: (Placement, usize), x: f32| {
+        format!("{:.2}", percent(rates, series, f64::from(x)))
+    };
     let far = Placement::SphereFar;
     let mut table = Quoted::new(
         "self_hits",
@@ -315,7 +323,8 @@ pub fn measure(quality: Quality) -> Result<Measured> {
     );
     for (&(placement, method), points) in SERIES.iter().zip(&rates) {
         let name = format!("{}, {}", METHODS[method].0, placement.name());
-        chart = chart.with(&name, points.iter().map(|&(x, r)| (x, 100.0 * r)).collect());
+        chart =
+            chart.with(&name, points.iter().map(|&(x, r)| (x, 100.0 * r)).collect());
     }
     let far = Placement::SphereFar;
     let camera = Placement::CameraFar;

@@ -74,8 +74,10 @@ pub fn errors_at(distance: f64, n: u32) -> Result<[f64; 3]> {
     // exact in f32 (Sterbenz) and both frames get the same basis.
     let towards = centre - eye;
     let film = Film::new(n, n, (-0.25, 0.25), (-0.25, 0.25))?;
-    let world_camera = PinholeCamera::new(film, 1.0, Frame::look(eye, towards, Vec3::Y)?)?;
-    let local_camera = PinholeCamera::new(film, 1.0, Frame::look(Vec3::ZERO, towards, Vec3::Y)?)?;
+    let world_camera =
+        PinholeCamera::new(film, 1.0, Frame::look(eye, towards, Vec3::Y)?)?;
+    let local_camera =
+        PinholeCamera::new(film, 1.0, Frame::look(Vec3::ZERO, towards, Vec3::Y)?)?;
     let world_sphere = Sphere::new(centre, 1.0)?;
     let local_sphere = Sphere::new(towards, 1.0)?;
     let (e, c) = (eye.as_dvec3(), centre.as_dvec3());
@@ -98,7 +100,8 @@ pub fn errors_at(distance: f64, n: u32) -> Result<[f64; 3]> {
             let relative = local_sphere
                 .hit(&local_ray, Interval::AHEAD)
                 .map_or(f64::INFINITY, |h| error(e + h.point.as_dvec3()));
-            let world64 = stable_f64(e, d, c, 1.0).map_or(f64::INFINITY, |(t, _)| error(e + t * d));
+            let world64 = stable_f64(e, d, c, 1.0)
+                .map_or(f64::INFINITY, |(t, _)| error(e + t * d));
             for (sum, err) in sums.iter_mut().zip([world, relative, world64]) {
                 *sum += err;
             }

@@ -102,7 +102,8 @@ pub fn error_curve(
     let mut curve = Vec::new();
     for &spp in passes {
         let start = Instant::now();
-        let image = acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp)?;
+        let image =
+            acc.render_pass(scene, camera, &s, PixelSampling::Independent, spp)?;
         seconds += start.elapsed().as_secs_f64();
         curve.push((seconds, rmse(&image, reference)));
     }
@@ -196,7 +197,8 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
             ),
             None => ("-".into(), "-".into()),
         };
-        time_table = time_table.row(vec![name.to_string(), format!("{t:.2}"), to_reach, speed]);
+        time_table =
+            time_table.row(vec![name.to_string(), format!("{t:.2}"), to_reach, speed]);
     }
     // Both tables side by side, for the chapter (timed: a test compares `rmse`).
     let mut summary = Quoted::new(
@@ -230,7 +232,9 @@ pub fn chart(plan: &Plan) -> Result<Measured> {
     }
     let finals: Vec<String> = curves
         .iter()
-        .filter_map(|(name, c)| c.last().map(|(t, e)| format!("{name} {e:.4} in {t:.2} s")))
+        .filter_map(|(name, c)| {
+            c.last().map(|(t, e)| format!("{name} {e:.4} in {t:.2} s"))
+        })
         .collect();
     let findings = vec![
         format!(

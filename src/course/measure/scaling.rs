@@ -22,7 +22,8 @@ use crate::shapes::{Shape, Triangle};
 /// A uv sphere of radius 1 with `n` x `n` segments (2 n (n - 1) triangles), as a
 /// scene of triangle primitives.
 pub fn sphere_scene(n: u32) -> Result<Scene> {
-    let objects = Mesh::uv_sphere(Vec3::ZERO, 1.0, n, n)?.objects(Vec3::new(0.8, 0.5, 0.3))?;
+    let objects =
+        Mesh::uv_sphere(Vec3::ZERO, 1.0, n, n)?.objects(Vec3::new(0.8, 0.5, 0.3))?;
     let light = PointLight {
         position: Vec3::new(0.0, 5.0, 5.0),
         intensity: Vec3::ONE,
@@ -65,7 +66,8 @@ pub fn rays(width: u32, height: u32) -> Result<Vec<Ray>> {
         (-half * aspect, half * aspect),
         (-half, half),
     )?;
-    let camera: Camera = PinholeCamera::new(film, 1.0, Frame::look(eye, -eye, Vec3::Y)?)?.into();
+    let camera: Camera =
+        PinholeCamera::new(film, 1.0, Frame::look(eye, -eye, Vec3::Y)?)?.into();
     Ok((0..height)
         .flat_map(|y| (0..width).map(move |x| (x, y)))
         .map(|(x, y)| camera.ray(x, y))
@@ -75,7 +77,11 @@ pub fn rays(width: u32, height: u32) -> Result<Vec<Ray>> {
 /// Seconds per frame of `rays`, the best of `repeats` runs, one thread, closest
 /// hit only; also the number of rays that hit (so the two structures can be
 /// checked against each other).
-fn seconds_per_frame(rays: &[Ray], repeats: u32, hit: impl Fn(&Ray) -> bool) -> (f64, usize) {
+fn seconds_per_frame(
+    rays: &[Ray],
+    repeats: u32,
+    hit: impl Fn(&Ray) -> bool,
+) -> (f64, usize) {
     let mut best = f64::INFINITY;
     let mut hits = 0;
     for _ in 0..repeats.max(1) {
@@ -104,7 +110,12 @@ pub struct Row {
 
 /// Measures each scene of `scenes` with the rays of a `width` x `height` frame;
 /// the list only up to `list_limit` primitives.
-pub fn rows(scenes: Vec<Scene>, width: u32, height: u32, list_limit: usize) -> Result<Vec<Row>> {
+pub fn rows(
+    scenes: Vec<Scene>,
+    width: u32,
+    height: u32,
+    list_limit: usize,
+) -> Result<Vec<Row>> {
     let rays = rays(width, height)?;
     let mut rows = Vec::new();
     for scene in scenes {
@@ -137,7 +148,8 @@ pub fn rows(scenes: Vec<Scene>, width: u32, height: u32, list_limit: usize) -> R
 pub fn measure(quality: Quality) -> Result<Measured> {
     let (width, height) = quality.pick((96, 54), (192, 108));
     let fans = [1, 2, 4, 8].map(fan_scene);
-    let spheres: &[u32] = quality.pick(&[3, 6, 16, 23, 45], &[3, 6, 16, 23, 45, 71, 224]);
+    let spheres: &[u32] =
+        quality.pick(&[3, 6, 16, 23, 45], &[3, 6, 16, 23, 45, 71, 224]);
     let mut scenes = fans.into_iter().collect::<Result<Vec<_>>>()?;
     for &n in spheres {
         scenes.push(sphere_scene(n)?);
@@ -157,7 +169,9 @@ pub fn measure(quality: Quality) -> Result<Measured> {
         .map(|r| (r.primitives as f64, ms(r.build)))
         .collect();
     let chart = Chart::new(
-        &format!("Primary rays of a {width} x {height} frame, one thread: list against BVH"),
+        &format!(
+            "Primary rays of a {width} x {height} frame, one thread: list against BVH"
+        ),
         (
             "primitives (1-8: a fan of triangles; 12 and up: a uv sphere)",
             Scale::Log,

@@ -34,15 +34,24 @@ fn copies(copies: u32) -> Result<Scene> {
 
 /// Nanoseconds per ray of `cast` over `rays`, the fastest of `rounds`, for each
 /// caster in turn (interleaved).
-fn ns_per_ray(rays: &[Ray], rounds: u32, robust: &Scene, plain: &PlainScene) -> [f64; 2] {
+fn ns_per_ray(
+    rays: &[Ray],
+    rounds: u32,
+    robust: &Scene,
+    plain: &PlainScene,
+) -> [f64; 2] {
     let times = interleaved_min(
         rounds,
         &mut [
             &mut || {
-                std::hint::black_box(rays.iter().map(|r| shadowless(robust, r)).sum::<Vec3>());
+                std::hint::black_box(
+                    rays.iter().map(|r| shadowless(robust, r)).sum::<Vec3>(),
+                );
             },
             &mut || {
-                std::hint::black_box(rays.iter().map(|r| plain.shadowless(r)).sum::<Vec3>());
+                std::hint::black_box(
+                    rays.iter().map(|r| plain.shadowless(r)).sum::<Vec3>(),
+                );
             },
         ],
     );

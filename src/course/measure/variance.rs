@@ -4,10 +4,10 @@
 //! one sample there (lesson 10, step 1). The image's mean squared error is the mean
 //! of sigma^2 / N over the pixels, so the pixels with the largest sigma^2 are where
 //! the time goes. This measures sigma^2 in every pixel from `spp` samples,
-//! sigma^2 = E\[x^2\] - E\[x\]^2 of the grey value (the mean of the three channels), and
-//! sorts it by what the pixel's centre ray meets first: the pixels a strategy cannot
-//! improve (seen through glass or in a mirror, where only the specular bounce finds
-//! the light) set a ceiling on what any light sampling can gain. So do the
+//! sigma^2 = E\[x^2\] - E\[x\]^2 of the grey value (the mean of the three channels),
+//! and sorts it by what the pixel's centre ray meets first: the pixels a strategy
+//! cannot improve (seen through glass or in a mirror, where only the specular bounce
+//! finds the light) set a ceiling on what any light sampling can gain. So do the
 //! caustics anywhere: light that reaches a diffuse surface through mirror or glass,
 //! which the estimator finds only by following the specular bounce, whatever the
 //! strategy; sigma^2 is measured a second time with them left out.
@@ -65,7 +65,8 @@ impl PixelVariance {
     /// The mean of sigma^2 over the image with the caustic light left out of every
     /// sample: what the variance would be if caustics cost nothing.
     pub fn mean_without_caustics(&self) -> f64 {
-        self.without_caustics.iter().sum::<f64>() / self.without_caustics.len().max(1) as f64
+        self.without_caustics.iter().sum::<f64>()
+            / self.without_caustics.len().max(1) as f64
     }
 
     /// The part of [`PixelVariance::mean`] that comes from pixels seeing `seen` first:
@@ -140,7 +141,8 @@ pub fn pixel_variance(
         // Sums of x, x^2 for the whole sample and for its part without caustics.
         let mut moments = DVec4::ZERO;
         for s in 0..spp {
-            let ray = pixel_ray(camera, corner, PixelSampling::Independent, spp, s, &mut rng);
+            let ray =
+                pixel_ray(camera, corner, PixelSampling::Independent, spp, s, &mut rng);
             let (sample, caustics) =
                 with_caustics(scene, Path::new(scene, ray, &mut rng, settings));
             let grey = f64::from(sample.element_sum() / 3.0);
@@ -184,8 +186,10 @@ fn with_caustics(scene: &Scene, path: Path<'_, Scene>) -> (Vec3, Vec3) {
         }
         sample += vertex.direct;
         if let At::Surface { object, .. } = vertex.at {
-            let diffuse = matches!(scene.objects()[object].material, Material::Diffuse { .. });
-            (diffuse_seen, caustic) = (diffuse_seen || diffuse, diffuse_seen && !diffuse);
+            let diffuse =
+                matches!(scene.objects()[object].material, Material::Diffuse { .. });
+            (diffuse_seen, caustic) =
+                (diffuse_seen || diffuse, diffuse_seen && !diffuse);
         }
     }
     (sample, caustics)
@@ -209,7 +213,8 @@ mod tests {
             };
             for (x, y) in (0..12).flat_map(|y| (0..16).map(move |x| (x, y))) {
                 let mut rng = Rng::for_pixel(3, x, y);
-                let ray = camera.ray_through(Vec2::new(x as f32, y as f32), rng.next_vec2());
+                let ray =
+                    camera.ray_through(Vec2::new(x as f32, y as f32), rng.next_vec2());
                 let mut watched = rng;
                 let plain = radiance(&scene, ray, &mut rng, &settings);
                 let path = Path::new(&scene, ray, &mut watched, &settings);

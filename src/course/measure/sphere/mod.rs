@@ -137,7 +137,12 @@ fn textbook_f64(o: DVec3, d: DVec3, centre: DVec3, radius: f64) -> Option<(f64, 
 }
 
 /// The stable roots in f64, as [`Sphere::roots_stable`] computes them in f32.
-pub(crate) fn stable_f64(o: DVec3, d: DVec3, centre: DVec3, radius: f64) -> Option<(f64, f64)> {
+pub(crate) fn stable_f64(
+    o: DVec3,
+    d: DVec3,
+    centre: DVec3,
+    radius: f64,
+) -> Option<(f64, f64)> {
     let f = o - centre;
     let a = d.dot(d);
     let half_b = f.dot(d);
@@ -161,8 +166,12 @@ fn near_root(method: SphereMethod, sphere: &Sphere, ray: &Ray) -> Option<f64> {
     let (o, d) = (ray.origin().as_dvec3(), ray.direction().as_dvec3());
     let (c, r) = (sphere.centre().as_dvec3(), f64::from(sphere.radius()));
     match method {
-        SphereMethod::TextbookF32 => sphere.roots_textbook(ray).first().map(|&t| f64::from(t)),
-        SphereMethod::StableF32 => sphere.roots_stable(ray).first().map(|&t| f64::from(t)),
+        SphereMethod::TextbookF32 => {
+            sphere.roots_textbook(ray).first().map(|&t| f64::from(t))
+        }
+        SphereMethod::StableF32 => {
+            sphere.roots_stable(ray).first().map(|&t| f64::from(t))
+        }
         SphereMethod::TextbookF64 => textbook_f64(o, d, c, r).map(|(t, _)| t),
         SphereMethod::StableF64 => stable_f64(o, d, c, r).map(|(t, _)| t),
     }
@@ -189,7 +198,9 @@ pub fn data(quality: Quality) -> Result<Vec<Curve>> {
         let (c, r) = (sphere.centre().as_dvec3(), f64::from(sphere.radius()));
         let references: Vec<Option<f64>> = rays
             .iter()
-            .map(|ray| reference(ray.origin().as_dvec3(), ray.direction().as_dvec3(), c, r))
+            .map(|ray| {
+                reference(ray.origin().as_dvec3(), ray.direction().as_dvec3(), c, r)
+            })
             .collect();
         let hits = references.iter().flatten().count().max(1) as f64;
         for curve in &mut curves {
@@ -230,8 +241,8 @@ pub(crate) fn fastest<const N: usize>(
 }
 
 /// Nanoseconds per ray/sphere test of each method (both roots), over a fixed batch
-/// of 4096 rays at D/r = 100, in the order of [`SphereMethod::ALL`]: the fastest of a few
-/// rounds.
+/// of 4096 rays at D/r = 100, in the order of [`SphereMethod::ALL`]: the fastest of a
+/// few rounds.
 pub fn times(quality: Quality) -> Result<[f64; 4]> {
     let (sphere, rays) = scene(100.0, 80)?;
     let rays = &rays[..4096];
@@ -347,8 +358,9 @@ mod tests {
         for (o, d, exact) in cases {
             let ray = Ray::new_unnormalised(o, d).unwrap();
             let (o, d) = (o.as_dvec3(), d.as_dvec3());
-            let f32_pair =
-                |roots: crate::ray::Crossings| [f64::from(roots[0]), f64::from(roots[1])];
+            let f32_pair = |roots: crate::ray::Crossings| {
+                [f64::from(roots[0]), f64::from(roots[1])]
+            };
             let textbook = textbook_f64(o, d, c, r).map(|(a, b)| [a, b]);
             let stable = stable_f64(o, d, c, r).map(|(a, b)| [a, b]);
             assert_eq!(textbook, Some(f32_pair(sphere.roots_textbook(&ray))), "{o}");

@@ -17,8 +17,10 @@ use crate::shapes::{Aabb, Triangle};
 /// watertight test hits, each with the triangle's f32 bounding box.
 pub fn box_cases(quality: Quality) -> Result<Vec<(Aabb, Ray)>> {
     let mut rng = Rng::new(12345, 6);
-    let mut p =
-        || 10.0 * Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - Vec3::splat(5.0);
+    let mut p = || {
+        10.0 * Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32())
+            - Vec3::splat(5.0)
+    };
     let mut cases = Vec::new();
     for _ in 0..quality.pick(20_000, 200_000) {
         let Ok(t) = Triangle::new(p(), p(), p()) else {

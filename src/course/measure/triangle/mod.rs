@@ -59,7 +59,9 @@ impl TriangleMethod {
     pub fn name(self) -> &'static str {
         match self {
             TriangleMethod::MollerTrumbore => "Möller-Trumbore",
-            TriangleMethod::MollerTrumboreEpsilon => "Möller-Trumbore, edges widened by 1e-6",
+            TriangleMethod::MollerTrumboreEpsilon => {
+                "Möller-Trumbore, edges widened by 1e-6"
+            }
             TriangleMethod::Watertight => "watertight (Woop et al.)",
         }
     }
@@ -67,11 +69,15 @@ impl TriangleMethod {
     /// Does `ray` hit `tri` at some t > 0?
     pub fn hits(self, tri: &Triangle, ray: &Ray) -> bool {
         match self {
-            TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, Interval::AHEAD).is_some(),
+            TriangleMethod::MollerTrumbore => {
+                tri.moller_trumbore(ray, Interval::AHEAD).is_some()
+            }
             TriangleMethod::MollerTrumboreEpsilon => {
                 moller_trumbore_epsilon(tri, ray, Interval::AHEAD).is_some()
             }
-            TriangleMethod::Watertight => tri.watertight(ray, Interval::AHEAD).is_some(),
+            TriangleMethod::Watertight => {
+                tri.watertight(ray, Interval::AHEAD).is_some()
+            }
         }
     }
 }
@@ -81,7 +87,11 @@ impl TriangleMethod {
 /// result as the crate's method (and kept out of line like it), so that the two are
 /// timed alike and differ only by the epsilon.
 #[inline(never)]
-pub fn moller_trumbore_epsilon(tri: &Triangle, ray: &Ray, range: Interval) -> Option<Barycentric> {
+pub fn moller_trumbore_epsilon(
+    tri: &Triangle,
+    ray: &Ray,
+    range: Interval,
+) -> Option<Barycentric> {
     let [v0, v1, v2] = tri.vertices();
     let (o, d) = (ray.origin(), ray.direction());
     let (e1, e2) = (v1 - v0, v2 - v0);
@@ -204,8 +214,8 @@ pub fn leak_rates(quality: Quality) -> Result<[f64; 3]> {
 }
 
 /// Nanoseconds per ray/triangle test of each method, in the order of
-/// [`TriangleMethod::ALL`]: each ray against every triangle, as in the leak count, the total
-/// time divided by the number of tests; the fastest of a few rounds.
+/// [`TriangleMethod::ALL`]: each ray against every triangle, as in the leak count, the
+/// total time divided by the number of tests; the fastest of a few rounds.
 fn times(tris: &[Triangle], rays: &[Ray], quality: Quality) -> [f64; 3] {
     let calls = quality.pick(2, 10) * rays.len() as u32;
     let per_test = |method: TriangleMethod| {
@@ -230,9 +240,9 @@ fn pareto_front(points: &[(TriangleMethod, f64, f64)]) -> Vec<TriangleMethod> {
     points
         .iter()
         .filter(|&&(_, ns, leak)| {
-            !points
-                .iter()
-                .any(|&(_, ns2, leak2)| ns2 <= ns && leak2 <= leak && (ns2 < ns || leak2 < leak))
+            !points.iter().any(|&(_, ns2, leak2)| {
+                ns2 <= ns && leak2 <= leak && (ns2 < ns || leak2 < leak)
+            })
         })
         .map(|p| p.0)
         .collect()
@@ -320,7 +330,8 @@ pub fn measure(quality: Quality) -> Result<Measured> {
             100.0 * plain as f64 / cases.max(1) as f64
         ),
     ];
-    let quoted = exact_quoted(quality)?.merge(quoted_times(ns, plain_ns, conservative_ns));
+    let quoted =
+        exact_quoted(quality)?.merge(quoted_times(ns, plain_ns, conservative_ns));
     Ok(Measured {
         chart,
         findings,

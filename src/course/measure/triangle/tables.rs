@@ -3,7 +3,9 @@
 //! clock; and the times, which only the lesson measures.
 
 use super::boxes::{BoxCounts, box_cases, box_counts};
-use super::{MESH, SLIVERS, TriangleMethod, bumpy_sphere, leaks, mesh_and_rays, per_edge};
+use super::{
+    MESH, SLIVERS, TriangleMethod, bumpy_sphere, leaks, mesh_and_rays, per_edge,
+};
 use crate::course::measure::Quality;
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
@@ -48,7 +50,9 @@ pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
     ];
     for (name, tris, rays) in sets {
         let mut cells = vec![name, rays.len().to_string()];
-        cells.extend(TriangleMethod::ALL.map(|m| share(leaks(m, tris, rays), rays.len())));
+        cells.extend(
+            TriangleMethod::ALL.map(|m| share(leaks(m, tris, rays), rays.len())),
+        );
         leaks_table = leaks_table.row(cells);
     }
     let BoxCounts {
@@ -73,8 +77,13 @@ pub fn exact_quoted(quality: Quality) -> Result<BookNumbers> {
 /// The times the book quotes from chart 2: table `times` (each triangle test, and
 /// both slab tests, with the ratio to the naive one), and the rows `cost` for the
 /// cost table of "Where methods fail".
-pub(super) fn quoted_times(ns: [f64; 3], plain_ns: f64, conservative_ns: f64) -> BookNumbers {
-    let mut times = Quoted::new("times", true, &["test", "ns per test", "x the naive test"]);
+pub(super) fn quoted_times(
+    ns: [f64; 3],
+    plain_ns: f64,
+    conservative_ns: f64,
+) -> BookNumbers {
+    let mut times =
+        Quoted::new("times", true, &["test", "ns per test", "x the naive test"]);
     for (m, t) in TriangleMethod::ALL.iter().zip(ns) {
         times = times.row(vec![
             m.name().to_string(),

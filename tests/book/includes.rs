@@ -445,6 +445,26 @@ fn pasted() {}
     assert!(problems[3].message.contains("fn pasted"));
 }
 
+/// A listing line wider than the code column is reported, one of exactly
+/// [`CODE_COLUMN`] characters is not, and lines outside the anchor do not count.
+#[test]
+fn a_listing_wider_than_the_code_column_is_reported() {
+    let wide = format!("    let x = {};", "1".repeat(CODE_COLUMN));
+    let fits = "y".repeat(CODE_COLUMN);
+    let code = format!("{wide}\n// ANCHOR: a\n{fits}\n{wide}\n// ANCHOR_END: a\n");
+    let chapter = "```rust\n{{#include ../examples/w.rs:a}}\n```\n";
+    let files = Memory(
+        [("book/ch.md", chapter.to_string()), ("examples/w.rs", code)]
+            .into_iter()
+            .map(|(p, t)| (PathBuf::from(p), t))
+            .collect(),
+    );
+    let mut problems = Vec::new();
+    check_markdown(&files, Path::new("book/ch.md"), chapter, &mut problems);
+    assert_eq!(problems.len(), 1, "{}", render(&problems));
+    assert!(problems[0].message.contains("wider than the code column"));
+}
+
 /// The lines an include shows, as mdBook selects them: a whole file, the lines
 /// between `ANCHOR: name` and `ANCHOR_END: name` without any anchor line, or a line
 /// range.

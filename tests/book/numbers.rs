@@ -19,7 +19,7 @@ use crate::common::pages::rust_files;
 use crate::markdown;
 use crate::printed::{Printed, numbers, printed, supports};
 use crate::quotes::{QUOTES, source};
-use crate::sources::{included, included_text, snapshot_beside, test_sources};
+use crate::sources::{Code, included, included_text, snapshot_beside, test_sources};
 
 use markdown::fence;
 use std::fs;
@@ -242,14 +242,24 @@ fn source_numbers(text: &str) -> Vec<Printed> {
 /// The numbers a page states that agree with none of its sources: what it
 /// includes, the tests it names, and the fragment values [`QUOTES`] pins for it.
 fn unsourced(page: &str, text: &str, sources: &str, quoted: &[Printed]) -> Vec<String> {
-    let known: Vec<Printed> = source_numbers(sources)
+    unsourced_among(page, text, &known_numbers(sources, quoted))
+}
+
+/// The numbers of `sources` and the `quoted` values, without their signs: what a
+/// stated number may agree with.
+fn known_numbers(sources: &str, quoted: &[Printed]) -> Vec<Printed> {
+    source_numbers(sources)
         .into_iter()
         .chain(quoted.iter().copied())
         .map(|p| Printed {
             value: p.value.abs(),
             unit: p.unit,
         })
-        .collect();
+        .collect()
+}
+
+/// [`unsourced`] with the `known` numbers read once (see [`known_numbers`]).
+fn unsourced_among(page: &str, text: &str, known: &[Printed]) -> Vec<String> {
     stated_numbers(text)
         .into_iter()
         .filter(|s| {
@@ -281,6 +291,7 @@ fn every_number_the_book_states_comes_from_a_source() {
     // The measurements of `cargo bench`, by their anchors.
     let benchmarks = fs::read_to_string(root.join("BENCHMARKS.md")).unwrap_or_default();
     code.push(("BENCHMARKS.md".to_string(), benchmarks));
+    let index = Code::new(&code);
     let snapshot = |path: &str| fs::read_to_string(root.join(path)).ok();
     let summary = read("SUMMARY.md").expect("SUMMARY.md");
     let mut problems = Vec::new();
@@ -302,7 +313,7 @@ fn every_number_the_book_states_comes_from_a_source() {
             })
             .collect();
         let includes = included(&text, &read);
-        let tests = test_sources(&text, &code, &snapshot);
+        let tests = test_sources(&text, &index, &snapshot);
         let code_included: String = includes.iter().map(|i| i.code.as_str()).collect();
         let sources = code_included.clone() + &tests;
         let everything = sources.clone()
@@ -313,9 +324,10 @@ fn every_number_the_book_states_comes_from_a_source() {
         problems.extend(unsourced(page, &text, &everything, &quoted));
         // The doc comments a page includes are prose too: their numbers come from
         // the code beside them, the page's other includes or its tests.
+        let known = known_numbers(&sources, &quoted);
         for include in &includes {
             let label = format!("{page}, the comments of {}, line", include.args);
-            problems.extend(unsourced(&label, &include.comments, &sources, &quoted));
+            problems.extend(unsourced_among(&label, &include.comments, &known));
         }
     }
     assert!(
@@ -369,8 +381,8 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
             .then(|| "sigma 0.101".to_string())
     };
     let check = |page: &str| {
-        let sources =
-            included_text(page, &read) + &test_sources(page, &tests, &snapshot);
+        let sources = included_text(page, &read)
+            + &test_sources(page, &Code::new(&tests), &snapshot);
         unsourced("p.md", page, &sources, &[])
     };
     let good = "{{#include f.md:a}}\n\nHits at $t = 2.134$ (2.13), sigma 0.101 of\n16 384 rays.\n\n\
@@ -391,7 +403,8 @@ fn the_stated_number_checker_reads_prose_and_can_fail() {
     );
     // `1e4` in code does not support a stated 5008; the marker names a test too.
     let marker = "5008 rays.\n<!-- checked: tests/07_x.rs::pins_it -->\n";
-    let sources = "let x = 1e4;".to_string() + &test_sources(marker, &tests, &snapshot);
+    let sources = "let x = 1e4;".to_string()
+        + &test_sources(marker, &Code::new(&tests), &snapshot);
     assert_eq!(
         unsourced("p.md", marker, &sources, &[]),
         vec!["p.md:1: `5008`"]

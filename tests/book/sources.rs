@@ -4,6 +4,7 @@
 
 use crate::markdown;
 use crate::printed::anchored_lines;
+use std::collections::HashMap;
 
 use markdown::fence;
 
@@ -96,30 +97,78 @@ pub(crate) fn snapshot_beside(path: &str, name: &str) -> String {
     format!("{dir}/snapshots/{}__{name}.snap", modules.join("__"))
 }
 
+/// The project's Rust files (and `BENCHMARKS.md`), with the functions and constants
+/// a bare name in backticks may find in each, read once: every item of a file of
+/// `tests/`, the unit tests of a file of `src/` (see [`unit_tests`]), nothing of the
+/// rest. A page names hundreds of names; looking each up in every file again was
+/// most of the checker's time.
+pub(crate) struct Code<'a> {
+    files: Vec<(&'a str, &'a str, HashMap<&'a str, &'a str>)>,
+}
+
+impl<'a> Code<'a> {
+    /// The index of `files`, each (path from the root, text).
+    pub(crate) fn new(files: &'a [(String, String)]) -> Code<'a> {
+        let files = files
+            .iter()
+            .map(|(path, text)| {
+                let region = if path.starts_with("tests/") {
+                    text.as_str()
+                } else if path.starts_with("src/") {
+                    unit_tests(text)
+                } else {
+                    ""
+                };
+                let mut tests = HashMap::new();
+                for keyword in ["fn ", "const "] {
+                    for (at, _) in region.match_indices(keyword) {
+                        let rest = &region[at + keyword.len()..];
+                        let end = rest
+                            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                            .unwrap_or(rest.len());
+                        let name = &rest[..end];
+                        if !name.is_empty()
+                            && !tests.contains_key(name)
+                            && let Some(body) = function_body(region, name)
+                        {
+                            tests.insert(name, body);
+                        }
+                    }
+                }
+                (path.as_str(), text.as_str(), tests)
+            })
+            .collect();
+        Code { files }
+    }
+}
+
 /// What a page's numbers may come from in code: the body of each function it
 /// names (see [`named_functions`]) and the snapshots that body asserts. `code`
-/// holds (path, text) for every Rust file of the project; `snapshot`
-/// reads a snapshot by its path (see [`snapshot_beside`]).
+/// holds every Rust file of the project; `snapshot` reads a snapshot by its path (see
+/// [`snapshot_beside`]).
 pub(crate) fn test_sources(
     text: &str,
-    code: &[(String, String)],
+    code: &Code,
     snapshot: &dyn Fn(&str) -> Option<String>,
 ) -> String {
     let mut out = String::new();
-    for (file, name) in named_functions(text) {
-        for (path, source) in code {
+    let mut names = named_functions(text);
+    names.sort();
+    names.dedup();
+    for (file, name) in names {
+        for (path, source, tests) in &code.files {
             // A bare name is a test: in `tests/`, or in a unit test module of `src/`.
-            let (wanted, source) = match &file {
-                Some(f) => (f == path, source.as_str()),
-                None if path.starts_with("src/") => (true, unit_tests(source)),
-                None => (path.starts_with("tests/"), source.as_str()),
+            let region = match &file {
+                Some(f) if f == path && path.ends_with(".md") => {
+                    anchored_lines(source, &name).map(|lines| lines.join("\n"))
+                }
+                Some(f) if f == path => {
+                    function_body(source, &name).map(str::to_string)
+                }
+                None => tests.get(name.as_str()).map(|body| body.to_string()),
+                _ => continue,
             };
-            let region = if path.ends_with(".md") {
-                anchored_lines(source, &name).map(|lines| lines.join("\n"))
-            } else {
-                function_body(source, &name).map(str::to_string)
-            };
-            let Some(body) = region.filter(|_| wanted) else {
+            let Some(body) = region else {
                 continue;
             };
             out.push_str(&body);

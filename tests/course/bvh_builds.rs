@@ -146,8 +146,10 @@ fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
     let nodes = bvh.nodes();
     assert_eq!(std::mem::size_of::<Node>(), 64);
     assert_eq!(std::mem::align_of::<Node>(), 64);
-    let bounded: Vec<usize> = (0..scene.objects().len())
-        .filter(|&i| scene.objects()[i].shape.bounds().is_some())
+    let bounded: Vec<bool> = scene
+        .objects()
+        .iter()
+        .map(|o| o.shape.bounds().is_some())
         .collect();
     let mut seen = vec![0usize; scene.objects().len()];
     let mut max_depth = 0;
@@ -181,10 +183,11 @@ fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
     }
     assert_eq!(visited, bvh.node_count(), "every node reachable once");
     for (i, &count) in seen.iter().enumerate() {
-        let expected = usize::from(bounded.contains(&i));
+        let expected = usize::from(bounded[i]);
         assert_eq!(count, expected, "object {i} in {count} leaves");
     }
-    assert_eq!(bvh.primitives().len(), bounded.len());
+    let bounded_count = bounded.iter().filter(|&&b| b).count();
+    assert_eq!(bvh.primitives().len(), bounded_count);
     assert!(max_depth <= MAX_DEPTH, "depth {max_depth}");
     max_depth
 }

@@ -17,6 +17,7 @@
 //! Standard library only.
 
 use crate::common::pages::rust_files;
+use crate::printed::anchored_lines;
 use crate::sources::unit_tests;
 use std::fs;
 use std::path::Path;
@@ -283,11 +284,7 @@ fn included_stamp(
 ) -> Option<String> {
     let (path, anchor) = args.split_once(':').unwrap_or((args, ""));
     let text = fragment(path)?;
-    let begin = format!("ANCHOR: {anchor}");
-    let shown = text
-        .split_once(&begin)
-        .and_then(|(_, rest)| rest.split_once(&format!("ANCHOR_END: {anchor}")))
-        .map(|(inside, _)| inside.to_string());
+    let shown = anchored_lines(&text, anchor).map(|lines| lines.join("\n"));
     match shown.as_deref().and_then(stamp) {
         Some(found) => Some(found),
         None if path.starts_with("figures/") => stamp(&text),

@@ -17,6 +17,7 @@ use crate::markdown::{
     Selector, directives, fence, has_marker, image_targets, is_remote_or_absolute,
     is_rust_info, parse_include, snapshot_body_start, strip_fragment,
 };
+use crate::printed::anchored_lines;
 
 use std::collections::HashMap;
 use std::fmt;
@@ -465,11 +466,11 @@ fn a_listing_wider_than_the_code_column_is_reported() {
     assert!(problems[0].message.contains("wider than the code column"));
 }
 
-/// The lines an include shows, as mdBook selects them: a whole file, the lines
-/// between `ANCHOR: name` and `ANCHOR_END: name` without any anchor line, or a line
-/// range.
-fn shown_lines<'a>(content: &'a str, selector: &Selector<'_>) -> Vec<&'a str> {
-    let lines = content.lines();
+/// The lines an include shows, as mdBook selects them: a whole file, a line range,
+/// or an anchor's lines ([`anchored_lines`]; none if the anchor is broken, which the
+/// anchor check reports).
+fn shown_lines(content: &str, selector: &Selector<'_>) -> Vec<String> {
+    let lines = content.lines().map(str::to_string);
     match *selector {
         Selector::All => lines.collect(),
         Selector::Lines { start, end } => {
@@ -477,22 +478,6 @@ fn shown_lines<'a>(content: &'a str, selector: &Selector<'_>) -> Vec<&'a str> {
             let last = end.unwrap_or(usize::MAX);
             lines.skip(first).take(last.saturating_sub(first)).collect()
         }
-        Selector::Anchor(name) => {
-            let mut inside = false;
-            let mut shown = Vec::new();
-            for line in lines {
-                if has_marker(line, "ANCHOR_END:", name) {
-                    inside = false;
-                } else if has_marker(line, "ANCHOR:", name) {
-                    inside = true;
-                } else if inside
-                    && !line.contains("ANCHOR:")
-                    && !line.contains("ANCHOR_END:")
-                {
-                    shown.push(line);
-                }
-            }
-            shown
-        }
+        Selector::Anchor(name) => anchored_lines(content, name).unwrap_or_default(),
     }
 }

@@ -26,7 +26,7 @@ use std::time::{Duration, Instant};
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group};
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking};
-use render_lessons::course::measure::variance::{PixelVariance, Seen, pixel_variance};
+use render_lessons::course::measure::variance::{Seen, pixel_variance};
 use render_lessons::framebuffer::Framebuffer;
 use render_lessons::framebuffer::pfm::{load_pfm, save_pfm};
 use render_lessons::pathtrace::progressive::rmse;
@@ -415,48 +415,46 @@ fn variance_analysis() {
         "\nVariance of one sample per pixel ({VARIANCE_SPP} spp each, seed {SEED}), by what the \
          pixel's centre ray meets first:"
     );
+    // Each method's numbers once: mean, diffuse, mirror/glass, lamp or nothing, the
+    // top 1 %'s share (percent), mean without caustics.
+    let numbers: Vec<[f64; 6]> = measured
+        .iter()
+        .map(|(_, v)| {
+            let part = |seen| v.mean_in(&scene, seen);
+            [
+                v.mean(),
+                part(Seen::Diffuse),
+                part(Seen::Specular),
+                part(Seen::LampOrNothing),
+                100.0 * v.top_share(0.01),
+                v.mean_without_caustics(),
+            ]
+        })
+        .collect();
     // Methods as columns: the table stays four columns wide, narrow enough for a phone.
     let names: Vec<_> = measured.iter().map(|(name, _)| *name).collect();
     println!("| one sample's $\\sigma^2$ | {} |", names.join(" | "));
     println!("|---|{}", "---:|".repeat(names.len()));
-    let row = |label: String, value: &dyn Fn(&PixelVariance) -> String| {
-        let cells: Vec<_> = measured.iter().map(|(_, v)| value(v)).collect();
-        println!("| {label} | {} |", cells.join(" | "));
-    };
     let share = |seen| 100.0 * first.pixels_seeing(&scene, seen);
-    row("mean over the image".into(), &|v| {
-        format!("{:.4}", v.mean())
-    });
-    row(
+    let labels = [
+        "mean over the image".to_string(),
         format!("from diffuse pixels ({:.0}%)", share(Seen::Diffuse)),
-        &|v| format!("{:.4}", v.mean_in(&scene, Seen::Diffuse)),
-    );
-    row(
         format!("from mirror/glass pixels ({:.0}%)", share(Seen::Specular)),
-        &|v| format!("{:.4}", v.mean_in(&scene, Seen::Specular)),
-    );
-    row("from the lamp or nothing".into(), &|v| {
-        format!("{:.4}", v.mean_in(&scene, Seen::LampOrNothing))
-    });
-    row("share in the top 1% of pixels".into(), &|v| {
-        format!("{:.0}%", 100.0 * v.top_share(0.01))
-    });
-    row("mean without caustics".into(), &|v| {
-        format!("{:.4}", v.mean_without_caustics())
-    });
-    let means: Vec<_> = measured
-        .iter()
-        .map(|(_, v)| {
-            let part = |seen| v.mean_in(&scene, seen);
-            let diffuse = part(Seen::Diffuse);
-            (
-                v.mean(),
-                diffuse,
-                part(Seen::Specular),
-                v.mean_without_caustics(),
-            )
-        })
-        .collect();
+        "from the lamp or nothing".to_string(),
+        "share in the top 1% of pixels".to_string(),
+        "mean without caustics".to_string(),
+    ];
+    for (i, label) in labels.iter().enumerate() {
+        let cells: Vec<_> = numbers
+            .iter()
+            .map(|n| match i {
+                4 => format!("{:.0}%", n[i]),
+                _ => format!("{:.4}", n[i]),
+            })
+            .collect();
+        println!("| {label} | {} |", cells.join(" | "));
+    }
+    let means: Vec<_> = numbers.iter().map(|n| (n[0], n[1], n[2], n[5])).collect();
     let (a, mis) = (means[0], means[2]);
     println!(
         "sigma^2 ratio (a) / MIS: whole image {:.1}x, diffuse pixels {:.1}x, mirror/glass pixels {:.1}x",

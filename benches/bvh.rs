@@ -28,12 +28,13 @@ use obvhs::ray::RayHit;
 use render_benches::mesh_view::{
     FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
 };
-use render_lessons::bvh::{Bvh, BvhScene};
+use render_lessons::bvh::Bvh;
 use render_lessons::course::measure::machine::{
     CpuWatch, benchmarking, interleaved_min,
 };
 use render_lessons::ray::Interval;
 use render_lessons::raycast::shadowless;
+use render_lessons::scene::BvhScene;
 use render_lessons::scene::Intersect;
 
 /// Build time and rays per second on 99 904 triangles (n = 224).

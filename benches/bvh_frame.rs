@@ -17,8 +17,8 @@ use render_benches::args::{self, number};
 use render_benches::mesh_view::{
     NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
 };
-use render_lessons::bvh::BvhScene;
 use render_lessons::ray::Interval;
+use render_lessons::scene::BvhScene;
 use render_lessons::scene::Intersect;
 
 /// The most rays a frame may have: 4096 x 4096, about half a gigabyte of rays.

@@ -119,7 +119,7 @@ fn source_hash() -> u64 {
         include_str!("../src/pathtrace/progressive.rs"),
         include_str!("../src/rng.rs"),
         include_str!("../src/pathtrace/roulette.rs"),
-        include_str!("../src/scene.rs"),
+        include_str!("../src/scene/mod.rs"),
         include_str!("../src/scenes/path_tracing.rs"),
         include_str!("../src/pathtrace/settings.rs"),
         include_str!("../src/sampling.rs"),

@@ -12,13 +12,13 @@
 
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
-use render_lessons::bvh::BvhScene;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::measure::machine::CpuWatch;
 use render_lessons::mesh::{Mesh, Model};
 use render_lessons::raster::{Cull, RasterSettings, rasterize};
 use render_lessons::raycast::lit_unshadowed;
 use render_lessons::render::{render, thread_pool};
+use render_lessons::scene::BvhScene;
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::TORUS_OBJ;
 

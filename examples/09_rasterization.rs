@@ -14,7 +14,6 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use glam::Vec3;
-use render_lessons::bvh::ListOrTree;
 use render_lessons::course::compare::{
     Agreement, TOLERANCE, agreement, difference, reference,
 };
@@ -26,6 +25,7 @@ use render_lessons::course::{
 use render_lessons::mesh::{Model, check_segments, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Shadows, floor_settings, point_light, rasterize};
+use render_lessons::scene::ListOrTree;
 use render_lessons::scenes::{
     PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_and_mesh, mesh_on_the_floor,
     still_life, still_life_pinhole, still_life_shadows,

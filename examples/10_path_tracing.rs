@@ -16,7 +16,6 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::ProgressBar;
 use render_lessons::Result;
-use render_lessons::bvh::ListOrTree;
 use render_lessons::camera::Camera;
 use render_lessons::course::convergence::{Part, Renders, Study};
 use render_lessons::course::failure::LessonResult;
@@ -29,6 +28,7 @@ use render_lessons::pathtrace::PixelSampling;
 use render_lessons::pathtrace::progressive::rmse;
 use render_lessons::render::with_threads;
 use render_lessons::scene::Intersect;
+use render_lessons::scene::ListOrTree;
 use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
 fn main() -> ExitCode {

@@ -19,7 +19,6 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use render_lessons::Result;
-use render_lessons::bvh::BvhScene;
 use render_lessons::course::compare::{TOLERANCE, agreement, reference};
 use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::lessons::{Sweep, best_ms, lessons_measured};
@@ -33,6 +32,7 @@ use render_lessons::progress;
 use render_lessons::raster::{Shading, floor_settings, point_light, rasterize};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
+use render_lessons::scene::BvhScene;
 use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
 use render_lessons::scenes::{still_life, still_life_pinhole, still_life_shadows};
 use render_lessons::spawn::Offset;

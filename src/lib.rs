@@ -17,14 +17,17 @@
 //!    `progress`: what the machine can give, the maths of Lectures 3 and 4, one
 //!    deterministic random stream per pixel and the samplers that use it, writing
 //!    files whole, progress bars;
-//! 3. `quadratic`, `spawn`: the roots of a t^2 + b t + c = 0, shared by the sphere
-//!    and the quadrics; where a spawned ray starts, and where a shadow ray ends;
-//! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces;
-//! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, and an
-//!    image in memory with its two files (PNG, PFM);
-//! 6. `bvh`, `lighting`, `render`, `mesh`: the same questions through a tree, the
-//!    one Lambert formula, one ray per pixel in parallel, triangle meshes (read,
-//!    made from shapes, placed);
+//! 3. `quadratic`, `spawn`, `bvh`: the roots of a t^2 + b t + c = 0, shared by the
+//!    sphere and the quadrics; where a spawned ray starts, and where a shadow ray
+//!    ends; the bounding volume hierarchy, a tree of boxes that knows its
+//!    primitives by their boxes alone;
+//! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces (a
+//!    triangle mesh among them, one shape with a tree of its own);
+//! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, the same
+//!    questions through a tree, and an image in memory with its two files (PNG,
+//!    PFM);
+//! 6. `lighting`, `render`, `mesh`: the one Lambert formula, one ray per pixel in
+//!    parallel, triangle meshes (read, made from shapes, placed);
 //! 7. `raycast`, `raster`, `pathtrace`: the three renderers;
 //! 8. `scenes`: the lessons' scenes, shared by several lessons;
 //! 9. `prelude`: the renderer's front door, one `use` for a program of your own

@@ -15,7 +15,6 @@
 
 pub use glam::{self, Mat4, Vec2, Vec3};
 
-pub use crate::bvh::{BvhScene, ListOrTree};
 pub use crate::camera::{Camera, Film, Frame, OrthoCamera, PinholeCamera};
 pub use crate::error::{Error, Result};
 pub use crate::framebuffer::Framebuffer;
@@ -24,6 +23,7 @@ pub use crate::mesh::{Mesh, Model};
 pub use crate::pathtrace::{Settings, path_trace};
 pub use crate::raycast::ray_cast;
 pub use crate::render::render;
+pub use crate::scene::{BvhScene, ListOrTree};
 pub use crate::scene::{Intersect, Object, PointLight, Scene};
 pub use crate::scenes::{TEAPOT_OBJ, TORUS_OBJ, asset_path};
 pub use crate::shapes::{Aabb, Plane, Quad, Shape, Sphere, Triangle};

@@ -20,9 +20,7 @@ use glam::Vec3;
 
 pub use super::sah::{ALL_AXES_ABOVE, BINS, MAX_LEAF_SIZE, TRAVERSAL_COST, split_cost};
 use super::sah::{Bounds, Boxes, Item, Split, sah_split};
-use crate::bvh::{Bvh, Child, LeafShapes, MAX_DEPTH, Node, Root};
-use crate::scene::Object;
-use crate::shapes::Aabb;
+use crate::bvh::{Bounded, Bvh, Child, MAX_DEPTH, Node, Root};
 
 /// A node with at most this many primitives is always a leaf.
 pub const LEAF_SIZE: usize = 2;
@@ -38,24 +36,24 @@ pub enum Strategy {
 }
 
 impl Bvh {
-    /// A BVH over `objects` by binned SAH. Objects without a box go to the plain
-    /// list of unbounded ones.
-    pub fn build(objects: &[Object]) -> Bvh {
-        Bvh::build_with(objects, Strategy::Sah)
+    /// A BVH over `primitives` by binned SAH. Primitives without a box go to the
+    /// plain list of unbounded ones.
+    pub fn build(primitives: &[impl Bounded]) -> Bvh {
+        Bvh::build_with(primitives, Strategy::Sah)
     }
 
-    /// A BVH over `objects`, splitting nodes by `strategy`.
-    pub fn build_with(objects: &[Object], strategy: Strategy) -> Bvh {
-        let mut items = Vec::with_capacity(objects.len());
+    /// A BVH over `primitives`, splitting nodes by `strategy`.
+    pub fn build_with(primitives: &[impl Bounded], strategy: Strategy) -> Bvh {
+        let mut items = Vec::with_capacity(primitives.len());
         let mut unbounded = Vec::new();
-        for (index, object) in objects.iter().enumerate() {
-            match (object.shape.bounds(), u32::try_from(index)) {
-                (Some(b), Ok(index)) => items.push(Item {
+        for (index, primitive) in primitives.iter().enumerate() {
+            match (primitive.corners(), u32::try_from(index)) {
+                (Some((min, max)), Ok(index)) => items.push(Item {
                     bounds: Bounds {
-                        min: b.min().into(),
-                        max: b.max().into(),
+                        min: min.into(),
+                        max: max.into(),
                     },
-                    centroid: b.centre().into(),
+                    centroid: (0.5 * (min + max)).into(),
                     index,
                 }),
                 _ => unbounded.push(index),
@@ -75,14 +73,10 @@ impl Bvh {
                 count,
             }
         });
-        let primitives: Vec<usize> =
-            items.iter().map(|item| item.index as usize).collect();
-        let shapes = LeafShapes::new(primitives.iter().map(|&i| &objects[i].shape));
         Bvh {
             root,
             nodes: builder.nodes,
-            primitives,
-            shapes,
+            primitives: items.iter().map(|item| item.index as usize).collect(),
             unbounded,
         }
     }
@@ -92,16 +86,16 @@ impl Bvh {
     /// N(leaf) A(leaf) / A(root). `None` for an empty tree or a root box of no area.
     pub fn sah_cost(&self) -> Option<f32> {
         let (root_box, root) = self.root()?;
-        let root_area = f64::from(root_box.surface_area());
+        let root_area = f64::from(surface_area(root_box));
         if root_area <= 0.0 {
             return None;
         }
-        let weighted = |(bounds, child): (Aabb, Child)| {
+        let weighted = |(bounds, child): ((Vec3, Vec3), Child)| {
             let weight = match child {
                 Child::Leaf { count, .. } => count as f64,
                 Child::Node(_) => f64::from(TRAVERSAL_COST),
             };
-            weight * f64::from(bounds.surface_area())
+            weight * f64::from(surface_area(bounds))
         };
         let children = self
             .nodes
@@ -113,6 +107,13 @@ impl Bvh {
             .sum();
         Some((total / root_area) as f32)
     }
+}
+
+/// The area of the surface of the box with corners `min` and `max`, 2 (xy + yz + zx)
+/// of its extent, as [`crate::shapes::Aabb::surface_area`] computes it.
+fn surface_area((min, max): (Vec3, Vec3)) -> f32 {
+    let e = max - min;
+    2.0 * (e.x * e.y + e.y * e.z + e.z * e.x)
 }
 
 /// The tree as it grows.

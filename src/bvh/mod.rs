@@ -1,8 +1,13 @@
-//! The bounding volume hierarchy: a scene's questions answered through a tree of boxes.
+//! The bounding volume hierarchy: a tree of boxes over primitives, so that a ray
+//! tests the few primitives whose boxes it passes through instead of every one.
 //!
-//! A bounding volume hierarchy (BVH): a binary tree of boxes over a scene's
-//! primitives, so that a ray tests the few primitives whose boxes it passes through
-//! instead of every one (lesson 11, where a measured chart shows when it pays).
+//! A bounding volume hierarchy (BVH) is a binary tree of boxes (lesson 11, where a
+//! measured chart shows when it pays). The tree knows its primitives by their boxes
+//! and their indices only ([`Bounded`]); what a primitive is, and how a ray is tested
+//! against it, belongs to whoever built the tree: a scene's objects
+//! ([`crate::scene::BvhScene`]) or a mesh's triangles
+//! (`shapes::TriangleMesh`). Both search it with the one walk and the one
+//! closest-hit rule here ([`Bvh::closest`]).
 //!
 //! - [`build`]: binned surface area heuristic (MacDonald and Booth 1990; binning after
 //!   Wald 2007), into a flat array of 64-byte interior nodes, each holding its two
@@ -10,28 +15,27 @@
 //! - [`traverse`]: an iterative walk with a small fixed stack; at each interior node
 //!   both children's boxes are tested and the nearer one visited first, with the
 //!   conservative slab test of Ize 2013 on the node boxes (STABILITY S6) and the
-//!   ray's 1/d computed once ([`crate::shapes::PreparedRay`]).
+//!   ray's 1/d computed once ([`BoxRay`]).
 //!
-//! - [`list_or_tree`]: the choice between a scene's plain list and the tree, by the
-//!   number of ray-primitive tests a render would make.
-//!
-//! Planes and quadrics have no box; they are kept in a plain list and tested on
-//! every ray, before the tree. The tree keeps its own copy of the bounded shapes in
-//! leaf order, so that a leaf's primitives sit next to each other in memory.
+//! Primitives without a box (planes, quadrics) are kept in a plain list and tested
+//! on every ray, before the tree.
 
 use glam::{Vec3, Vec3A, Vec4};
 
-use crate::ray::{Interval, Ray};
-use crate::scene::{Intersect, Scene, SceneHit};
-use crate::shapes::{Aabb, Candidate, PreparedRay, Shape, Triangle};
-
 pub mod build;
-pub mod list_or_tree;
 mod sah;
 mod slab;
 pub mod traverse;
 
-pub use list_or_tree::{BRUTE_FORCE_TESTS, ListOrTree};
+pub use slab::BoxRay;
+pub use traverse::{Crossing, Nearest, TIE_MARGIN};
+
+/// What the tree needs to know of a primitive: the corners (min, max) of its box, or
+/// `None` for a primitive without one, which is tested on every ray.
+pub trait Bounded {
+    /// The box's (min, max) corners.
+    fn corners(&self) -> Option<(Vec3, Vec3)>;
+}
 
 /// The most levels a tree may have, root included; also the size of the traversal
 /// stack, which never holds more entries than the tree is deep.
@@ -116,14 +120,12 @@ impl Node {
         (self.first[i], self.count[i])
     }
 
-    /// Child `i` (0 or 1): its box, and whether it is a leaf or a node.
-    pub fn child(&self, i: usize) -> (Aabb, Child) {
+    /// Child `i` (0 or 1): its box's (min, max) corners, and whether it is a leaf
+    /// or a node.
+    pub fn child(&self, i: usize) -> ((Vec3, Vec3), Child) {
         let (min, max) = self.corners(i);
         let (first, count) = self.packed(i);
-        (
-            Aabb::from_checked(min.into(), max.into()),
-            Child::unpacked(first, count),
-        )
+        ((min.into(), max.into()), Child::unpacked(first, count))
     }
 }
 
@@ -159,70 +161,27 @@ pub(crate) struct Root {
     pub(crate) count: u32,
 }
 
-/// The tree's own copy of the bounded shapes, in leaf order: triangles alone when
-/// every one is a triangle (a mesh: 36 bytes each instead of a [`Shape`]'s 80, so a
-/// leaf's primitives share fewer cache lines, and one test with no `match`), else
-/// the shapes.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) enum LeafShapes {
-    Triangles(Vec<Triangle>),
-    Shapes(Vec<Shape>),
-}
-
-impl LeafShapes {
-    /// `shapes` as triangles if every one is (copied once, not as shapes first, into
-    /// a vector made at its full size).
-    pub(crate) fn new<'a>(
-        shapes: impl ExactSizeIterator<Item = &'a Shape> + Clone,
-    ) -> LeafShapes {
-        let mut triangles = Vec::with_capacity(shapes.len());
-        for shape in shapes.clone() {
-            match shape {
-                Shape::Triangle(t) => triangles.push(*t),
-                _ => return LeafShapes::Shapes(shapes.cloned().collect()),
-            }
-        }
-        LeafShapes::Triangles(triangles)
-    }
-
-    /// Primitive `p`'s candidate within `range` (its kind's `candidate`).
-    #[inline(always)]
-    pub(crate) fn candidate(
-        &self,
-        p: usize,
-        ray: &PreparedRay,
-        range: Interval,
-    ) -> Option<Candidate> {
-        match self {
-            LeafShapes::Triangles(t) => t[p].candidate(ray, range),
-            LeafShapes::Shapes(s) => s[p].candidate(ray, range),
-        }
-    }
-}
-
-/// A BVH over a slice of [`Object`](crate::scene::Object)s. It answers with indices
-/// into that slice, so it must be used with the slice it was built from.
+/// A BVH over a slice of primitives ([`Bvh::build`]). It answers with indices into
+/// that slice, so it must be used with the slice it was built from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bvh {
-    /// The root's box and what it is; `None` if no object has a box.
+    /// The root's box and what it is; `None` if no primitive has a box.
     root: Option<Root>,
     /// The interior nodes, the root first if it is one. Empty if the root is a leaf.
     nodes: Vec<Node>,
-    /// Object indices, each leaf's contiguous.
+    /// Primitive indices, each leaf's contiguous.
     primitives: Vec<usize>,
-    /// The shapes of `primitives`, in the same order.
-    shapes: LeafShapes,
-    /// Objects without a box (planes, quadrics), tested on every ray.
+    /// Primitives without a box (planes, quadrics), tested on every ray.
     unbounded: Vec<usize>,
 }
 
 impl Bvh {
-    /// The root's box and what it is (a leaf, or node 0); `None` if no object has a
-    /// box.
-    pub fn root(&self) -> Option<(Aabb, Child)> {
+    /// The root's box, as its (min, max) corners, and what it is (a leaf, or node 0);
+    /// `None` if no primitive has a box.
+    pub fn root(&self) -> Option<((Vec3, Vec3), Child)> {
         let r = self.root?;
-        let bounds = Aabb::from_checked(r.min.into(), r.max.into());
-        Some((bounds, Child::unpacked(r.first, r.count)))
+        let corners = (r.min.into(), r.max.into());
+        Some((corners, Child::unpacked(r.first, r.count)))
     }
 
     /// The interior nodes, the root first if it is one (empty if the root is a leaf
@@ -240,61 +199,14 @@ impl Bvh {
         }
     }
 
-    /// The object indices the leaves refer to.
+    /// The primitive indices the leaves refer to, each leaf's contiguous: a leaf
+    /// `Child::Leaf { first, count }` holds `primitives()[first..first + count]`.
     pub fn primitives(&self) -> &[usize] {
         &self.primitives
     }
 
-    /// The objects with no box, tested on every ray.
+    /// The primitives with no box, tested on every ray.
     pub fn unbounded(&self) -> &[usize] {
         &self.unbounded
-    }
-}
-
-/// A [`Scene`] together with a BVH over its objects: the same questions as the scene
-/// ([`Intersect::closest`], [`Intersect::occluded`]) with the same answers, faster
-/// once the scene is big. The scene itself is unchanged.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BvhScene {
-    scene: Scene,
-    bvh: Bvh,
-}
-
-impl BvhScene {
-    /// Builds the BVH over `scene`'s objects ([`Bvh::build`]).
-    pub fn new(scene: Scene) -> BvhScene {
-        let bvh = Bvh::build(scene.objects());
-        BvhScene { scene, bvh }
-    }
-
-    /// The scene (background, light, objects).
-    pub fn scene(&self) -> &Scene {
-        &self.scene
-    }
-
-    /// The tree.
-    pub fn bvh(&self) -> &Bvh {
-        &self.bvh
-    }
-}
-
-/// The tree answers what the list answers ([`Scene::closest`], [`Scene::occluded`]):
-/// the nearest hit within the range, on a tie (equal `t`) the object that
-/// comes first in the scene's list; and whether anything lies on the ray.
-impl Intersect for BvhScene {
-    fn scene(&self) -> &Scene {
-        &self.scene
-    }
-
-    fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        self.bvh.closest(self.scene.objects(), ray, range)
-    }
-
-    fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
-        self.bvh.closest_object(self.scene.objects(), ray, range)
-    }
-
-    fn occluded(&self, ray: &Ray, range: Interval) -> bool {
-        self.bvh.occluded(self.scene.objects(), ray, range)
     }
 }

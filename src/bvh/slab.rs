@@ -9,19 +9,19 @@
 //! plain list would find (STABILITY S6). It gives the entries that test gives, bit
 //! for bit (the test `box_entry_is_the_aabbs_conservative_slab_entry`).
 
-use glam::{Vec3A, Vec4, Vec4Swizzles};
+use glam::{Vec3, Vec3A, Vec4, Vec4Swizzles};
 
 use crate::bvh::Node;
-use crate::ray::Interval;
-use crate::shapes::PreparedRay;
-use crate::shapes::aabb::{FAR_MARGIN, moved_out};
+use crate::float::{FAR_MARGIN, moved_out};
+use crate::ray::{Interval, Ray};
 
 // ANCHOR: box_entry
 /// The ray as the node boxes see it, computed once per ray: the origin and 1/d as
 /// 4-wide vectors (one lane unused), each axis's origin and 1/d in all four lanes
-/// (for [`both_entries`], whose four lanes are planes of one axis), and whether 1/d
+/// (for `both_entries`, whose four lanes are planes of one axis), and whether 1/d
 /// is finite on every axis.
-pub(super) struct BoxRay {
+#[derive(Clone, Copy, Debug)]
+pub struct BoxRay {
     origin: Vec3A,
     inv_d: Vec3A,
     axes: [(Vec4, Vec4); 3],
@@ -29,13 +29,15 @@ pub(super) struct BoxRay {
 }
 
 impl BoxRay {
-    pub(super) fn new(ray: &PreparedRay) -> BoxRay {
-        BoxRay::with_inv_d(ray.ray().origin().into(), ray.inv_d.into())
+    /// `ray` as the boxes see it.
+    pub fn new(ray: &Ray) -> BoxRay {
+        BoxRay::with_inv_d(ray.origin(), ray.direction().recip())
     }
 
     /// The ray from `origin` whose direction has the reciprocal `inv_d` (for a test
-    /// that has 1/d before it has the rest of a [`PreparedRay`]).
-    pub(super) fn with_inv_d(origin: Vec3A, inv_d: Vec3A) -> BoxRay {
+    /// that has 1/d already: [`crate::shapes::PreparedRay`]).
+    pub fn with_inv_d(origin: Vec3, inv_d: Vec3) -> BoxRay {
+        let (origin, inv_d) = (Vec3A::from(origin), Vec3A::from(inv_d));
         let axis = |a: usize| (Vec4::splat(origin[a]), Vec4::splat(inv_d[a]));
         BoxRay {
             origin,
@@ -211,7 +213,7 @@ mod tests {
                 continue;
             };
             let node = Node::new(boxes, [Child::Node(0); 2]);
-            let box_ray = BoxRay::new(&PreparedRay::new(&ray));
+            let box_ray = BoxRay::new(&ray);
             let each = [0, 1].map(|i| box_entry(node.corners(i), &box_ray, range));
             assert_eq!(both_entries(&node, &box_ray, range), each, "case {n}");
             compared += 1;
@@ -244,7 +246,7 @@ mod tests {
             let expected = aabb
                 .slab_conservative(&ray, range)
                 .map(|span| span.t0.to_bits());
-            let box_ray = BoxRay::new(&PreparedRay::new(&ray));
+            let box_ray = BoxRay::new(&ray);
             let entry =
                 box_entry((min.into(), max.into()), &box_ray, range).map(f32::to_bits);
             assert_eq!(entry, expected, "case {n}: {aabb:?} {ray:?} {range:?}");

@@ -1,4 +1,5 @@
-//! Walking a BVH: which primitives a ray must be tested against.
+//! Walking a BVH: which primitives a ray must be tested against, and the nearest
+//! crossing among them.
 //!
 //! Iterative, with a fixed stack of [`MAX_DEPTH`] entries (the build never makes a
 //! deeper tree). At an interior node both children's boxes are tested; the nearer
@@ -10,20 +11,26 @@
 //!
 //! The node boxes are tested by the conservative slab test of `src/bvh/slab.rs`
 //! (STABILITY S6), both children of a node at once, with the ray's 1/d worked out
-//! once per ray.
+//! once per ray ([`BoxRay`]). The primitives themselves are tested by the caller,
+//! leaf by leaf: the tree knows their boxes, not what they are.
 
-use glam::Vec3A;
+use std::ops::Range;
 
 use crate::bvh::slab::{BoxRay, both_entries, box_entry};
-use crate::bvh::{Bvh, LeafShapes, MAX_DEPTH};
+use crate::bvh::{Bvh, MAX_DEPTH};
 use crate::float::gamma;
 use crate::ray::{Interval, Ray};
-use crate::scene::{Object, SceneHit};
-use crate::shapes::{Candidate, PreparedRay};
 
 /// The relative margin added to the far end of the box tests: 4 gamma(3), about
-/// 7e-7 (a few ulps of `t`). See `Nearest::box_limit`.
+/// 7e-7 (a few ulps of `t`). See [`Nearest::box_limit`].
 pub const TIE_MARGIN: f32 = 4.0 * gamma(3);
+
+/// What the tree's search needs to know of a primitive's crossing: how far along
+/// the ray it lies.
+pub trait Crossing: Copy {
+    /// The ray parameter of the crossing.
+    fn t(&self) -> f32;
+}
 
 /// What the walk does after a leaf.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -34,14 +41,16 @@ enum Walk {
     Stop,
 }
 
-/// The nearest hit found so far: its candidate and object index.
+/// The nearest crossing found so far, `C` (a primitive's test's answer), and the
+/// index of its primitive.
 ///
-/// Ties: the plain list keeps the first object in list order among equal `t`
-/// (a later one must be strictly nearer). To give the same answer whatever order
-/// the tree visits objects in, each test here searches up to just past the best `t`
+/// Ties: a plain list keeps the first primitive in list order among equal `t` (a
+/// later one must be strictly nearer). To give the same answer whatever order the
+/// tree visits primitives in, each test here searches up to just past the best `t`
 /// (its next float up) and an equal `t` wins only with a smaller index.
-struct Nearest {
-    best: Option<(Candidate, usize)>,
+#[derive(Clone, Copy, Debug)]
+pub struct Nearest<C> {
+    best: Option<(C, usize)>,
     /// The far end of the search: the range's end, or just past the best hit's `t`
     /// (its next float up) once there is one.
     limit: f32,
@@ -50,9 +59,9 @@ struct Nearest {
     box_limit: f32,
 }
 
-impl Nearest {
+impl<C: Crossing> Nearest<C> {
     /// The far end of the search: the range's end, or just past the best hit's `t`.
-    fn limit(&self) -> f32 {
+    pub fn limit(&self) -> f32 {
         self.limit
     }
 
@@ -62,12 +71,12 @@ impl Nearest {
     /// shares with the best triangle) can be entered a few ulps later. Without the
     /// margin the tree would skip that box and could break the tie differently from
     /// the list.
-    fn box_limit(&self) -> f32 {
+    pub fn box_limit(&self) -> f32 {
         self.box_limit
     }
 
     /// No hit yet: the search runs to `t_max`.
-    fn up_to(t_max: f32) -> Nearest {
+    fn up_to(t_max: f32) -> Nearest<C> {
         Nearest {
             best: None,
             limit: t_max,
@@ -75,30 +84,32 @@ impl Nearest {
         }
     }
 
-    /// Keeps `candidate` of object `i` if nearer (or as near with a smaller index).
-    fn offer(&mut self, candidate: Candidate, i: usize) {
+    /// Keeps `crossing` of primitive `i` if nearer (or as near with a smaller index).
+    pub fn offer(&mut self, crossing: C, i: usize) {
         let better = match self.best {
             None => true,
-            Some((best, j)) => candidate.t < best.t || (candidate.t == best.t && i < j),
+            Some((best, j)) => {
+                crossing.t() < best.t() || (crossing.t() == best.t() && i < j)
+            }
         };
         if better {
-            self.best = Some((candidate, i));
-            self.limit = candidate.t.next_up();
+            self.best = Some((crossing, i));
+            self.limit = crossing.t().next_up();
             self.box_limit = widened(self.limit);
         }
     }
 
-    /// Offers each of a leaf's `shapes`, whose object indices are `objects`, with
-    /// its candidate from `test` within `range` up to the nearest hit so far.
+    /// Offers each of a leaf's `shapes`, whose primitive indices are `indices`, with
+    /// its crossing from `test` within `range` up to the nearest hit so far.
     #[inline(always)]
-    fn offer_leaf<S>(
+    pub fn offer_leaf<S>(
         &mut self,
         shapes: &[S],
-        objects: &[usize],
+        indices: &[usize],
         range: Interval,
-        test: impl Fn(&S, Interval) -> Option<Candidate>,
+        test: impl Fn(&S, Interval) -> Option<C>,
     ) {
-        for (shape, &i) in shapes.iter().zip(objects) {
+        for (shape, &i) in shapes.iter().zip(indices) {
             if let Some(c) = test(shape, range.up_to(self.limit())) {
                 self.offer(c, i);
             }
@@ -107,116 +118,62 @@ impl Nearest {
 }
 
 /// `t` moved out by [`TIE_MARGIN`] of itself (infinity stays infinity), as a slab
-/// exit is moved out ([`crate::shapes::aabb::moved_out`]) by its own margin.
+/// exit is moved out by its own margin (`moved_out`).
 fn widened(t: f32) -> f32 {
     t + t.abs() * TIE_MARGIN
 }
 
 impl Bvh {
-    /// The nearest hit within `range` among `objects` (the slice the tree was built
-    /// over) and its index: the unbounded objects first, then the tree,
-    /// whose boxes are tested only up to the nearest hit so far.
-    pub fn closest(
+    // ANCHOR: closest
+    /// The nearest crossing within `range` among the primitives the tree was built
+    /// over, and its primitive's index: each unbounded one tested first by
+    /// `unbounded(i, range)`, then the tree walked, its boxes tested only up to the
+    /// nearest crossing so far, and each leaf it reaches handed to `leaf` with the
+    /// positions of its primitives in [`Bvh::primitives`], to offer their crossings
+    /// to the [`Nearest`] ([`Nearest::offer_leaf`]).
+    #[inline(always)]
+    pub fn closest<C: Crossing>(
         &self,
-        objects: &[Object],
-        ray: &Ray,
+        ray: &BoxRay,
         range: Interval,
-    ) -> Option<SceneHit> {
-        if self.misses_everything(ray, range) {
-            return None;
-        }
-        let prepared = PreparedRay::new(ray);
-        let (candidate, object) = self.closest_candidate(objects, &prepared, range)?;
-        let hit = objects[object].shape.record(&prepared, candidate);
-        Some(SceneHit { hit, object })
-    }
-
-    /// The object [`Bvh::closest`] finds, without its hit record.
-    pub fn closest_object(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        range: Interval,
-    ) -> Option<usize> {
-        if self.misses_everything(ray, range) {
-            return None;
-        }
-        let prepared = PreparedRay::new(ray);
-        Some(self.closest_candidate(objects, &prepared, range)?.1)
-    }
-
-    /// True if the ray can meet nothing: no unbounded object, and it misses the
-    /// root's box. Tested with 1/d alone, before the rest of the ray's set-up (the
-    /// watertight test's shear costs two more divisions) is made for nothing.
-    fn misses_everything(&self, ray: &Ray, range: Interval) -> bool {
-        let Some(root) = &self.root else {
-            return self.unbounded.is_empty();
-        };
-        let box_ray = BoxRay::with_inv_d(
-            ray.origin().into(),
-            Vec3A::from(ray.direction()).recip(),
-        );
-        self.unbounded.is_empty()
-            && box_entry(
-                (root.min, root.max),
-                &box_ray,
-                range.up_to(widened(range.max)),
-            )
-            .is_none()
-    }
-
-    /// The closest candidate and its object, as [`Bvh::closest`] finds them.
-    fn closest_candidate(
-        &self,
-        objects: &[Object],
-        prepared: &PreparedRay,
-        range: Interval,
-    ) -> Option<(Candidate, usize)> {
+        mut unbounded: impl FnMut(usize, Interval) -> Option<C>,
+        mut leaf: impl FnMut(Range<usize>, &mut Nearest<C>),
+    ) -> Option<(C, usize)> {
         let mut nearest = Nearest::up_to(range.max);
         for &i in &self.unbounded {
-            if let Some(c) = objects[i]
-                .shape
-                .candidate(prepared, range.up_to(nearest.limit()))
-            {
+            if let Some(c) = unbounded(i, range.up_to(nearest.limit())) {
                 nearest.offer(c, i);
             }
         }
-        self.walk(prepared, range.up_to(nearest.box_limit()), |leaf| {
-            let objects = &self.primitives[leaf.clone()];
-            match &self.shapes {
-                LeafShapes::Triangles(t) => {
-                    nearest.offer_leaf(&t[leaf], objects, range, |t, r| {
-                        t.candidate(prepared, r)
-                    })
-                }
-                LeafShapes::Shapes(s) => {
-                    nearest.offer_leaf(&s[leaf], objects, range, |s, r| {
-                        s.candidate(prepared, r)
-                    })
-                }
-            }
+        self.walk(ray, range.up_to(nearest.box_limit()), |positions| {
+            leaf(positions, &mut nearest);
             Walk::Continue {
                 t_max: nearest.box_limit(),
             }
         });
         nearest.best
     }
+    // ANCHOR_END: closest
 
-    /// True if any of `objects` lies on the ray within `range`; stops at
-    /// the first one found.
-    pub fn occluded(&self, objects: &[Object], ray: &Ray, range: Interval) -> bool {
-        let prepared = PreparedRay::new(ray);
-        let hits = |&i: &usize| objects[i].shape.candidate(&prepared, range).is_some();
-        if self.unbounded.iter().any(hits) {
+    /// True if any primitive lies on the ray within `range`: `unbounded(i)` for each
+    /// unbounded one, then `leaf(positions)` for each leaf the walk reaches, until
+    /// one says yes.
+    pub fn any(
+        &self,
+        ray: &BoxRay,
+        range: Interval,
+        unbounded: impl FnMut(&usize) -> bool,
+        mut leaf: impl FnMut(Range<usize>) -> bool,
+    ) -> bool {
+        if self.unbounded.iter().any(unbounded) {
             return true;
         }
-        // The boxes get the same margin as in [`Bvh::closest`]: an object that hits
+        // The boxes get the same margin as in [`Bvh::closest`]: a primitive that hits
         // just before `range.max` may have a box entered just after it.
         let box_t_max = widened(range.max);
         let mut found = false;
-        self.walk(&prepared, range.up_to(box_t_max), |leaf| {
-            let hit = |p: usize| self.shapes.candidate(p, &prepared, range).is_some();
-            if leaf.into_iter().any(hit) {
+        self.walk(ray, range.up_to(box_t_max), |positions| {
+            if leaf(positions) {
                 found = true;
                 Walk::Stop
             } else {
@@ -224,6 +181,23 @@ impl Bvh {
             }
         });
         found
+    }
+
+    /// True if the ray can meet nothing: no unbounded primitive, and it misses the
+    /// root's box. Tested with 1/d alone, before the rest of a ray's set-up for the
+    /// primitives' tests (the watertight test's shear costs two more divisions) is
+    /// made for nothing.
+    pub fn misses_everything(&self, ray: &Ray, range: Interval) -> bool {
+        let Some(root) = &self.root else {
+            return self.unbounded.is_empty();
+        };
+        self.unbounded.is_empty()
+            && box_entry(
+                (root.min, root.max),
+                &BoxRay::new(ray),
+                range.up_to(widened(range.max)),
+            )
+            .is_none()
     }
 
     // ANCHOR: traverse
@@ -239,16 +213,15 @@ impl Bvh {
     /// dropped when popped.
     fn walk(
         &self,
-        ray: &PreparedRay,
+        box_ray: &BoxRay,
         range: Interval,
-        mut leaf: impl FnMut(std::ops::Range<usize>) -> Walk,
+        mut leaf: impl FnMut(Range<usize>) -> Walk,
     ) {
         let Some(root) = &self.root else {
             return;
         };
-        let box_ray = BoxRay::new(ray);
         let mut range = range;
-        if box_entry((root.min, root.max), &box_ray, range).is_none() {
+        if box_entry((root.min, root.max), box_ray, range).is_none() {
             return;
         }
         let mut stack = [(0u32, 0u32, 0.0f32); MAX_DEPTH];
@@ -263,7 +236,7 @@ impl Bvh {
                 }
             } else {
                 let node = &self.nodes[first as usize];
-                let next = match both_entries(node, &box_ray, range) {
+                let next = match both_entries(node, box_ray, range) {
                     [Some(a), Some(b)] => {
                         let (near, far, t_far) =
                             if a <= b { (0, 1, b) } else { (1, 0, a) };

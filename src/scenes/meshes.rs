@@ -1,5 +1,5 @@
 //! A mesh from a file standing in the still life (lesson 09's second scene); the
-//! list or the BVH that the ray caster sees it through is [`crate::bvh::ListOrTree`].
+//! list or the BVH that the ray caster sees it through is [`crate::scene::ListOrTree`].
 
 use std::path::Path;
 

@@ -154,7 +154,7 @@ pub fn cornell(width: u32, height: u32) -> Result<Staged> {
 /// The Cornell box with the Newell teapot (`assets/meshes/teapot.obj`, 4032
 /// triangles once its quads are split) standing where the mirror ball was, white and
 /// diffuse. A scene a plain list renders slowly: lesson 10 draws it through lesson
-/// 11's BVH ([`crate::bvh::ListOrTree`]).
+/// 11's BVH ([`crate::scene::ListOrTree`]).
 pub fn cornell_teapot(width: u32, height: u32) -> Result<Staged> {
     let Staged {
         scene: box_scene,

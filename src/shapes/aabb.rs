@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use crate::error::{Error, Problem, Result, finite3};
-use crate::float::gamma;
+use crate::float::{gamma, moved_out};
 use crate::ray::{ClosedSpan, Crossings, Interval, Ray};
 use crate::shapes::{Hit, PreparedRay};
 
@@ -57,13 +57,6 @@ impl Aabb {
             }
         }
         Ok(Aabb { min, max })
-    }
-
-    /// The box from corners the caller has already checked (finite, `min <= max`),
-    /// such as a BVH node's, which are unions of checked boxes.
-    pub(crate) fn from_checked(min: Vec3, max: Vec3) -> Aabb {
-        debug_assert!(min.is_finite() && max.is_finite() && min.cmple(max).all());
-        Aabb { min, max }
     }
 
     /// The corner with the smallest coordinates.
@@ -310,54 +303,4 @@ fn slab_ends(to_min: f32, to_max: f32, inv_d: f32) -> (f32, f32) {
 enum Exits {
     Exact,
     MovedOut,
-}
-
-// ANCHOR: moved_out
-/// How far a conservative slab test moves a slab's exit out, relative to itself:
-/// pbrt-v4's 2 gamma(3), the most the three rounded operations behind t_far can
-/// have moved it in (Ize 2013, "Robust BVH Ray Traversal").
-pub(crate) const FAR_MARGIN: f32 = 2.0 * gamma(3);
-
-/// The exit `t` moved out by [`FAR_MARGIN`] of its size: t (1 + margin) if t > 0,
-/// t (1 - margin), towards 0, if t < 0; 0 and infinities stay as they are. A sum and
-/// a minimum, no branch, where a product would need the sign to choose its factor.
-/// The minimum keeps an exit of -infinity (a ray parallel to a slab, outside it) at
-/// -infinity: -inf + inf would be NaN, and a NaN exit constrains nothing. The one
-/// rule of both conservative slab tests, [`Aabb::slab_conservative`] and the BVH's.
-#[inline(always)]
-pub(crate) fn moved_out(t: f32) -> f32 {
-    t + (t.abs() * FAR_MARGIN).min(f32::MAX)
-}
-// ANCHOR_END: moved_out
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The sum [`moved_out`] against the products pbrt-v4 writes (t (1 + 2 gamma(3))
-    /// for t > 0, t (1 - 2 gamma(3)) for t < 0), over floats of every exponent from
-    /// 1e-30 to 1e30, both signs, and their neighbours: never lower, so the box test
-    /// loses no hit the product would find.
-    #[test]
-    fn far_end_moves_at_least_as_far_as_the_product() {
-        let (up, down) = (1.0 + 2.0 * gamma(3), 1.0 - 2.0 * gamma(3));
-        let mut t = 1e-30f32;
-        let mut checked = 0;
-        while t < 1e30 {
-            for x in [
-                t,
-                -t,
-                t.next_up(),
-                -t.next_up(),
-                t.next_down(),
-                -t.next_down(),
-            ] {
-                let product = if x > 0.0 { x * up } else { x * down };
-                assert!(moved_out(x) >= product, "{x:e}");
-                checked += 1;
-            }
-            t *= 1.000_013;
-        }
-        assert!(checked > 1_000_000, "{checked}");
-    }
 }

@@ -13,6 +13,7 @@
 
 use glam::Vec3;
 
+use crate::bvh::{Bounded, Crossing};
 use crate::float::gamma;
 use crate::ray::{Crossings, Interval, Ray};
 
@@ -117,6 +118,14 @@ enum Detail {
     Instance { range: Interval },
 }
 // ANCHOR_END: candidate
+
+/// The tree's search ([`crate::bvh::Bvh::closest`]) reads a candidate's `t`.
+impl Crossing for Candidate {
+    #[inline(always)]
+    fn t(&self) -> f32 {
+        self.t
+    }
+}
 
 impl Candidate {
     fn on_ray(t: f32) -> Candidate {
@@ -413,5 +422,19 @@ impl Shape {
             Shape::Cylinder(c) => c.bounds(),
             Shape::Instance(i) => i.bounds(),
         }
+    }
+}
+
+/// A shape's box for a tree ([`crate::bvh`]): [`Shape::bounds`]'s corners.
+impl Bounded for Shape {
+    fn corners(&self) -> Option<(Vec3, Vec3)> {
+        self.bounds().map(|b| (b.min(), b.max()))
+    }
+}
+
+/// A triangle's box for a tree: [`Triangle::bounds`]'s corners.
+impl Bounded for Triangle {
+    fn corners(&self) -> Option<(Vec3, Vec3)> {
+        self.bounds().map(|b| (b.min(), b.max()))
     }
 }

@@ -9,6 +9,7 @@
 
 use glam::Vec3;
 
+use crate::bvh::BoxRay;
 use crate::ray::Ray;
 
 /// A [`Ray`] with its per-ray numbers.
@@ -47,6 +48,12 @@ impl PreparedRay {
     /// The ray itself.
     pub fn ray(&self) -> &Ray {
         &self.ray
+    }
+
+    /// The ray as a tree's boxes see it, with the same 1/d.
+    #[inline(always)]
+    pub fn box_ray(&self) -> BoxRay {
+        BoxRay::with_inv_d(self.ray.origin(), self.inv_d)
     }
 
     /// `v` with its axes permuted to (v[kx], v[ky], v[kz]): one of three cyclic

@@ -12,9 +12,10 @@ use render_lessons::course::measure::triangle::bumpy_sphere;
 use std::collections::BTreeSet;
 
 use glam::{Mat4, Vec3};
-use render_lessons::bvh::{Bvh, BvhScene};
+use render_lessons::bvh::Bvh;
 use render_lessons::mesh::Mesh;
 use render_lessons::ray::{Interval, Ray};
+use render_lessons::scene::BvhScene;
 use render_lessons::scene::{Intersect, Object, PointLight, Scene};
 use render_lessons::shapes::{
     Aabb, Cylinder, Instance, Plane, Quadric, Shape, Sphere, Triangle,

@@ -16,9 +16,10 @@ use std::path::Path;
 
 use glam::Vec3;
 use render_lessons::bvh::build::Strategy;
-use render_lessons::bvh::{Bvh, BvhScene, Child, MAX_DEPTH, Node};
+use render_lessons::bvh::{Bvh, Child, MAX_DEPTH, Node};
 use render_lessons::mesh::Mesh;
 use render_lessons::ray::{Interval, Ray};
+use render_lessons::scene::BvhScene;
 use render_lessons::scene::{Intersect, Object, Scene};
 use render_lessons::shapes::{Aabb, Plane, Shape, Sphere, Triangle};
 
@@ -154,9 +155,10 @@ fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
     let mut seen = vec![0usize; scene.objects().len()];
     let mut max_depth = 0;
     // (the child's box, the child, its parent node, its depth)
+    let aabb = |(min, max)| Aabb::new(min, max).unwrap();
     let mut stack: Vec<_> = bvh
         .root()
-        .map(|(b, c)| (b, c, None, 1))
+        .map(|(b, c)| (aabb(b), c, None, 1))
         .into_iter()
         .collect();
     let mut visited = 0;
@@ -175,6 +177,7 @@ fn assert_invariants(scene: &Scene, bvh: &Bvh) -> usize {
             Child::Node(i) => {
                 assert!(parent.is_none_or(|p| i > p), "node {i} after its parent");
                 for (b, c) in [0, 1].map(|k| nodes[i].child(k)) {
+                    let b = aabb(b);
                     assert!(bounds.contains(&b), "a child of node {i} outside it");
                     stack.push((b, c, Some(i), depth + 1));
                 }
@@ -285,7 +288,7 @@ fn the_path_tracer_renders_a_mesh_through_the_tree_as_through_the_list() {
 /// same, bit for bit.
 #[test]
 fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
-    use render_lessons::bvh::ListOrTree;
+    use render_lessons::scene::ListOrTree;
     use render_lessons::scenes::path_tracing::{SceneName, Staged};
 
     let Staged {

@@ -7,11 +7,11 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use glam::Vec3;
-use render_lessons::bvh::ListOrTree;
 use render_lessons::course::compare::reference;
 use render_lessons::error::{Error, Shortfall};
 use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{FaceCounts, Mesh, fan, teapot_obj};
+use render_lessons::scene::ListOrTree;
 use render_lessons::scenes::floor_and_mesh;
 use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, still_life};
 use render_lessons::scenes::{mesh_on_the_floor, still_life_pinhole};

@@ -10,11 +10,11 @@ use std::fmt::Write;
 use std::path::Path;
 
 use glam::Vec3;
-use render_lessons::bvh::BvhScene;
 use render_lessons::camera::Camera;
 use render_lessons::course::report::num;
 use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{Mesh, patch_point, teapot_obj};
+use render_lessons::scene::BvhScene;
 use render_lessons::scene::Intersect;
 use render_lessons::scenes::floor_and_mesh;
 use render_lessons::scenes::{TEAPOT_OBJ, asset_path, still_life};

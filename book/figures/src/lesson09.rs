@@ -4,7 +4,6 @@
 //! settings from the same core calls as the lesson.
 
 use glam::{Vec2, Vec3};
-use render_lessons::bvh::ListOrTree;
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::compare::reference;
 use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
@@ -20,6 +19,7 @@ use render_lessons::raster::{
 use render_lessons::raster::{RasterSettings, rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
+use render_lessons::scene::ListOrTree;
 use render_lessons::scenes::squares::{Squares, squares};
 use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
 use render_lessons::scenes::{

@@ -9,13 +9,13 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::{Measured, Quality};
-use crate::bvh::BvhScene;
 use crate::camera::{Camera, Film, Frame, PinholeCamera};
 use crate::course::chart::{Chart, Scale};
 use crate::course::report::{BookNumbers, Quoted};
 use crate::error::Result;
 use crate::mesh::Mesh;
 use crate::ray::{Interval, Ray};
+use crate::scene::BvhScene;
 use crate::scene::{Intersect, Object, PointLight, Scene};
 use crate::shapes::{Shape, Triangle};
 

@@ -1,11 +1,9 @@
 //! The list-or-tree choice: a scene's plain list while every ray may test every
 //! primitive, else the same list through a [`BvhScene`], answering every ray alike.
 
+use super::{BvhScene, Intersect, Scene, SceneHit};
 use crate::progress;
 use crate::ray::{Interval, Ray};
-use crate::scene::{Intersect, Scene, SceneHit};
-
-use super::BvhScene;
 
 /// Above this many ray-primitive tests (pixels times primitives) a renderer stops
 /// testing every primitive on every ray and goes through lesson 11's BVH: 2^28, about

@@ -2,7 +2,8 @@
 //! what a ray that hits nothing sees, and (for the ray caster of lessons 08 and 09)
 //! an optional point light. No acceleration structure: every ray is tested against
 //! every primitive, as in Appel's ray casting (Lecture 4); lesson 11 measures when
-//! that stops paying, and `bvh::BvhScene` asks the same questions through a tree.
+//! that stops paying, and [`BvhScene`] asks the same questions through a tree
+//! ([`list_or_tree`] chooses between the two).
 //!
 //! One type serves every renderer: the ray caster paints an object's albedo lit by
 //! the point light; the path tracer scatters by its material and finds light in its
@@ -14,6 +15,12 @@ use crate::error::{Error, Problem, Result, finite3};
 use crate::material::Material;
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Hit, PreparedRay, Shape, ShapesByKind};
+
+pub mod list_or_tree;
+mod tree;
+
+pub use list_or_tree::{BRUTE_FORCE_TESTS, ListOrTree};
+pub use tree::BvhScene;
 
 /// One primitive with its material and the radiance L_e it emits.
 ///

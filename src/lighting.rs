@@ -39,11 +39,12 @@ pub fn lambert(
 }
 // ANCHOR_END: lambert
 
-/// The colour of `object` at `hit` under `scene`'s point light, by [`lambert`] on
-/// the side the ray arrived from ([`Hit::facing`]); `visible(light)` decides
-/// whether the light is seen from the hit (a shadow ray, or `true`). A scene with no
-/// point light is lit by the ambient term alone. The ray caster and the
-/// rasterizer's reference both shade their hits here.
+/// The colour of `object` at `hit` under `scene`'s point light, by [`lambert`] with
+/// the shading normal on the side the ray arrived from ([`Hit::shading_facing`]: a
+/// smooth mesh's blend of its vertex normals, elsewhere the surface's own normal);
+/// `visible(light)` decides whether the light is seen from the hit (a shadow ray, or
+/// `true`). A scene with no point light is lit by the ambient term alone. The ray
+/// caster and the rasterizer's reference both shade their hits here.
 pub fn at_hit(
     scene: &Scene,
     hit: &Hit,
@@ -53,7 +54,11 @@ pub fn at_hit(
     let Some(light) = scene.point_light() else {
         return object.colour() * AMBIENT;
     };
-    lambert(hit.point, hit.facing(), object.colour(), &light, || {
-        visible(&light)
-    })
+    lambert(
+        hit.point,
+        hit.shading_facing(),
+        object.colour(),
+        &light,
+        || visible(&light),
+    )
 }

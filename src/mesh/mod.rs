@@ -2,8 +2,11 @@
 //!
 //! A mesh is a vertex list and a triangle list, read from a file or made from
 //! shapes, and placed in the world by a [`Model`]. The rasterizer draws nothing
-//! else; the ray caster and the path tracer take a mesh's triangles as primitives
-//! ([`Mesh::objects`], [`Model::objects`]).
+//! else; the ray caster and the path tracer take a placed mesh as one shape with a
+//! tree of its own ([`Model::shape`], a [`TriangleMesh`]), shaded smooth by its
+//! vertex normals as the rasterizer shades it, or its triangles as primitives, one
+//! flat-shaded object each ([`Model::objects`], [`Mesh::objects`]), as lesson 11
+//! measures a tree over a scene's primitives.
 //!
 //! - [`modeling`]: the [`Mesh`] itself (Lecture 2, "Modeling"), and the meshes made
 //!   from shapes (a uv sphere, a box, a floor square);
@@ -29,6 +32,7 @@ use glam::Vec3;
 
 use crate::error::Result;
 use crate::scene::Object;
+use crate::shapes::TriangleMesh;
 use crate::transform::Transform;
 
 /// A mesh placed in the world by a model transform, with one colour (linear RGB
@@ -58,8 +62,38 @@ impl Model {
         Model { model, ..self }
     }
 
-    /// The mesh as the ray caster sees it, placed in the world: one triangle
-    /// primitive per triangle, coloured [`Model::colour`].
+    // ANCHOR: model_shape
+    /// The mesh placed in the world as one shape: its vertices taken there by the
+    /// model transform, its normals by the inverse transpose (normalised, as the
+    /// rasterizer's vertex stage takes them), its triangles in a tree of their own.
+    /// The ray caster and the path tracer shade it smooth, by the vertex normals
+    /// blended at each hit; a flat-shaded mesh ([`Mesh::flat_shaded`]) shades flat.
+    pub fn shape(&self) -> Result<TriangleMesh> {
+        let normal_matrix = self.model.inverse()?.matrix().transpose();
+        let mesh = &self.mesh;
+        let positions = mesh.positions.iter().map(|&p| self.model.point(p));
+        let normals = mesh
+            .normals
+            .iter()
+            .map(|&n| normal_matrix.transform_vector3(n).normalize_or_zero());
+        TriangleMesh::new(
+            positions.collect(),
+            &mesh.triangles,
+            normals.collect(),
+            Vec::new(),
+        )
+    }
+
+    /// The model as one object of the scene: its [`Model::shape`], diffuse of its
+    /// colour.
+    pub fn object(&self) -> Result<Object> {
+        Ok(Object::diffuse(self.shape()?, self.colour))
+    }
+    // ANCHOR_END: model_shape
+
+    /// The mesh placed in the world as primitives: one triangle per triangle,
+    /// coloured [`Model::colour`] and shaded flat (lesson 11 measures a tree over
+    /// a scene of primitives).
     pub fn objects(&self) -> Result<Vec<Object>> {
         let mut world = self.mesh.clone();
         for p in &mut world.positions {

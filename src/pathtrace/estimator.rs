@@ -243,6 +243,10 @@ struct Bounce {
 // ANCHOR: scatter
 /// The light sample (if any) and the next ray at `hit`, by the material there.
 /// `None` only if a specular material had no direction to give.
+///
+/// Light is reflected about the shading normal (a smooth mesh's blend of its vertex
+/// normals, [`Hit::shading`]; on every other surface its own normal), while the next
+/// ray leaves from the side of the facet the path arrived on.
 fn scatter(
     scene: &impl Intersect,
     material: Material,
@@ -252,6 +256,7 @@ fn scatter(
     s: &Settings,
 ) -> Option<Bounce> {
     let facing = hit.facing();
+    let shading = hit.shading_facing();
     match material {
         Material::Diffuse { albedo } => {
             // The light sample and the bounce leave from the same moved point, so that
@@ -259,31 +264,48 @@ fn scatter(
             // (from the hit point itself, grazing rays inside a sphere disagree enough
             // to bias the interior furnace).
             let start = s.offset.start(hit.point, hit.error, facing);
-            let sample = direct_light(scene, start, facing, albedo, rng, s);
-            let (direction, weight, pdf) = diffuse_bounce(facing, albedo, rng, s);
+            let sample = direct_light(scene, start, shading, albedo, rng, s);
+            let (direction, weight, pdf) = diffuse_bounce(shading, albedo, rng, s);
             Some(Bounce {
                 direct: sample.map_or(Vec3::ZERO, |l| l.light),
                 light_sample: sample.map(|l| (l.point, l.seen)),
                 start,
                 direction,
-                weight,
+                weight: weight * on_side(hit, direction, facing),
                 previous: after_diffuse(s.sampling, start.point, pdf),
             })
         }
         specular => {
             let d = ray.direction();
+            let n = if d.dot(shading) < 0.0 {
+                shading
+            } else {
+                facing
+            };
             let next =
-                specular.scatter_specular(d, facing, hit.front_face, rng.next_f32())?;
+                specular.scatter_specular(d, n, hit.front_face, rng.next_f32())?;
             let side = if next.transmitted { -facing } else { facing };
             Some(Bounce {
                 direct: Vec3::ZERO,
                 light_sample: None,
                 start: s.offset.start(hit.point, hit.error, side),
                 direction: next.direction,
-                weight: next.weight,
+                weight: next.weight * on_side(hit, next.direction, side),
                 previous: Previous::Full,
             })
         }
+    }
+}
+
+/// 1 if `direction` leaves the facet on `side`, else 0: a direction found about a
+/// mesh's shading normal can point into the facet, and the path ends there (the
+/// throughput 0), as pbrt's and Mitsuba's geometric check ends it. Where the
+/// shading normal is the geometric one, every direction found leaves on its side.
+fn on_side(hit: &Hit, direction: Vec3, side: Vec3) -> f32 {
+    if hit.shading == hit.normal || direction.dot(side) > 0.0 {
+        1.0
+    } else {
+        0.0
     }
 }
 // ANCHOR_END: scatter

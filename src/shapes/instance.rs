@@ -128,7 +128,11 @@ impl Instance {
         if !(t.is_finite() && point.is_finite()) || normal == Vec3::ZERO {
             return None;
         }
-        Some(Hit::new(ray, t, point, normal, error))
+        let shading = self
+            .normal_matrix
+            .transform_vector3(local.shading)
+            .normalize_or(normal);
+        Some(Hit::new(ray, t, point, normal, error).with_shading(shading, local.uv))
     }
     // ANCHOR_END: instance_hit
 

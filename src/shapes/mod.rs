@@ -11,7 +11,9 @@
 //! finite input none of them panics or returns NaN: a comparison that meets a NaN
 //! always falls on the "miss" side.
 
-use glam::Vec3;
+use std::sync::Arc;
+
+use glam::{Vec2, Vec3};
 
 use crate::bvh::{Bounded, Crossing};
 use crate::float::gamma;
@@ -27,6 +29,7 @@ pub mod quad;
 pub mod quadric;
 pub mod sphere;
 pub mod triangle;
+pub mod triangle_mesh;
 
 pub use aabb::{Aabb, FaceHit};
 pub use by_kind::ShapesByKind;
@@ -38,8 +41,15 @@ pub use quad::Quad;
 pub use quadric::Quadric;
 pub use sphere::Sphere;
 pub use triangle::{Barycentric, Triangle};
+pub use triangle_mesh::TriangleMesh;
 
 /// Where a ray crosses a surface.
+///
+/// Two normals, as pbrt keeps them: the geometric `normal`, the surface's own, which
+/// decides the side the ray came from and where a spawned ray starts; and the
+/// `shading` normal, which lighting uses. They differ only on a mesh with a normal
+/// per vertex, whose shading normal is their blend at the point (Phong's smooth
+/// shading, lesson 09): the facets are flat, the light on them is not.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     /// The ray parameter, point = o + t d: the signed distance from the ray's origin
@@ -47,8 +57,15 @@ pub struct Hit {
     pub t: f32,
     /// The point on the surface.
     pub point: Vec3,
-    /// The unit normal, pointing out of the surface whichever side the ray came from.
+    /// The unit geometric normal, pointing out of the surface whichever side the ray
+    /// came from.
     pub normal: Vec3,
+    /// The unit shading normal, on the same side of the surface as `normal`: equal to
+    /// it except on a mesh with normals per vertex ([`TriangleMesh`]).
+    pub shading: Vec3,
+    /// The texture coordinates (u, v) of the point: a textured mesh's, blended from
+    /// its vertices' ([`TriangleMesh`]); zero on every other surface.
+    pub uv: Vec2,
     /// `true` if the ray arrived from the side the normal points to (d . n < 0).
     pub front_face: bool,
     /// A conservative bound, per coordinate, on how far `point` lies from the true
@@ -72,6 +89,8 @@ impl Hit {
             t,
             point,
             normal,
+            shading: normal,
+            uv: Vec2::ZERO,
             front_face: ray.direction().dot(normal) < 0.0,
             error,
         }
@@ -89,6 +108,31 @@ impl Hit {
         }
     }
     // ANCHOR_END: facing
+
+    /// The same hit with the shading normal `shading` (turned to the side of the
+    /// geometric normal if it points the other way) and the texture coordinates `uv`.
+    pub(crate) fn with_shading(self, shading: Vec3, uv: Vec2) -> Hit {
+        let shading = if shading.dot(self.normal) < 0.0 {
+            -shading
+        } else {
+            shading
+        };
+        Hit {
+            shading,
+            uv,
+            ..self
+        }
+    }
+
+    /// The shading normal on the side the ray came from, by the same front-face rule
+    /// ([`Hit::facing`]): what lighting sees.
+    pub fn shading_facing(&self) -> Vec3 {
+        if self.front_face {
+            self.shading
+        } else {
+            -self.shading
+        }
+    }
 }
 
 // ANCHOR: candidate
@@ -116,6 +160,8 @@ enum Detail {
     /// An instance: its test is run again, over the same range, for the winner
     /// only (instances are rare; this keeps the candidate small).
     Instance { range: Interval },
+    /// A mesh's crossing: which of its triangles, and the barycentric coordinates.
+    Mesh { triangle: u32, b: [f32; 3] },
 }
 // ANCHOR_END: candidate
 
@@ -215,6 +261,22 @@ impl Cylinder {
     }
 }
 
+impl TriangleMesh {
+    /// The nearest crossing within `range` as a [`Candidate`]: its triangle and
+    /// barycentric coordinates, found through the mesh's tree.
+    #[inline(always)]
+    pub fn candidate(&self, ray: &PreparedRay, range: Interval) -> Option<Candidate> {
+        let (crossing, triangle) = self.closest(ray, range)?;
+        Some(Candidate {
+            t: crossing.t,
+            detail: Detail::Mesh {
+                triangle: triangle as u32,
+                b: crossing.b,
+            },
+        })
+    }
+}
+
 impl Instance {
     /// The nearest hit within `range` as a [`Candidate`]: its `t`, and the range to
     /// run the test again in for the winner's record.
@@ -278,6 +340,8 @@ pub enum Shape {
     Cylinder(Cylinder),
     /// A shape placed by a transform (lesson 07).
     Instance(Box<Instance>),
+    /// A triangle mesh, one shape with a tree of its own (lesson 09), shared.
+    Mesh(Arc<TriangleMesh>),
 }
 
 impl From<Sphere> for Shape {
@@ -322,6 +386,12 @@ impl From<Cylinder> for Shape {
     }
 }
 
+impl From<TriangleMesh> for Shape {
+    fn from(mesh: TriangleMesh) -> Shape {
+        Shape::Mesh(Arc::new(mesh))
+    }
+}
+
 impl From<Instance> for Shape {
     fn from(instance: Instance) -> Shape {
         Shape::Instance(Box::new(instance))
@@ -353,6 +423,7 @@ impl Shape {
             Shape::Aabb(b) => b.candidate(ray, range),
             Shape::Cylinder(c) => c.candidate(ray, range),
             Shape::Instance(i) => i.candidate(ray, range),
+            Shape::Mesh(m) => m.candidate(ray, range),
         }
     }
     // ANCHOR_END: shape_candidate
@@ -367,6 +438,9 @@ impl Shape {
                 i.hit(ray, range).unwrap_or_else(|| fallback(self, ray, t))
             }
             (Shape::Triangle(tri), Detail::Barycentric(c)) => tri.hit_at(ray, c),
+            (Shape::Mesh(m), Detail::Mesh { triangle, b }) => {
+                m.hit_at(ray, triangle as usize, Barycentric { t, b })
+            }
             (Shape::Aabb(b), Detail::Face(face)) => b.hit_at(ray, face),
             (Shape::Cylinder(c), Detail::Part(crossing)) => c.hit_at(ray, crossing),
             (Shape::Sphere(s), _) => s.hit_at(ray, t),
@@ -390,6 +464,7 @@ impl Shape {
             Shape::Quad(q) => q.crossings(ray),
             Shape::Cylinder(c) => c.crossings(ray),
             Shape::Instance(i) => i.crossings(ray),
+            Shape::Mesh(m) => m.crossings(ray),
         }
     }
 
@@ -405,6 +480,7 @@ impl Shape {
             Shape::Quad(q) => q.normal_at(p),
             Shape::Cylinder(c) => c.normal_at(p),
             Shape::Instance(i) => i.normal_at(p),
+            Shape::Mesh(m) => m.normal_at(p),
         }
     }
 
@@ -421,6 +497,7 @@ impl Shape {
             Shape::Quad(q) => q.bounds(),
             Shape::Cylinder(c) => c.bounds(),
             Shape::Instance(i) => i.bounds(),
+            Shape::Mesh(m) => Some(m.bounds()),
         }
     }
 }

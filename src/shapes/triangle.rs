@@ -54,6 +54,12 @@ impl Triangle {
         Ok(tri)
     }
 
+    /// The triangle of corners the caller has already checked ([`Triangle::new`]
+    /// accepted them once), such as a mesh's.
+    pub(crate) fn from_checked(v0: Vec3, v1: Vec3, v2: Vec3) -> Triangle {
+        Triangle { v0, v1, v2 }
+    }
+
     /// The three corners.
     pub fn vertices(&self) -> [Vec3; 3] {
         [self.v0, self.v1, self.v2]

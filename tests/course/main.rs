@@ -20,5 +20,6 @@ mod lesson_11_geometry_charts;
 mod lesson_11_lessons_chart;
 mod lesson_11_rendering_charts;
 mod lesson_11_scaling;
+mod mesh_shape;
 mod porting;
 mod porting_shapes;

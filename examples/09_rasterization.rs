@@ -25,7 +25,6 @@ use render_lessons::course::{
 use render_lessons::mesh::{Model, check_segments, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Shadows, floor_settings, point_light, rasterize};
-use render_lessons::scene::ListOrTree;
 use render_lessons::scenes::{
     PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_and_mesh, mesh_on_the_floor,
     still_life, still_life_pinhole, still_life_shadows,
@@ -55,7 +54,7 @@ fn main() -> ExitCode {
 /// Lecture 2's pipeline beside the ray caster: the scene ray cast (the reference); as
 /// triangles (spheres of `segments` slices), lit, transformed, clipped, rasterized
 /// and shaded per pixel and per vertex; shadows both ways (the map with its bias,
-/// none, 50 times too much); the floor with `mesh` both ways (a BVH when it is big).
+/// none, 50 times too much); the floor with `mesh` both ways.
 pub fn images(
     scene: &Scene,
     camera: &Camera,
@@ -85,13 +84,9 @@ pub fn images(
     let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
     let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
 
-    let pixels = u64::from(camera.film().width()) * u64::from(camera.film().height());
-    let meshed = ListOrTree::new(floor_and_mesh(scene, mesh)?, pixels);
-    let mesh_cast = match meshed {
-        ListOrTree::List(_) => "ray cast, floor + mesh",
-        ListOrTree::Tree(_) => "ray cast through a BVH, floor + mesh",
-    };
-    let mesh_ray_cast = t.time(mesh_cast, || reference(&meshed, camera))?;
+    let meshed = floor_and_mesh(scene, mesh)?; // the mesh as one shape, with its tree
+    let mesh_ray_cast =
+        t.time("ray cast, floor + mesh", || reference(&meshed, camera))?;
     drop(meshed); // a big mesh: the ray caster's copy goes, the rasterizer's comes
     let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
     let mesh_raster = t.time("rasterized, floor + mesh", || {

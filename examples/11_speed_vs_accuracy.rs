@@ -32,8 +32,8 @@ use render_lessons::progress;
 use render_lessons::raster::{Shading, floor_settings, point_light, rasterize};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-use render_lessons::scene::BvhScene;
-use render_lessons::scenes::{floor_and_mesh, mesh_on_the_floor};
+use render_lessons::scene::Object;
+use render_lessons::scenes::{floor_and, mesh_on_the_floor};
 use render_lessons::scenes::{still_life, still_life_pinhole, still_life_shadows};
 use render_lessons::spawn::Offset;
 
@@ -112,23 +112,24 @@ pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)>
     let mut t = Timings::default();
     let read = || mesh_on_the_floor(path, subdivisions).map_err(lesson::flag("--mesh"));
     let mesh = t.time("read the OBJ file (and subdivide)", read)?;
-    let list = floor_and_mesh(&scene, &mesh.model)?;
-    let primitives = list.objects().len();
-    let build = || BvhScene::new(list);
-    let message = format!("building a BVH over {primitives} primitives");
-    let tree = t.time("build the BVH", || progress::spinner(message, build));
+    let triangles = mesh.model.mesh.triangles.len();
+    let build = || mesh.model.shape(); // one shape, its triangles in its own tree
+    let message = format!("building a BVH over {triangles} triangles");
+    let shape = t.time("build the BVH", || progress::spinner(message, build))?;
+    let nodes = shape.tree().node_count();
+    let scene = floor_and(&scene, Object::diffuse(shape, mesh.model.colour))?;
     let image = t.time("ray cast with shadow rays", || {
-        render(&camera, |r| lit(&tree, r, Offset::Scaled))
+        render(&camera, |r| lit(&scene, r, Offset::Scaled))
     })?;
     let file = path.file_name().unwrap_or_default().to_string_lossy();
     let title = format!("{file}, split in four {subdivisions} times, and its tree");
     let mut sizes = Table::new(&title, &["what", "count"]);
     let counts = mesh.counts;
     for (what, count) in [
-        ("triangles", mesh.model.mesh.triangles.len()),
+        ("triangles", triangles),
         ("faces triangulated", counts.faces_triangulated),
         ("degenerate, skipped", counts.skipped_degenerate),
-        ("BVH nodes", tree.bvh().node_count()),
+        ("BVH nodes", nodes),
     ] {
         sizes.row(vec![what.to_string(), count.to_string()]);
     }

@@ -33,7 +33,7 @@ pub fn triangle_table(
         c if c.is_empty() => c,
         c => format!("; {c}"),
     };
-    let name = format!("mesh ({file}{split}, flat{read})");
+    let name = format!("mesh ({file}{split}, smooth{read})");
     table.row(vec![name, v.to_string(), t.to_string()]);
     table
 }

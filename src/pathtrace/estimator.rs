@@ -277,13 +277,12 @@ fn scatter(
         }
         specular => {
             let d = ray.direction();
-            let n = if d.dot(shading) < 0.0 {
-                shading
-            } else {
-                facing
-            };
-            let next =
-                specular.scatter_specular(d, n, hit.front_face, rng.next_f32())?;
+            let next = specular.scatter_specular(
+                d,
+                shading,
+                hit.front_face,
+                rng.next_f32(),
+            )?;
             let side = if next.transmitted { -facing } else { facing };
             Some(Bounce {
                 direct: Vec3::ZERO,

@@ -1,5 +1,6 @@
 //! A mesh from a file standing in the still life (lesson 09's second scene); the
-//! list or the BVH that the ray caster sees it through is [`crate::scene::ListOrTree`].
+//! ray caster and the path tracer see it as one shape with a tree of its own
+//! ([`Model::shape`]).
 
 use std::path::Path;
 
@@ -9,7 +10,7 @@ use super::asset_path;
 use crate::error::{Error, Problem, Result, finite};
 use crate::mesh::{FaceCounts, LoadedMesh, Mesh, Model};
 use crate::mesh::{check_subdivisions, subdivided_count};
-use crate::scene::Scene;
+use crate::scene::{Object, Scene};
 use crate::transform::Transform;
 use crate::{limits, progress};
 
@@ -42,8 +43,9 @@ pub struct PlacedMesh {
 // ANCHOR: mesh_on_the_floor
 /// The mesh of the OBJ file at `path`, every triangle split in four `subdivisions`
 /// times, placed in lesson 08's scene where lesson 09 draws it: standing on the
-/// floor at the front right, tilted towards the camera, flat shaded (one normal per
-/// triangle, as the ray caster sees triangles). A mesh of any size is scaled to fit
+/// floor at the front right, tilted towards the camera, shaded smooth by its vertex
+/// normals in both renderers (the file's, or the average of the triangles' around
+/// each vertex: [`Mesh::new`]). A mesh of any size is scaled to fit
 /// the box of the default torus (half a side: 1.4), which leaves the torus as it is.
 /// Before the work, the triangles it would make are checked against the memory
 /// ([`MESH_BYTES_PER_TRIANGLE`] each).
@@ -64,7 +66,6 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
             || mesh.subdivided(n),
         )?,
     };
-    let mesh = mesh.flat_shaded()?;
     if mesh.degenerate() == mesh.triangles.len() {
         return Err(Error::Value {
             param: "mesh",
@@ -121,14 +122,19 @@ fn fit(mesh: &Mesh, half: f32) -> Result<Option<Transform>> {
 }
 
 /// The floor of `scene` (its first object) with `mesh` standing on it, as the ray
-/// caster sees them: the mesh's triangles as primitives, the same background and
-/// light.
+/// caster sees them: the mesh as one shape ([`Model::object`]), the same background
+/// and light.
 pub fn floor_and_mesh(scene: &Scene, mesh: &Model) -> Result<Scene> {
-    let mut objects = scene.objects()[..1].to_vec();
-    objects.extend(mesh.objects()?);
-    let floor_and_mesh = Scene::new(objects, scene.background())?;
+    floor_and(scene, mesh.object()?)
+}
+
+/// The floor of `scene` (its first object) and `object`, with the same background
+/// and light.
+pub fn floor_and(scene: &Scene, object: Object) -> Result<Scene> {
+    let objects = vec![scene.objects()[0].clone(), object];
+    let floor_and_object = Scene::new(objects, scene.background())?;
     match scene.point_light() {
-        Some(light) => floor_and_mesh.with_light(light),
-        None => Ok(floor_and_mesh),
+        Some(light) => floor_and_object.with_light(light),
+        None => Ok(floor_and_object),
     }
 }

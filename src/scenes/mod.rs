@@ -12,8 +12,8 @@ pub mod still_life;
 use std::path::{Path, PathBuf};
 
 pub use meshes::{
-    MESH_BYTES_PER_TRIANGLE, PlacedMesh, TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh,
-    mesh_on_the_floor,
+    MESH_BYTES_PER_TRIANGLE, PlacedMesh, TEAPOT_OBJ, TORUS_OBJ, floor_and,
+    floor_and_mesh, mesh_on_the_floor,
 };
 pub use still_life::{
     STILL_LIFE_OBJECTS, still_life, still_life_cameras, still_life_pinhole,

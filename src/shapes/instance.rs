@@ -132,7 +132,8 @@ impl Instance {
             .normal_matrix
             .transform_vector3(local.shading)
             .normalize_or(normal);
-        Some(Hit::new(ray, t, point, normal, error).with_shading(shading, local.uv))
+        let hit = Hit::new(ray, t, point, normal, error);
+        Some(hit.with_shading(ray, shading, local.uv))
     }
     // ANCHOR_END: instance_hit
 

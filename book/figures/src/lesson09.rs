@@ -19,7 +19,6 @@ use render_lessons::raster::{
 use render_lessons::raster::{RasterSettings, rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
-use render_lessons::scene::ListOrTree;
 use render_lessons::scenes::squares::{Squares, squares};
 use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
 use render_lessons::scenes::{
@@ -53,8 +52,7 @@ pub fn figures(output: &Output) -> Result<()> {
     let mesh_cast = reference(&floor_and_mesh(&scene, &mesh)?, &camera)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
     let teapot = mesh_on_the_floor(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
-    let teapot_scene = ListOrTree::new(floor_and_mesh(&scene, &teapot)?, 480 * 270);
-    let teapot_cast = reference(&teapot_scene, &camera)?.image;
+    let teapot_cast = reference(&floor_and_mesh(&scene, &teapot)?, &camera)?.image;
     let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];
     output.diagram("09_side_by_side.png", &captioned(&three, &SIDE_BY_SIDE)?)?;

@@ -9,7 +9,7 @@
 //!
 //! | part | ray caster (08), rasterizer (09) | path tracer (10) |
 //! |---|---|---|
-//! | point light | lights surfaces: rho I cos / d^2 | the same, at every diffuse vertex |
+//! | point light | lights surfaces: rho I cos / d^2 | the same, by shadow rays |
 //! | background | seen by rays that miss | seen, and lights surfaces |
 //! | emission | not drawn | seen, and lights surfaces |
 //! | light between surfaces | the ambient share k_a rho | every bounce |

@@ -103,9 +103,9 @@ fn unoccluded(
 /// The light of the point `light` at a Lambertian vertex (unit normal `n`, albedo):
 /// f_r (pi I) cos(theta) / d^2, if the shadow ray from `from` to the light gets
 /// through. A point light sends all its light to `from` along one direction, so
-/// the integral over the hemisphere collapses to that one term (pbrt-v3 section
-/// 12.2), with no density to divide by; no bounce can meet a point, so this is the
-/// only place it is counted, in every strategy, and under MIS its weight is 1.
+/// the integral over the hemisphere collapses to that one term (pbrt-v3
+/// section 12.2), with no density to divide by; no bounce can meet a point, so this
+/// is the only place it is counted, in every strategy, and under MIS its weight is 1.
 pub(super) fn point_light(
     scene: &impl Intersect,
     light: &PointLight,

@@ -713,6 +713,10 @@ def write_outputs(out_dir, results, z_limit, alpha, m, desc, fov):
 
 
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "time":
+        # One timed Mitsuba render (the benchmarks' entry point): see cross_check_time.py.
+        import cross_check_time
+        return cross_check_time.mitsuba_main(sys.argv[2:])
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--out", default=os.path.join(ROOT, "target", "cross-check", "out"),
                         help="where the table fragment and the z-map data go")

@@ -12,18 +12,25 @@ use glam::Vec3;
 pub enum Error {
     /// A value handed to a constructor or a writer is not one it can use.
     Value {
+        /// The parameter, as the caller spelled it.
         param: &'static str,
+        /// What is wrong with its value.
         problem: Problem,
     },
     /// A file could not be read, written or understood; `line` (1-based) when known.
     File {
+        /// The file, as the caller named it.
         path: String,
+        /// The line at fault, from 1, when known.
         line: Option<usize>,
+        /// What went wrong.
         message: String,
     },
     /// A value asks for more than the machine can give.
     Machine {
+        /// The parameter that asks for too much.
         param: &'static str,
+        /// What the machine cannot give.
         shortfall: Shortfall,
     },
 }
@@ -37,34 +44,72 @@ pub enum Problem {
     /// A direction (or other vector that must have a length) was zero.
     ZeroLength,
     /// Must be strictly positive.
-    NotPositive { value: f32 },
+    NotPositive {
+        /// The value given.
+        value: f32,
+    },
     /// Must be 0 or more.
-    Negative { value: f32 },
+    Negative {
+        /// The value given.
+        value: f32,
+    },
     /// The up vector is parallel to the view direction, so no camera frame exists
     /// (STABILITY S10).
     UpParallelToDirection,
     /// An image resolution was 0 or larger than `max` (for images,
     /// `limits::MAX_RESOLUTION`).
-    Resolution { value: u32, max: u32 },
+    Resolution {
+        /// The resolution given.
+        value: u32,
+        /// The largest allowed.
+        max: u32,
+    },
     /// A range such as `x_min..x_max` was empty or inverted.
-    EmptyRange { min: f32, max: f32 },
+    EmptyRange {
+        /// The range's lower end.
+        min: f32,
+        /// The range's upper end.
+        max: f32,
+    },
     /// Three vectors that should form an orthonormal basis do not.
-    NotOrthonormal { error: f32 },
+    NotOrthonormal {
+        /// The largest departure of a dot product from 0 or 1.
+        error: f32,
+    },
     /// A matrix that must be symmetric is not (relative asymmetry `error`).
-    NotSymmetric { error: f32 },
+    NotSymmetric {
+        /// The relative asymmetry.
+        error: f32,
+    },
     /// A matrix has no inverse.
     Singular,
     /// A count such as a sphere's number of segments was below its minimum.
-    TooFew { value: u32, min: u32 },
+    TooFew {
+        /// The count given.
+        value: u32,
+        /// The smallest allowed.
+        min: u32,
+    },
     /// Outside what the parameter may be; `reason` says what is allowed.
-    Invalid { reason: &'static str },
+    Invalid {
+        /// What is allowed, as a phrase after "must".
+        reason: &'static str,
+    },
     /// A pixel holds NaN or infinity and must not be written to an image.
-    NonFinitePixel { x: u32, y: u32 },
+    NonFinitePixel {
+        /// The pixel's column.
+        x: u32,
+        /// The pixel's row.
+        y: u32,
+    },
     /// Triangle number `triangle` (0-based) refers to vertex `index`, but the mesh
     /// has only `vertices` vertices.
     VertexIndex {
+        /// The triangle, from 0.
         triangle: usize,
+        /// The vertex it names.
         index: u32,
+        /// How many vertices the mesh has.
         vertices: usize,
     },
 }
@@ -74,12 +119,20 @@ pub enum Problem {
 pub enum Shortfall {
     /// `needed` units where `limit` are allowed (`unit` is "bytes", "threads", ...).
     TooMuch {
+        /// What the value asks for.
         needed: u64,
+        /// What is allowed.
         limit: u64,
+        /// The unit of both: "bytes", "threads", ...
         unit: &'static str,
     },
     /// The operating system would not start a pool of `threads` worker threads.
-    ThreadPool { threads: usize, message: String },
+    ThreadPool {
+        /// The worker threads asked for.
+        threads: usize,
+        /// The operating system's answer.
+        message: String,
+    },
 }
 
 /// The crate's result type.

@@ -35,6 +35,8 @@
 //! [`course`] sits on top: diagrams, charts, tables, the lessons' flags, lesson
 //! 11's measurements and the exercises. Nothing in the renderer imports it.
 
+#![warn(missing_docs)]
+
 pub mod basis;
 pub mod bvh;
 pub mod camera;

@@ -19,11 +19,20 @@ use crate::error::{Error, Problem, Result, finite3, positive};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Material {
     /// Lambertian: f_r = albedo / pi.
-    Diffuse { albedo: Vec3 },
+    Diffuse {
+        /// The fraction of light reflected, per channel.
+        albedo: Vec3,
+    },
     /// A perfect mirror reflecting the fraction `reflectance` of the light.
-    Mirror { reflectance: Vec3 },
+    Mirror {
+        /// The fraction of light reflected, per channel.
+        reflectance: Vec3,
+    },
     /// A smooth dielectric with index of refraction `ior` (outside: 1, vacuum/air).
-    Glass { ior: f32 },
+    Glass {
+        /// The index of refraction inside.
+        ior: f32,
+    },
 }
 
 /// `v` if every component lies in [0, 1]: more would create energy.

@@ -43,7 +43,12 @@ pub const MAX_DEPTH: usize = 64;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Child {
     /// Primitives `primitives[first..first + count]`, `count > 0`.
-    Leaf { first: usize, count: usize },
+    Leaf {
+        /// The leaf's first primitive.
+        first: usize,
+        /// How many primitives it holds.
+        count: usize,
+    },
     /// The interior node `nodes()[index]`.
     Node(usize),
 }

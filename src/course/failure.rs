@@ -11,13 +11,19 @@ pub enum Failure {
     /// The renderer refused (its error names the parameter at fault).
     Render(crate::Error),
     /// A student's coding exercise did not pass its check (the report says why).
-    Exercise { report: String },
+    Exercise {
+        /// The check's report.
+        report: String,
+    },
     /// The user pressed Ctrl-C; the work finished so far was kept.
     Interrupted,
     /// A name given for the flag `param` matches none of the `choices`.
     NoMatch {
+        /// The flag.
         param: &'static str,
+        /// The name given.
         value: String,
+        /// The names it may take.
         choices: Vec<String>,
     },
 }

@@ -93,9 +93,17 @@ pub struct Vertex {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum At {
     /// The surface of object `object` (of [`Intersect::objects`]) at `point`.
-    Surface { point: Vec3, object: usize },
+    Surface {
+        /// Where the path met the surface.
+        point: Vec3,
+        /// Which object it met.
+        object: usize,
+    },
     /// Nothing: the path left the scene along the unit `direction`.
-    Escaped { direction: Vec3 },
+    Escaped {
+        /// The unit direction it left along.
+        direction: Vec3,
+    },
 }
 // ANCHOR_END: vertex
 

@@ -16,7 +16,9 @@ pub struct Squares {
     pub near: Model,
     /// The large blue square behind, half side 6 at Z = -5.
     pub far: Model,
+    /// The camera that sees them.
     pub camera: Camera,
+    /// The light behind the camera.
     pub light: PointLight,
 }
 

@@ -253,13 +253,21 @@ pub(crate) fn on_ray_error(ray: &Ray, t: f32) -> Vec3 {
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
+    /// A sphere (lesson 07).
     Sphere(Sphere),
+    /// An infinite plane (lesson 07).
     Plane(Plane),
+    /// An axis-aligned box (lesson 07).
     Aabb(Aabb),
+    /// A triangle (lesson 07).
     Triangle(Triangle),
+    /// A general quadric, the points x = (x, y, z, 1) with x^T Q x = 0 (lesson 07).
     Quadric(Quadric),
+    /// A parallelogram (lesson 10's lamp).
     Quad(Quad),
+    /// A cylinder closed by two discs (lesson 07).
     Cylinder(Cylinder),
+    /// A shape placed by a transform (lesson 07).
     Instance(Box<Instance>),
 }
 

@@ -4,8 +4,9 @@
 //! number it quotes from lesson 11 is the fragment's (`quotes`), every quantified
 //! claim names its test and every test the book names by path is there (`claims`),
 //! the stability cases linked where a page first names them (`case_links`),
-//! the words of the book (`notation`) and the numbers its early chapters quote
-//! (`early_numbers`).
+//! the words of the book (`notation`), the numbers its early chapters quote
+//! (`early_numbers`) and what lesson 10 says of its error-against-time run
+//! (`error_time`).
 //!
 //! Standard library, glam and the crate only. The lessons' own claims are in
 //! `tests/lessons/`; lesson 11 and the course as a whole in `tests/course/`.
@@ -17,6 +18,7 @@ mod markdown;
 mod case_links;
 mod claims;
 mod early_numbers;
+mod error_time;
 mod includes;
 mod names;
 mod notation;

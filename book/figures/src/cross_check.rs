@@ -1,18 +1,23 @@
-//! Lesson 10's cross-check figure: the per-pixel z of the crate's image minus
+//! Lesson 10's cross-check figures: the per-pixel z of the crate's image minus
 //! Mitsuba 3's, one map per configuration, from the numbers `scripts/cross-check
-//! --update` measured and committed (`chapters/figures/10_9_cross_check_z.csv`).
-//! No render happens here: the figure shows that run's numbers, as the page's table
-//! does.
+//! --update` measured and committed (`chapters/figures/10_9_cross_check_z.csv`), and
+//! the error against time of both renderers on one thread, from `scripts/cross-check
+//! --time --update` (`chapters/figures/10_9_error_time.csv`). No render happens here:
+//! the figures show those runs' numbers, as the page's tables do.
 
 use std::path::Path;
 
 use glam::Vec2;
+use render_lessons::course::chart::{Chart, Scale};
 use render_lessons::course::diagram::{Diagram, Place, palette};
 use render_lessons::course::lesson::Output;
+use render_lessons::files::write_atomically;
 use render_lessons::{Error, Result};
 
 /// The committed z-maps, beside the book's figures.
 const DATA: &str = "chapters/figures/10_9_cross_check_z.csv";
+/// The committed error-against-time measurements.
+const TIME_DATA: &str = "chapters/figures/10_9_error_time.csv";
 
 /// Each map's pixels are drawn this many screen pixels wide.
 const ZOOM: u32 = 4;
@@ -22,17 +27,55 @@ const Z_FULL: f32 = 4.0;
 const TEXT: f32 = 15.0;
 const GAP: u32 = 24;
 
-/// Writes `10_9_zmap.png`.
+/// Writes `10_9_zmap.png` and `10_9_error_time.svg`.
 pub fn figures(out: &Output) -> Result<()> {
+    out.diagram("10_9_zmap.png", &zmap_figure(&committed(DATA)?)?)?;
+    let svg = error_time_chart(&committed(TIME_DATA)?)?.svg()?;
+    write_atomically(&out.file("10_9_error_time.svg"), svg.as_bytes())
+}
+
+/// A file `scripts/cross-check` wrote, relative to the repository's root.
+fn committed(name: &str) -> Result<String> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../..")
-        .join(DATA);
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::File {
-        path: DATA.to_string(),
+        .join(name);
+    std::fs::read_to_string(&path).map_err(|e| Error::File {
+        path: name.to_string(),
         line: None,
         message: e.to_string(),
-    })?;
-    out.diagram("10_9_zmap.png", &zmap_figure(&text)?)
+    })
+}
+
+/// RMS error against seconds on one thread, one line per renderer, from the rows
+/// `renderer,spp,seconds,rms_error` (a comment line first).
+pub fn error_time_chart(text: &str) -> Result<Chart> {
+    let mut chart = Chart::new(
+        "Lesson 10's Cornell box: error against time, one thread",
+        ("seconds on one thread", Scale::Log),
+        ("RMS error against the reference", Scale::Log),
+    );
+    for (k, line) in text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.starts_with('#'))
+    {
+        let bad = |message: &str| Error::File {
+            path: TIME_DATA.to_string(),
+            line: Some(k + 1),
+            message: message.to_string(),
+        };
+        let fields: Vec<&str> = line.split(',').collect();
+        let [renderer, _spp, seconds, error] = fields[..] else {
+            return Err(bad("not four fields"));
+        };
+        let number = |v: &str| v.parse::<f64>().map_err(|_| bad("not a number"));
+        let point = (number(seconds)?, number(error)?);
+        match chart.series.iter_mut().find(|s| s.name == renderer) {
+            Some(series) => series.points.push(point),
+            None => chart = chart.with(renderer, vec![point]),
+        }
+    }
+    Ok(chart)
 }
 
 /// One configuration's map: its label and the z of each pixel, rows from the top.

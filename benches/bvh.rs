@@ -19,14 +19,24 @@
 //! criterion's figures, one run times every builder and every traversal interleaved
 //! (the fastest of 5 rounds each) and prints the ratios, how many rays each finds a
 //! hit for, and whether the CPU was quiet.
+//!
+//! The same run times a second anchor when Embree 3 is installed (Debian:
+//! `apt-get install libembree-dev`; the bench says so when it is not): Embree's
+//! `rtcIntersect1` through a small C shim (`anchors/embree_caster.c`, `embree.rs`),
+//! on the same mesh, shared with Embree as vertex and index buffers, and the same
+//! rays, its tree built on one thread at quality medium. Before timing, the bench
+//! checks that Embree and the crate find the same triangle at the same distance for
+//! every ray. `ours / Embree` is Embree's time over ours for the build, and our rays
+//! per second over Embree's for the cameras: above 1, the crate is faster.
 
 use std::time::Duration;
 
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
 use obvhs::ray::RayHit;
+use render_benches::embree::{self, Agreement, EmbreeMesh, flat_rays};
 use render_benches::mesh_view::{
-    FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
+    FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_mesh, sphere_scene,
 };
 use render_lessons::bvh::Bvh;
 use render_lessons::course::measure::machine::{
@@ -79,15 +89,17 @@ fn crossover(c: &mut Criterion) {
     group.finish();
 }
 
-/// Our BVH against obvhs's two, in one run: build times, then rays per second at
-/// two cameras (near: about a third of the rays hit; far: a few percent).
+/// Our BVH against obvhs's two and Embree, in one run: build times, then rays per
+/// second at two cameras (near: about a third of the rays hit; far: a few percent).
 fn one_run() {
     let scene = sphere_scene(224);
     let triangles = obvhs_triangles(&scene);
     let params = obvhs::BvhBuildParams::medium_build();
+    let embree_mesh = EmbreeMesh::new(&sphere_mesh(224));
     let mut ours = None;
     let mut bvh2 = None;
     let mut cwbvh = None;
+    let mut embree = None;
     let build = interleaved_min(
         5,
         &mut [
@@ -104,6 +116,7 @@ fn one_run() {
                     &triangles, params, &mut t,
                 ))
             },
+            &mut || embree = embree_mesh.build(),
         ],
     );
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
@@ -121,13 +134,41 @@ fn one_run() {
         "         ours / obvhs Bvh2: {:.2}x the time",
         ms(build[0]) / ms(build[1])
     );
+    let embree = match embree {
+        Some(Ok(scene)) => {
+            println!(
+                "         Embree {} (quality medium, 1 thread) {:.1} ms: ours / Embree {:.2}x \
+                 (Embree's time over ours)",
+                embree::version().unwrap_or_default(),
+                ms(build[3]),
+                ms(build[3]) / ms(build[0])
+            );
+            Some(scene)
+        }
+        Some(Err(e)) => {
+            println!("         Embree anchor skipped: {e}");
+            None
+        }
+        None => {
+            println!("         {}", embree::MISSING);
+            None
+        }
+    };
     let (Some(bvh2), Some(cwbvh)) = (bvh2, cwbvh) else {
         return;
     };
     let ours = BvhScene::new(scene);
     for (label, distance) in [("near camera", NEAR), ("far camera", FAR)] {
         let rays = rays(&camera(1920, 1080, distance));
-        let (mut h0, mut h1, mut h2) = (0, 0, 0);
+        let flat = flat_rays(&rays);
+        let embree = embree.as_ref().filter(|e| {
+            let agreement = Agreement::of(&ours, e, &rays);
+            if agreement.differ() > 0 {
+                println!("    {agreement}");
+            }
+            agreement.holds()
+        });
+        let (mut h0, mut h1, mut h2, mut h3) = (0, 0, 0, 0);
         let times = interleaved_min(
             5,
             &mut [
@@ -161,6 +202,7 @@ fn one_run() {
                         })
                         .count()
                 },
+                &mut || h3 = embree.map_or(0, |e| e.count_hits(&flat)),
             ],
         );
         let hits = [h0, h1, h2];
@@ -181,6 +223,14 @@ fn one_run() {
             hits[1],
             hits[2]
         );
+        if embree.is_some() {
+            println!(
+                "    Embree {:.1} M rays/s: ours / Embree {:.2}x (our rays per second over \
+                 Embree's); rays hit: Embree {h3}",
+                rate(3),
+                rate(0) / rate(3)
+            );
+        }
     }
 }
 

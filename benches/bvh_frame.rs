@@ -1,21 +1,27 @@
 //! One or more frames of the BVH bench's near view (480 x 270 unless told) on one
-//! thread, through this crate's tree or obvhs's `Bvh2`, each tree built before the
-//! frames: what `valgrind --tool=callgrind` counts in
+//! thread, through this crate's tree, obvhs's `Bvh2` or Embree, each tree built
+//! before the frames: what `valgrind --tool=callgrind` counts in
 //! `scripts/instructions-per-ray --bvh`, which runs it for 1 and 2 frames and divides
 //! the difference by the number of rays.
 //!
 //!     cargo build --release -p render-benches --bin bvh-frame
 //!     target/release/bvh-frame TREE [WIDTH HEIGHT [FRAMES]]
+//!     target/release/bvh-frame check [WIDTH HEIGHT]
 //!
-//! TREE is `ours` (`BvhScene::closest_object`) or `obvhs` (`Bvh2::ray_traverse` with
-//! its Möller-Trumbore test), the same question as in `benches/bvh.rs`.
+//! TREE is `ours` (`BvhScene::closest_object`), `obvhs` (`Bvh2::ray_traverse` with
+//! its Möller-Trumbore test) or `embree` (`rtcIntersect1`, when the Embree anchor was
+//! built), the same question as in `benches/bvh.rs`. `check` compares Embree's hits
+//! with the crate's on the frame's rays (`embree::Agreement`, as the bench does
+//! before it times them) and fails when they differ; without Embree it says so and
+//! passes, as `.ci/run` runs it on machines with and without it.
 
 use std::process::ExitCode;
 
 use obvhs::ray::RayHit;
 use render_benches::args::{self, number};
+use render_benches::embree::{self, Agreement, EmbreeMesh, flat_rays};
 use render_benches::mesh_view::{
-    NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_scene,
+    NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_mesh, sphere_scene,
 };
 use render_lessons::ray::Interval;
 use render_lessons::scene::BvhScene;
@@ -30,9 +36,10 @@ fn main() -> ExitCode {
 
 fn run(args: Vec<String>) -> Result<String, String> {
     let tree = args.first().map(String::as_str).unwrap_or_default();
-    if !["ours", "obvhs"].contains(&tree) || args.len() > 4 {
+    if !["ours", "obvhs", "embree", "check"].contains(&tree) || args.len() > 4 {
         return Err(format!(
-            "usage: bvh-frame ours|obvhs [WIDTH HEIGHT [FRAMES]] (TREE was '{tree}')"
+            "usage: bvh-frame ours|obvhs|embree [WIDTH HEIGHT [FRAMES]], or check [WIDTH HEIGHT] \
+             (TREE was '{tree}')"
         ));
     }
     let width = number(&args, 1, "WIDTH", 480)?;
@@ -46,7 +53,32 @@ fn run(args: Vec<String>) -> Result<String, String> {
     let scene = sphere_scene(224);
     let rays = rays(&camera(width, height, NEAR));
     let mut hits = 0;
-    if tree == "ours" {
+    if tree == "check" || tree == "embree" {
+        let mesh = EmbreeMesh::new(&sphere_mesh(224));
+        // Without Embree the check passes (a machine without it is an ordinary one);
+        // a frame through it cannot be counted.
+        let Some(built) = mesh.build() else {
+            let missing = embree::MISSING.to_string();
+            return if tree == "check" {
+                Ok(missing)
+            } else {
+                Err(missing)
+            };
+        };
+        let embree = built?;
+        if tree == "check" {
+            let agreement = Agreement::of(&BvhScene::new(scene), &embree, &rays);
+            return if agreement.holds() {
+                Ok(format!("{width}x{height} rays: {agreement}"))
+            } else {
+                Err(agreement.to_string())
+            };
+        }
+        let flat = flat_rays(&rays);
+        for _ in 0..frames {
+            hits += embree.count_hits(&flat);
+        }
+    } else if tree == "ours" {
         let ours = BvhScene::new(scene);
         for _ in 0..frames {
             hits += rays

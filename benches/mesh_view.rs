@@ -5,6 +5,7 @@
 use glam::{Vec3, Vec3A};
 use render_lessons::camera::{Camera, Film, Frame, PinholeCamera};
 use render_lessons::course::measure::scaling;
+use render_lessons::mesh::Mesh;
 use render_lessons::ray::Ray;
 use render_lessons::scene::Scene;
 
@@ -12,6 +13,12 @@ use render_lessons::scene::Scene;
 /// (the scenes of lesson 11's chart 7).
 pub fn sphere_scene(n: u32) -> Scene {
     scaling::sphere_scene(n).expect("scene")
+}
+
+/// The same sphere as a mesh (the one `sphere_scene` takes its triangles from, in
+/// the same order): what Embree is given.
+pub fn sphere_mesh(n: u32) -> Mesh {
+    Mesh::uv_sphere(Vec3::ZERO, 1.0, n, n).expect("mesh")
 }
 
 /// A pinhole camera at `distance` from the sphere's centre, looking at it, with a

@@ -7,14 +7,20 @@
 //! 2. The equal-time comparison (not criterion; run after it): the image error (RMSE)
 //!    against a converged reference after the same rendering time, for smallpt's
 //!    algorithm and for the estimators that sample the light, at 256 x 192.
+//! 3. Against Mitsuba 3 (not criterion): time per path sample on one thread, the
+//!    crate against Mitsuba's `scalar_rgb` and `llvm_ad_rgb` on the same scene
+//!    (lesson 10's Cornell box, 128 x 96, MIS, at most 8 bounces, no Russian
+//!    roulette), each line saying so when Mitsuba or libLLVM is missing
+//!    (`mitsuba.rs`).
 //!
 //! ```text
-//! cargo bench -p render-benches --bench path_tracing                  # both
+//! cargo bench -p render-benches --bench path_tracing                  # all three
 //! cargo bench -p render-benches --bench path_tracing -- "1024x768"    # samples per second only
 //! cargo bench -p render-benches --bench path_tracing -- equal-time    # the comparison only
+//! cargo bench -p render-benches --bench path_tracing -- mitsuba       # against Mitsuba only
 //! ```
 //!
-//! The comparison runs only under `cargo bench` (not when `cargo test --benches`
+//! The comparisons run only under `cargo bench` (not when `cargo test --benches`
 //! runs this file once as a test). Its reference is cached in `target/` as PFM
 //! files named by the source of `src/pathtrace/`, so editing the path tracer renders
 //! it again; `PT_FRESH_REFERENCE=1` forces that too.
@@ -24,6 +30,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group};
+use render_benches::mitsuba;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::machine::{CpuWatch, benchmarking};
 use render_lessons::course::measure::variance::{Seen, pixel_variance};
@@ -358,27 +365,149 @@ fn report(runs: &[Run], e_ref: f64) {
     );
 }
 
-/// Whether to run the equal-time comparison: only under `cargo bench` (which passes
-/// `--bench`), and only with no name filter or the filter `equal-time`.
-fn wants_equal_time() -> bool {
+/// Whether to run the part named `name` after criterion: only under `cargo bench`
+/// (which passes `--bench`), and only with no name filter or the filter `name`.
+fn wants(name: &str) -> bool {
     if !benchmarking() {
         return false;
     }
     let args: Vec<String> = std::env::args().skip(1).collect();
     let filters: Vec<&String> = args.iter().filter(|a| !a.starts_with('-')).collect();
-    filters.is_empty() || filters.iter().any(|f| f.as_str() == "equal-time")
+    filters.is_empty() || filters.iter().any(|f| f.as_str() == name)
 }
 
 fn main() {
     let watch = CpuWatch::start();
     benches();
     Criterion::default().configure_from_args().final_summary();
-    if wants_equal_time() {
+    let (equal, anchor) = (wants("equal-time"), wants("mitsuba"));
+    if equal {
         equal_time();
         variance_analysis();
+    }
+    if anchor {
+        against_mitsuba();
+    }
+    if equal || anchor {
         println!("\n{}", watch.report());
     }
 }
+
+/// The Mitsuba comparison's image, depth and samples per pixel.
+const MITSUBA_VIEW: mitsuba::View = mitsuba::View {
+    width: 128,
+    height: 96,
+    max_depth: 8,
+};
+const MITSUBA_SPP: u32 = 64;
+/// Interleaved rounds: the crate, then each Mitsuba variant, three times.
+const MITSUBA_ROUNDS: u32 = 3;
+/// The largest |z| of the difference of the image means for which the two
+/// renderers count as rendering the same image (`mitsuba::z_of_means`).
+const MITSUBA_Z: f64 = 5.0;
+
+// ANCHOR: against_mitsuba
+/// Time per path sample on one thread against Mitsuba 3 on the same scene: the
+/// fastest of `MITSUBA_ROUNDS` interleaved rounds each, the crate rendering with
+/// the settings of `cross-check render` (the scene Mitsuba is given is built from
+/// the crate's own description of it). The ratio is Mitsuba's time per sample
+/// over ours, as the BVH bench's ratios are ours over the anchor's speed: above
+/// 1, the crate is faster. A variant whose image has another mean (|z| above
+/// `MITSUBA_Z`) rendered something else and is left out.
+fn against_mitsuba() {
+    let mitsuba::View {
+        width,
+        height,
+        max_depth,
+    } = MITSUBA_VIEW;
+    println!(
+        "\nAgainst Mitsuba 3: lesson 10's Cornell box, {width}x{height}, MIS, at most \
+         {max_depth} bounces (Mitsuba max_depth {}), no Russian roulette, {MITSUBA_SPP} spp, \
+         1 thread, fastest of {MITSUBA_ROUNDS} interleaved rounds",
+        max_depth + 1
+    );
+    let Staged { scene, camera } =
+        path_tracing::cornell(width, height).expect("the Cornell box");
+    let settings = Settings {
+        sampling: Sampling::Mis,
+        max_depth: Some(max_depth),
+        russian_roulette: false,
+        ..Settings::default()
+    };
+    let pool = render_lessons::render::thread_pool(1).expect("a thread pool");
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target");
+    let mut ours = (f64::INFINITY, None);
+    let mut theirs: Vec<Result<(mitsuba::Render, f64), String>> = mitsuba::VARIANTS
+        .iter()
+        .map(|_| Err(String::new()))
+        .collect();
+    for round in 0..MITSUBA_ROUNDS {
+        let mut acc = Accumulator::new(&camera, SEED);
+        let start = Instant::now();
+        let image = pool.install(|| {
+            acc.render_pass(
+                &scene,
+                &camera,
+                &settings,
+                PixelSampling::Independent,
+                MITSUBA_SPP,
+            )
+        });
+        let seconds = start.elapsed().as_secs_f64();
+        assert_eq!(acc.non_finite(), 0, "NaN or infinite samples");
+        if seconds < ours.0 {
+            ours = (seconds, Some(image.expect("pass")));
+        }
+        for (variant, best) in mitsuba::VARIANTS.iter().zip(&mut theirs) {
+            if round > 0 && best.is_err() {
+                continue;
+            }
+            let out = dir.join(format!("mitsuba_anchor_{variant}.pfm"));
+            match mitsuba::render(variant, MITSUBA_VIEW, MITSUBA_SPP, SEED, &out) {
+                Ok(r) => {
+                    let per_sample = r.seconds / r.samples as f64;
+                    if best.as_ref().map_or(true, |(_, p)| per_sample < *p) {
+                        *best = Ok((r, per_sample));
+                    }
+                }
+                Err(e) => *best = Err(e),
+            }
+        }
+    }
+    let (seconds, Some(image)) = ours else {
+        return;
+    };
+    let samples = f64::from(width * height * MITSUBA_SPP);
+    let per_sample = seconds / samples;
+    println!(
+        "  ours {:.2} us per path sample ({samples} samples in {seconds:.2} s)",
+        per_sample * 1e6
+    );
+    for (variant, best) in mitsuba::VARIANTS.iter().zip(&theirs) {
+        match best {
+            Ok((render, theirs)) => {
+                let z = mitsuba::z_of_means(&image, &render.image);
+                if z.abs() > MITSUBA_Z {
+                    println!(
+                        "  ours / Mitsuba {variant}: skipped, its image's mean differs from \
+                         ours by z = {z:.1}: not the same work"
+                    );
+                    continue;
+                }
+                println!(
+                    "  Mitsuba {} {variant} {:.2} us: ours / Mitsuba {variant} {:.2}x (time per \
+                     path sample, Mitsuba's over ours: above 1, ours is faster); the image \
+                     means agree, z = {z:.2}",
+                    render.version,
+                    theirs * 1e6,
+                    theirs / per_sample
+                );
+            }
+            Err(e) => println!("  ours / Mitsuba {variant}: skipped, {e}"),
+        }
+    }
+}
+// ANCHOR_END: against_mitsuba
 
 /// Samples per pixel of the variance analysis.
 const VARIANCE_SPP: u32 = 256;

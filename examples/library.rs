@@ -22,8 +22,8 @@ fn main() -> Result<()> {
     }
     let floor = Plane::new(Vec3::ZERO, Vec3::Y)?;
     objects.push(Object::diffuse(floor, Vec3::splat(0.7)));
-    // The ray caster is lit by the point light, with shadows; the path tracer by the
-    // sky, the background, which the ray caster shows where a ray meets nothing.
+    // Both images are lit by the point light, with shadows; the path tracer also by
+    // the sky (the background), which the ray caster only shows where rays miss.
     let (sky, lamp) = (Vec3::new(0.6, 0.7, 0.9), Vec3::new(2.0, 5.0, 4.0));
     let light = PointLight::new(lamp, Vec3::splat(40.0));
     let scene = Scene::new(objects, sky)?.with_light(light)?;

@@ -10,7 +10,8 @@ use crate::scene::{Object, PointLight, Scene};
 use crate::shapes::Hit;
 
 /// The share of light that reaches surfaces in shadow (a crude stand-in for the
-/// light bounced around the scene, which lesson 10 computes properly).
+/// light bounced around the scene and the light of the sky, the scene's background,
+/// both of which lesson 10 computes properly).
 pub const AMBIENT: f32 = 0.1;
 
 // ANCHOR: lambert

@@ -18,8 +18,13 @@
 //!   Guibas 1995; Veach's thesis 1997, section 9.2).
 //!
 //! Mirror and glass reflect into a single direction, which a light sample cannot
-//! hit: after a specular bounce emission always counts fully. The environment is not
-//! a light that can be sampled, so every strategy counts it fully when a ray escapes.
+//! hit: after a specular bounce emission always counts fully. The environment (the
+//! scene's background, a uniform sky) is not a light that can be sampled, so every
+//! strategy counts it fully when a ray escapes. The scene's point light is the
+//! opposite case, a light only a sample aimed at it can find: no random direction
+//! meets a point, so every strategy, the first two included, counts it by a shadow
+//! ray at every diffuse vertex ([`crate::pathtrace::next_event`]), and nowhere
+//! else; a point light seen in a mirror is never found.
 
 use glam::Vec3;
 
@@ -27,7 +32,7 @@ use crate::basis::Basis;
 use crate::material::Material;
 use crate::pathtrace::light::LightShape;
 use crate::pathtrace::mis::power_heuristic;
-use crate::pathtrace::next_event::direct_light;
+use crate::pathtrace::next_event::{direct_light, point_light};
 use crate::pathtrace::roulette::survives_roulette;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::ray::{Interval, Ray};
@@ -82,10 +87,12 @@ pub struct Vertex {
     /// once the path has left the scene; 0 where nothing shines.
     pub emitted: Vec3,
     /// Light brought there by a light sample (next event estimation), beta f_r L_e
-    /// cos / pdf; 0 without one, and at the vertex where the path ends.
+    /// cos / pdf, and by the scene's point light, beta f_r (pi I) cos / d^2; 0
+    /// without either, and at the vertex where the path ends.
     pub direct: Vec3,
-    /// That light sample: the point aimed at on a light, and whether it faces the
-    /// vertex and its shadow ray got through.
+    /// That light sample on an emitter: the point aimed at on it, and whether it
+    /// faces the vertex and its shadow ray got through (the point light's shadow
+    /// ray, which every strategy traces, is not recorded here).
     pub light_sample: Option<(Vec3, bool)>,
 }
 
@@ -226,7 +233,8 @@ impl Vertex {
 
 /// What happens at one vertex: light found by a light sample, and the next ray.
 struct Bounce {
-    /// f_r L_e cos / pdf from next event estimation (0 without it).
+    /// f_r L_e cos / pdf from next event estimation, plus the point light's light
+    /// (0 without either).
     direct: Vec3,
     /// The light sample behind `direct`: its point, and whether it was seen.
     light_sample: Option<(Vec3, bool)>,
@@ -265,9 +273,13 @@ fn scatter(
             // to bias the interior furnace).
             let start = s.offset.start(hit.point, hit.error, facing);
             let sample = direct_light(scene, start, shading, albedo, rng, s);
+            let mut direct = sample.map_or(Vec3::ZERO, |l| l.light);
+            if let Some(light) = scene.point_light() {
+                direct += point_light(scene, &light, start, shading, albedo);
+            }
             let (direction, weight, pdf) = diffuse_bounce(shading, albedo, rng, s);
             Some(Bounce {
-                direct: sample.map_or(Vec3::ZERO, |l| l.light),
+                direct,
                 light_sample: sample.map(|l| (l.point, l.seen)),
                 start,
                 direction,

@@ -1,7 +1,8 @@
 //! Multiple importance sampling (Veach and Guibas 1995; Veach's thesis 1997,
 //! chapter 9): a sample drawn by one strategy is weighted by how likely each
 //! strategy was to draw it, so that every strategy counts most where it is best and
-//! the weights of any one direction add up to 1.
+//! the weights of any one direction add up to 1. A point light takes no part: only
+//! its shadow ray can find it, so that strategy's weight is 1.
 //!
 //! ```
 //! use render_lessons::pathtrace::mis::{power_heuristic, power_heuristic_with_counts};

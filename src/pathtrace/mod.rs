@@ -2,13 +2,14 @@
 //!
 //! Lesson 10: Monte Carlo path tracing, an estimator of Kajiya's rendering equation
 //! (Lecture 2), one idea per file, on the shared
-//! [`crate::scene::Scene`] (objects with a [`crate::material::Material`] and emission):
+//! [`crate::scene::Scene`] (objects with a [`crate::material::Material`] and emission,
+//! the background sky, the point light):
 //!
 //! - [`light`]: choosing points on lights (area, cone), each strategy beside its
 //!   density, and the strategies each light's shape allows;
 //! - [`settings`]: the sampling strategy, path length, Russian roulette, offset;
 //! - [`estimator`]: the path, vertex by vertex, and the sum of its light;
-//! - [`next_event`]: light samples with shadow rays;
+//! - [`next_event`]: light samples with shadow rays, and the point light's;
 //! - [`mis`]: the power heuristic that combines light and BRDF samples;
 //! - [`roulette`]: Russian roulette;
 //! - [`progressive`]: sample passes accumulated into an image.

@@ -1,6 +1,8 @@
 //! Next event estimation: at a diffuse vertex, one sample aimed at a light and a
 //! shadow ray to check that nothing blocks it (the direct-lighting estimator of
-//! pbrt-v3 section 14.3, with the MIS weight of Veach 1997 section 9.2).
+//! pbrt-v3 section 14.3, with the MIS weight of Veach 1997 section 9.2); and the
+//! scene's point light, a delta light that only a shadow ray can find (pbrt-v3
+//! section 12.2), at every diffuse vertex whatever the strategy.
 
 use glam::Vec3;
 
@@ -10,7 +12,7 @@ use crate::pathtrace::mis::power_heuristic;
 use crate::pathtrace::settings::{Sampling, Settings};
 use crate::rng::Rng;
 use crate::sampling::cosine_hemisphere_pdf;
-use crate::scene::Intersect;
+use crate::scene::{Intersect, PointLight};
 use crate::spawn::{Offset, Start};
 
 // ANCHOR: direct_light
@@ -96,3 +98,33 @@ fn unoccluded(
     let shadow = from.ray_to(offset.start(y, light.error, n_l))?;
     (!scene.occluded(&shadow.ray, shadow.range)).then_some(cos)
 }
+
+// ANCHOR: point_light
+/// The light of the point `light` at a Lambertian vertex (unit normal `n`, albedo):
+/// f_r (pi I) cos(theta) / d^2, if the shadow ray from `from` to the light gets
+/// through. A point light sends all its light to `from` along one direction, so
+/// the integral over the hemisphere collapses to that one term (pbrt-v3
+/// section 12.2), with no density to divide by; no bounce can meet a point, so this
+/// is the only place it is counted, in every strategy, and under MIS its weight is 1.
+pub(super) fn point_light(
+    scene: &impl Intersect,
+    light: &PointLight,
+    from: Start,
+    n: Vec3,
+    albedo: Vec3,
+) -> Vec3 {
+    let to_light = light.position - from.point;
+    let d2 = to_light.length_squared();
+    let cos = n.dot(to_light) / d2.sqrt();
+    let lit = cos > 0.0 // also false for NaN: the vertex at the light
+        && from
+            .ray_to(Start::at(light.position))
+            .is_some_and(|shadow| !scene.occluded(&shadow.ray, shadow.range));
+    let sample = diffuse_brdf(albedo) * light.radiant_intensity() * (cos / d2);
+    if lit && sample.is_finite() {
+        sample
+    } else {
+        Vec3::ZERO
+    }
+}
+// ANCHOR_END: point_light

@@ -5,7 +5,9 @@ use crate::error::{Error, Problem, Result};
 use crate::pathtrace::light::SphereSampling;
 use crate::spawn::Offset;
 
-/// How directions at diffuse vertices are chosen.
+/// How directions at diffuse vertices are chosen, and emitters found. A point light
+/// is found the same way by all four: a shadow ray to it at every diffuse vertex
+/// (no direction chosen at random can meet a point).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Sampling {
     /// Uniform over the hemisphere (BRDF-blind).

@@ -1,13 +1,27 @@
 //! A scene: a plain list of primitives, each with a material and the light it emits,
-//! what a ray that hits nothing sees, and (for the ray caster of lessons 08 and 09)
-//! an optional point light. No acceleration structure: every ray is tested against
-//! every primitive, as in Appel's ray casting (Lecture 4); lesson 11 measures when
-//! that stops paying, and [`BvhScene`] asks the same questions through a tree
-//! ([`list_or_tree`] chooses between the two).
+//! the background (the radiance a ray that hits nothing sees), and an optional point
+//! light. No acceleration structure: every ray is tested against every primitive, as
+//! in Appel's ray casting (Lecture 4); lesson 11 measures when that stops paying, and
+//! [`BvhScene`] asks the same questions through a tree ([`list_or_tree`] chooses
+//! between the two).
 //!
-//! One type serves every renderer: the ray caster paints an object's albedo lit by
-//! the point light; the path tracer scatters by its material and finds light in its
-//! emission.
+//! One type serves every renderer, and each part means the same to all of them; what
+//! differs is how much of the scene's light each renderer gathers:
+//!
+//! | part | ray caster (08), rasterizer (09) | path tracer (10) |
+//! |---|---|---|
+//! | point light | lights surfaces: rho I cos / d^2 | the same, by shadow rays |
+//! | background | seen by rays that miss | seen, and lights surfaces |
+//! | emission | not drawn | seen, and lights surfaces |
+//! | light between surfaces | the ambient share k_a rho | every bounce |
+//!
+//! So a matte surface lit by the point light alone, under a black background, is
+//! the same in both (less the ray caster's k_a rho) at a path depth of 1; a sky
+//! lights the path tracer's surfaces and not the ray caster's, whose ambient term
+//! stands in for it and for all other indirect light
+//! (`tests/lessons/lesson_10_point_light.rs` checks both).
+
+use std::f32::consts::PI;
 
 use glam::Vec3;
 
@@ -128,12 +142,19 @@ pub struct SceneHit {
     pub object: usize,
 }
 
-/// A point light (lessons 08 and 09).
+/// A point light: all its light leaves one point (lessons 08 to 10).
+///
+/// Its `intensity` is the lessons' I, with the pi of Lambert's BRDF folded in: a
+/// matte surface of albedo rho facing it at a distance d, at an angle theta, sends
+/// rho I cos(theta) / d^2 towards the eye. The ray caster paints that (plus its
+/// ambient share, [`crate::lighting::lambert`]); the path tracer gets the same from
+/// the rendering equation with f_r = rho / pi and the light's radiant intensity
+/// pi I ([`PointLight::radiant_intensity`]), in every sampling strategy.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointLight {
     /// Where it is.
     pub position: Vec3,
-    /// Its colour and strength, linear RGB.
+    /// Its colour and strength, linear RGB: the radiant intensity divided by pi.
     pub intensity: Vec3,
 }
 
@@ -144,6 +165,13 @@ impl PointLight {
             position,
             intensity,
         }
+    }
+
+    /// The power it sends per unit solid angle, the same in every direction: pi
+    /// [`PointLight::intensity`] (a white surface of f_r = 1 / pi facing it head on
+    /// at distance d reflects I / d^2, what lesson 08 paints).
+    pub fn radiant_intensity(&self) -> Vec3 {
+        PI * self.intensity
     }
 }
 
@@ -176,9 +204,10 @@ fn check_radiance(param: &'static str, v: Vec3) -> Result<Vec3> {
 }
 
 impl Scene {
-    /// A scene of `objects` in front of `background`: the colour (ray casting) or
-    /// radiance (path tracing) of every ray that hits nothing. No point light: add
-    /// one with [`Scene::with_light`].
+    /// A scene of `objects` under `background`, a uniform sky: the radiance
+    /// (linear RGB) arriving along every ray that hits nothing. Every renderer shows
+    /// it where a camera ray meets nothing; only the path tracer is also lit by it
+    /// (see the module's table). No point light: add one with [`Scene::with_light`].
     ///
     /// Rejects NaN, infinite or negative emission and background, materials that
     /// fail [`Material::check`], and emission on any shape but a sphere or a quad:
@@ -210,7 +239,7 @@ impl Scene {
         })
     }
 
-    /// The same scene lit by the point `light` (lessons 08 and 09's shading).
+    /// The same scene lit by the point `light`, in every renderer.
     pub fn with_light(self, light: PointLight) -> Result<Scene> {
         finite3("light position", light.position)?;
         check_radiance("light intensity", light.intensity)?;
@@ -235,7 +264,7 @@ impl Scene {
         &self.emitters
     }
 
-    /// The colour (or radiance) of rays that hit nothing.
+    /// The radiance of rays that hit nothing, the uniform sky ([`Scene::new`]).
     pub fn background(&self) -> Vec3 {
         self.background
     }

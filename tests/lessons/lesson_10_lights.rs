@@ -45,7 +45,7 @@ fn sphere_light_on_floor(
 /// formula for a polygon, E = (L / 2) |sum_i Theta_i n . g_i|, Theta_i the angle
 /// that edge i subtends at p and g_i the unit normal of the plane through p and that
 /// edge (Arvo 1995, "Applications of Irradiance Tensors", eq. 4), times rho / pi.
-fn polygon_light_on_floor(
+pub(crate) fn polygon_light_on_floor(
     p: [f64; 3],
     rho: f64,
     poly: &[[f64; 3]],
@@ -96,7 +96,7 @@ fn floor_point_samples(
 
 /// Direct light at each floor point (x, 0, z) of `points`, by each of `estimators`,
 /// against `exact` at that point: within 3 sigma / sqrt(N) for N = 40 000 samples.
-fn assert_floor_matches(
+pub(crate) fn assert_floor_matches(
     scene: &Scene,
     name: &str,
     points: &[(f32, f32)],

@@ -42,4 +42,5 @@ mod lesson_10_no_nan;
 mod lesson_10_pages;
 mod lesson_10_path_tracing;
 mod lesson_10_pfm;
+mod lesson_10_point_light;
 mod lesson_10_thin_lens;

@@ -17,10 +17,10 @@
 //!    `progress`: what the machine can give, the maths of Lectures 3 and 4, one
 //!    deterministic random stream per pixel and the samplers that use it, writing
 //!    files whole, progress bars;
-//! 3. `quadratic`, `spawn`, `bvh`: the roots of a t^2 + b t + c = 0, shared by the
-//!    sphere and the quadrics; where a spawned ray starts, and where a shadow ray
-//!    ends; the bounding volume hierarchy, a tree of boxes that knows its
-//!    primitives by their boxes alone;
+//! 3. `quadratic`, `spawn`, `bvh`, `texture`: the roots of a t^2 + b t + c = 0,
+//!    shared by the sphere and the quadrics; where a spawned ray starts, and where a
+//!    shadow ray ends; the bounding volume hierarchy, a tree of boxes that knows its
+//!    primitives by their boxes alone; an image read as a surface's albedo;
 //! 4. `camera`, `shapes`: rays from pixels, and where rays cross surfaces (a
 //!    triangle mesh among them, one shape with a tree of its own);
 //! 5. `scene`, `framebuffer`: a list of objects with one closest-hit loop, the same
@@ -66,6 +66,7 @@ pub mod scene;
 pub mod scenes;
 pub mod shapes;
 pub mod spawn;
+pub mod texture;
 pub mod transform;
 
 pub use error::{Error, Result};

@@ -41,8 +41,9 @@ pub fn lambert(
 // ANCHOR_END: lambert
 
 /// The colour of `object` at `hit` under `scene`'s point light, by [`lambert`] with
-/// the shading normal on the side the ray arrived from ([`Hit::shading_facing`]: a
-/// smooth mesh's blend of its vertex normals, elsewhere the surface's own normal);
+/// the albedo there ([`Object::albedo_at`]: a texture's colour, or the material's)
+/// and the shading normal on the side the ray arrived from ([`Hit::shading_facing`]:
+/// a smooth mesh's blend of its vertex normals, elsewhere the surface's own normal);
 /// `visible(light)` decides whether the light is seen from the hit (a shadow ray, or
 /// `true`). A scene with no point light is lit by the ambient term alone. The ray
 /// caster and the rasterizer's reference both shade their hits here.
@@ -52,14 +53,11 @@ pub fn at_hit(
     object: &Object,
     visible: impl FnOnce(&PointLight) -> bool,
 ) -> Vec3 {
+    let albedo = object.albedo_at(hit);
     let Some(light) = scene.point_light() else {
-        return object.colour() * AMBIENT;
+        return albedo * AMBIENT;
     };
-    lambert(
-        hit.point,
-        hit.shading_facing(),
-        object.colour(),
-        &light,
-        || visible(&light),
-    )
+    lambert(hit.point, hit.shading_facing(), albedo, &light, || {
+        visible(&light)
+    })
 }

@@ -26,6 +26,7 @@ pub use crate::render::render;
 pub use crate::scene::{BvhScene, ListOrTree};
 pub use crate::scene::{Intersect, Object, PointLight, Scene};
 pub use crate::scenes::{TEAPOT_OBJ, TORUS_OBJ, asset_path};
-pub use crate::shapes::{Aabb, Plane, Quad, Shape, Sphere, Triangle};
+pub use crate::shapes::{Aabb, Plane, Quad, Shape, Sphere, Triangle, TriangleMesh};
 pub use crate::spawn::Offset;
+pub use crate::texture::Texture;
 pub use crate::transform::Transform;

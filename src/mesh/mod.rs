@@ -24,27 +24,31 @@ pub mod tessellate;
 
 pub use modeling::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
 pub use obj::{FaceCounts, LoadedMesh, fan};
+use std::sync::Arc;
 pub use subdivide::{MAX_SUBDIVISIONS, check_subdivisions, subdivided_count};
 pub use teapot::{patch_point, teapot_obj};
 pub use tessellate::{FLOOR_SIZE, check_segments, tessellate};
 
 use glam::Vec3;
 
-use crate::error::Result;
+use crate::error::{Error, Problem, Result};
 use crate::scene::Object;
 use crate::shapes::TriangleMesh;
+use crate::texture::Texture;
 use crate::transform::Transform;
 
 /// A mesh placed in the world by a model transform, with one colour (linear RGB
-/// albedo).
+/// albedo) or a texture.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Model {
     /// The vertex and triangle lists.
     pub mesh: Mesh,
     /// Model space to world space.
     pub model: Transform,
-    /// The albedo.
+    /// The albedo, where there is no texture.
     pub colour: Vec3,
+    /// The texture the albedo is looked up in, by the mesh's texture coordinates.
+    pub texture: Option<Arc<Texture>>,
 }
 
 impl Model {
@@ -54,12 +58,36 @@ impl Model {
             mesh,
             model: Transform::IDENTITY,
             colour,
+            texture: None,
         }
     }
 
     /// The same model placed in the world by `model` (model space to world space).
     pub fn placed(self, model: Transform) -> Model {
         Model { model, ..self }
+    }
+
+    /// The same model with its albedo looked up in `texture` at each point, by the
+    /// mesh's texture coordinates ([`Mesh::with_uvs`]).
+    pub fn textured(self, texture: Texture) -> Model {
+        Model {
+            texture: Some(Arc::new(texture)),
+            ..self
+        }
+    }
+
+    /// The model's texture, `Ok(None)` for none; an error if it has one but its mesh
+    /// has no texture coordinates to look it up by.
+    pub fn checked_texture(&self) -> Result<Option<&Texture>> {
+        match (&self.texture, self.mesh.uvs.is_empty()) {
+            (Some(_), true) => Err(Error::Value {
+                param: "texture",
+                problem: Problem::Invalid {
+                    reason: "needs a mesh with texture coordinates (vt lines)",
+                },
+            }),
+            (texture, _) => Ok(texture.as_deref()),
+        }
     }
 
     // ANCHOR: model_shape
@@ -80,14 +108,19 @@ impl Model {
             positions.collect(),
             &mesh.triangles,
             normals.collect(),
-            Vec::new(),
+            mesh.uvs.clone(),
         )
     }
 
     /// The model as one object of the scene: its [`Model::shape`], diffuse of its
-    /// colour.
+    /// colour, or of its texture's colours ([`Object::textured`]).
     pub fn object(&self) -> Result<Object> {
-        Ok(Object::diffuse(self.shape()?, self.colour))
+        self.checked_texture()?;
+        let shape = self.shape()?;
+        Ok(match &self.texture {
+            Some(texture) => Object::textured(shape, texture.clone()),
+            None => Object::diffuse(shape, self.colour),
+        })
     }
     // ANCHOR_END: model_shape
 

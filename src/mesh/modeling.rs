@@ -4,7 +4,7 @@
 
 use std::f32::consts::PI;
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::error::{Error, Problem, Result, finite3, positive};
 use crate::scene::Object;
@@ -25,8 +25,9 @@ pub const LECTURE_VERTICES: [[f32; 3]; 4] = [
 pub const LECTURE_TRIANGLES: [[u32; 3]; 4] =
     [[1, 4, 5], [5, 4, 8], [2, 1, 4], [3, 2, 4]];
 
-/// A triangle mesh: positions, one normal per vertex, and triangles of 0-based
-/// vertex indices, counter-clockwise when seen from the outside.
+/// A triangle mesh: positions, one normal per vertex, texture coordinates per vertex
+/// if it has a texture, and triangles of 0-based vertex indices, counter-clockwise
+/// when seen from the outside.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Mesh {
     /// The vertex list.
@@ -34,6 +35,8 @@ pub struct Mesh {
     /// One unit normal per vertex (zero where no triangle gives the vertex a
     /// direction).
     pub normals: Vec<Vec3>,
+    /// Texture coordinates (u, v), one per vertex, or none ([`Mesh::with_uvs`]).
+    pub uvs: Vec<Vec2>,
     /// The triangle list, three 0-based indices into `positions` each.
     pub triangles: Vec<[u32; 3]>,
 }
@@ -47,6 +50,7 @@ impl Mesh {
         Ok(Mesh {
             positions,
             normals,
+            uvs: Vec::new(),
             triangles,
         })
     }
@@ -74,8 +78,26 @@ impl Mesh {
         Ok(Mesh {
             positions,
             normals: normals.iter().map(|n| n.normalize_or_zero()).collect(),
+            uvs: Vec::new(),
             triangles,
         })
+    }
+
+    /// The same mesh with texture coordinates `uvs`, one per vertex, each finite.
+    pub fn with_uvs(self, uvs: Vec<Vec2>) -> Result<Mesh> {
+        if uvs.len() != self.positions.len() {
+            return Err(Error::Value {
+                param: "uvs (one per vertex)",
+                problem: Problem::TooFew {
+                    value: uvs.len().min(u32::MAX as usize) as u32,
+                    min: self.positions.len().min(u32::MAX as usize) as u32,
+                },
+            });
+        }
+        for uv in &uvs {
+            finite3("uv", uv.extend(0.0))?;
+        }
+        Ok(Mesh { uvs, ..self })
     }
 
     // ANCHOR: lecture_fixture
@@ -128,6 +150,7 @@ impl Mesh {
         Ok(Mesh {
             positions,
             normals,
+            uvs: Vec::new(),
             triangles,
         })
     }
@@ -219,7 +242,8 @@ impl Mesh {
     }
 
     /// The same triangles with no shared vertices, each corner carrying its
-    /// triangle's normal: flat shading, as a ray caster sees a triangle.
+    /// triangle's normal (and its texture coordinates): flat shading, as the ray
+    /// caster sees a triangle primitive.
     pub fn flat_shaded(&self) -> Result<Mesh> {
         let mut positions = Vec::new();
         let mut normals = Vec::new();
@@ -231,7 +255,14 @@ impl Mesh {
         let triangles = (0..self.triangles.len() as u32)
             .map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
             .collect();
-        Mesh::with_normals(positions, normals, triangles)
+        let flat = Mesh::with_normals(positions, normals, triangles)?;
+        match self.uvs.as_slice() {
+            [] => Ok(flat),
+            uvs => {
+                let corners = self.triangles.iter().flatten();
+                flat.with_uvs(corners.map(|&i| uvs[i as usize]).collect())
+            }
+        }
     }
 
     /// The square of side `size` centred on `centre` in the plane y = centre.y,

@@ -41,7 +41,7 @@ impl Mesh {
     /// (ab, b, bc), (ca, bc, c) and (ab, bc, ca), each turning the way (a, b, c)
     /// turns. A midpoint is made once per edge and shared by the two triangles of
     /// the edge, so a closed mesh stays closed; its normal is the normalised sum of
-    /// the edge's two vertex normals.
+    /// the edge's two vertex normals, its texture coordinates their mean.
     pub fn subdivided(&self, levels: u32) -> Result<Mesh> {
         check_subdivisions("subdivide", levels)?;
         let count = subdivided_count(self.triangles.len(), levels);
@@ -68,12 +68,16 @@ impl Mesh {
     fn split_in_four(&self) -> Mesh {
         let mut positions = self.positions.clone();
         let mut normals = self.normals.clone();
+        let mut uvs = self.uvs.clone();
         let mut midpoints: HashMap<(u32, u32), u32> = HashMap::new();
         let mut midpoint = |a: u32, b: u32| {
             *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
                 let (i, j) = (a as usize, b as usize);
                 positions.push((positions[i] + positions[j]) * 0.5);
                 normals.push((normals[i] + normals[j]).normalize_or_zero());
+                if !uvs.is_empty() {
+                    uvs.push((uvs[i] + uvs[j]) * 0.5);
+                }
                 (positions.len() - 1) as u32
             })
         };
@@ -85,6 +89,7 @@ impl Mesh {
         Mesh {
             positions,
             normals,
+            uvs,
             triangles,
         }
     }

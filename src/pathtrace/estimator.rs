@@ -195,7 +195,7 @@ impl<S: Intersect> Iterator for Path<'_, S> {
         if settings.max_depth.is_some_and(|m| bounce >= m) || !hit.point.is_finite() {
             return Some(vertex);
         }
-        let material = surface.material;
+        let material = surface.material_at(&hit); // a texture's albedo there
         let Some(next) = scatter(scene, material, &ray, &hit, self.rng, settings)
         else {
             return Some(vertex);

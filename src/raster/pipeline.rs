@@ -24,6 +24,7 @@ use crate::error::{Result, finite3};
 use crate::framebuffer::Framebuffer;
 use crate::mesh::Model;
 use crate::scene::PointLight;
+use crate::texture::Texture;
 use crate::transform::Transform;
 
 /// Rows per band of the parallel fragment stage.
@@ -75,41 +76,51 @@ pub fn rasterize(
         None => None,
     };
     let shadow_map = shadow_map.as_ref();
-    let triangles = setup(models, &transforms, camera, light, settings, shadow_map)?;
+    let screen = setup(models, &transforms, camera, light, settings, shadow_map)?;
     let lights = Lights {
         light,
         viewer: viewer(camera),
         shadow_map,
     };
     in_bands(
-        &triangles,
+        &screen.triangles,
         width,
         height,
         &mut colours,
         |mine, rows, pixels| {
-            draw_band(&triangles, mine, rows, width, pixels, &lights, settings);
+            draw_band(&screen, mine, rows, width, pixels, &lights, settings);
         },
     );
     Framebuffer::from_pixels(width, height, colours)
 }
 // ANCHOR_END: rasterize
 
+/// The screen triangles of every model, in order, and each one's texture.
+pub(super) struct Screen<'a> {
+    pub(super) triangles: Vec<[ScreenVertex; 3]>,
+    pub(super) textures: Vec<Option<&'a Texture>>,
+}
+
 /// Vertex and triangle stage: every model's vertices transformed (and lit, for
-/// Gouraud shading), its triangles clipped and projected to screen triangles, in order.
-pub(super) fn setup(
-    models: &[Model],
+/// Gouraud shading), its triangles clipped and projected to screen triangles, in
+/// order, each with its model's texture if it has one.
+pub(super) fn setup<'a>(
+    models: &'a [Model],
     transforms: &CameraTransforms,
     camera: &Camera,
     light: &PointLight,
     settings: &RasterSettings,
     shadow_map: Option<&ShadowMap>,
-) -> Result<Vec<[ScreenVertex; 3]>> {
+) -> Result<Screen<'a>> {
     let lights = Lights {
         light,
         viewer: viewer(camera),
         shadow_map,
     };
-    let mut screen = Vec::new();
+    let mut screen = Screen {
+        triangles: Vec::new(),
+        textures: Vec::new(),
+    };
     for model in models {
         let vertices =
             transform_vertices(model, transforms, &lights, settings.shading)?;
@@ -125,22 +136,29 @@ pub(super) fn setup(
                 })
             })
             .collect();
-        screen.extend(triangles);
+        let texture = model.checked_texture()?;
+        screen.textures.extend(triangles.iter().map(|_| texture));
+        screen.triangles.extend(triangles);
     }
     Ok(screen)
 }
 
 // ANCHOR: vertex_stage
 /// The vertex stage: world position (model matrix), world normal (inverse transpose
-/// of the model matrix), clip position (projection x view), and the colour to
-/// interpolate: lit here for Gouraud shading, the albedo for per-pixel shading.
+/// of the model matrix), clip position (projection x view), texture coordinates,
+/// and the colour to interpolate: lit here for Gouraud shading, the albedo for
+/// per-pixel shading. A textured model's vertices are lit as white: its fragments
+/// take their albedo from the texture.
 fn transform_vertices(
     model: &Model,
     transforms: &CameraTransforms,
     lights: &Lights,
     shading: Shading,
 ) -> Result<Vec<ClipVertex>> {
-    let albedo = finite3("colour", model.colour)?;
+    let albedo = match model.checked_texture()? {
+        Some(_) => Vec3::ONE,
+        None => finite3("colour", model.colour)?,
+    };
     let normal_matrix = model.model.inverse()?.matrix().transpose();
     let mesh = &model.mesh;
     Ok((0..mesh.positions.len())
@@ -160,6 +178,7 @@ fn transform_vertices(
                     world,
                     normal,
                     colour,
+                    uv: mesh.uvs.get(i).copied().unwrap_or_default(),
                 },
             }
         })
@@ -208,9 +227,11 @@ pub(super) fn in_bands<T: Send>(
 
 // ANCHOR: draw_band
 /// The fragment stage for one band of rows: its triangles in order, a z-buffer
-/// with the test "nearer than what is there" (depth less-than), and the shading.
+/// with the test "nearer than what is there" (depth less-than), and the shading,
+/// with a textured triangle's albedo looked up at the fragment's texture
+/// coordinates, interpolated perspective-correctly as every attribute is.
 fn draw_band(
-    triangles: &[[ScreenVertex; 3]],
+    screen: &Screen,
     mine: &[u32],
     rows: Range<u32>,
     width: u32,
@@ -222,7 +243,7 @@ fn draw_band(
     let first_row = rows.start;
     for &k in mine {
         rasterize_triangle(
-            &triangles[k as usize],
+            &screen.triangles[k as usize],
             settings.cull,
             width,
             rows.clone(),
@@ -231,9 +252,14 @@ fn draw_band(
                 if f.depth < depth[i] {
                     depth[i] = f.depth;
                     let v = f.varyings;
-                    pixels[i] = match settings.shading {
-                        Shading::PerVertex => v.colour,
-                        Shading::PerPixel => lights.shade(v.world, v.normal, v.colour),
+                    let texel = screen.textures[k as usize].map(|t| t.sample(v.uv));
+                    pixels[i] = match (settings.shading, texel) {
+                        (Shading::PerVertex, None) => v.colour,
+                        (Shading::PerVertex, Some(albedo)) => v.colour * albedo,
+                        (Shading::PerPixel, albedo) => {
+                            let albedo = albedo.unwrap_or(v.colour);
+                            lights.shade(v.world, v.normal, albedo)
+                        }
                     };
                 }
             },

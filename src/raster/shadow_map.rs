@@ -83,7 +83,8 @@ impl ShadowMap {
             light,
             &settings,
             None,
-        )?;
+        )?
+        .triangles;
         let size = shadows.size;
         let mut distance = vec![f32::INFINITY; size as usize * size as usize];
         super::pipeline::in_bands(

@@ -1,7 +1,7 @@
 //! What travels with a vertex from the vertex stage to the fragments: its clip-space
 //! position and the attributes ("varyings") that the rasterizer interpolates.
 
-use glam::{Vec3, Vec4};
+use glam::{Vec2, Vec3, Vec4};
 
 /// The interpolated attributes of a vertex or fragment.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -11,8 +11,10 @@ pub struct Varyings {
     /// World-space normal (not unit after interpolation).
     pub normal: Vec3,
     /// Per-vertex lit colour (Gouraud) or albedo (per-pixel shading), or any other
-    /// three numbers a lesson wants interpolated, such as texture coordinates.
+    /// three numbers a lesson wants interpolated.
     pub colour: Vec3,
+    /// Texture coordinates (u, v), for a textured mesh.
+    pub uv: Vec2,
 }
 
 impl Varyings {
@@ -22,6 +24,7 @@ impl Varyings {
             world: self.world.lerp(other.world, t),
             normal: self.normal.lerp(other.normal, t),
             colour: self.colour.lerp(other.colour, t),
+            uv: self.uv.lerp(other.uv, t),
         }
     }
 
@@ -30,10 +33,12 @@ impl Varyings {
         let sum = |f: fn(&Varyings) -> Vec3| {
             f(&v[0]) * weights[0] + f(&v[1]) * weights[1] + f(&v[2]) * weights[2]
         };
+        let [uv0, uv1, uv2] = v.map(|v| v.uv);
         Varyings {
             world: sum(|v| v.world),
             normal: sum(|v| v.normal),
             colour: sum(|v| v.colour),
+            uv: uv0 * weights[0] + uv1 * weights[1] + uv2 * weights[2],
         }
     }
 }

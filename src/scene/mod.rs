@@ -22,6 +22,7 @@
 //! (`tests/lessons/lesson_10_point_light.rs` checks both).
 
 use std::f32::consts::PI;
+use std::sync::Arc;
 
 use glam::Vec3;
 
@@ -29,6 +30,7 @@ use crate::error::{Error, Problem, Result, finite3};
 use crate::material::Material;
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Hit, PreparedRay, Shape, ShapesByKind};
+use crate::texture::Texture;
 
 pub mod list_or_tree;
 mod tree;
@@ -41,7 +43,9 @@ pub use tree::BvhScene;
 /// Emission is two-sided ([`Object::emitting`]): L_e leaves the surface on both
 /// sides, which the furnace seen from inside a sphere needs. A lamp
 /// ([`Object::lamp`]) shines from its front only, the side its normal points to,
-/// as a ceiling panel does: its back emits nothing.
+/// as a ceiling panel does: its back emits nothing. A textured object
+/// ([`Object::textured`]) takes its albedo at each point from its texture
+/// ([`Object::albedo_at`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// The surface.
@@ -52,6 +56,9 @@ pub struct Object {
     pub emission: Vec3,
     /// `true` if it emits from its front side only (a lamp).
     pub front_only: bool,
+    /// The texture its diffuse albedo is looked up in, by the texture coordinates of
+    /// each hit (a mesh's; every other shape's are 0), or none.
+    pub texture: Option<Arc<Texture>>,
 }
 
 impl Object {
@@ -62,6 +69,7 @@ impl Object {
             material,
             emission: Vec3::ZERO,
             front_only: false,
+            texture: None,
         }
     }
 
@@ -69,6 +77,16 @@ impl Object {
     /// what the ray caster and the rasterizer paint.
     pub fn diffuse(shape: impl Into<Shape>, albedo: Vec3) -> Object {
         Object::new(shape, Material::Diffuse { albedo })
+    }
+
+    /// A Lambertian surface whose albedo at each point is `texture`'s colour at the
+    /// point's texture coordinates ([`Object::albedo_at`]); its material's albedo is
+    /// the texture's mean ([`Texture::mean`]), for a renderer that looks up no point.
+    pub fn textured(shape: impl Into<Shape>, texture: Arc<Texture>) -> Object {
+        Object {
+            texture: Some(texture.clone()),
+            ..Object::diffuse(shape, texture.mean())
+        }
     }
 
     /// A surface that emits `emission` from both sides.
@@ -82,6 +100,7 @@ impl Object {
             material,
             emission,
             front_only: false,
+            texture: None,
         }
     }
 
@@ -93,6 +112,7 @@ impl Object {
             material: Material::BLACK,
             emission,
             front_only: true,
+            texture: None,
         }
     }
 
@@ -111,6 +131,28 @@ impl Object {
     pub fn colour(&self) -> Vec3 {
         self.material.albedo()
     }
+
+    // ANCHOR: albedo_at
+    /// The albedo at `hit`: the texture's colour at the hit's texture coordinates
+    /// ([`Texture::sample`]), or the material's albedo ([`Object::colour`]).
+    pub fn albedo_at(&self, hit: &Hit) -> Vec3 {
+        match &self.texture {
+            Some(texture) => texture.sample(hit.uv),
+            None => self.colour(),
+        }
+    }
+
+    /// The material at `hit`: a diffuse material takes the albedo there
+    /// ([`Object::albedo_at`]); mirrors and glass are not textured.
+    pub fn material_at(&self, hit: &Hit) -> Material {
+        match self.material {
+            Material::Diffuse { .. } if self.texture.is_some() => Material::Diffuse {
+                albedo: self.albedo_at(hit),
+            },
+            material => material,
+        }
+    }
+    // ANCHOR_END: albedo_at
 
     /// `true` if it emits any light.
     pub fn is_emissive(&self) -> bool {

@@ -85,6 +85,7 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
             mesh,
             model,
             colour: Vec3::new(0.8, 0.55, 0.3),
+            texture: None,
         },
         counts,
         subdivisions,

@@ -22,7 +22,7 @@ const LAYERS: &[&[&str]] = &[
         "files",
         "progress",
     ],
-    &["quadratic", "spawn", "bvh"],
+    &["quadratic", "spawn", "bvh", "texture"],
     &["camera", "shapes"],
     &["scene", "framebuffer"],
     &["lighting", "render", "mesh"],

@@ -202,6 +202,7 @@ fn interpolation_is_perspective_correct() {
             world: corners[i],
             normal: Vec3::Z,
             colour: uv[i],
+            ..Default::default()
         },
     };
     let mut checked = 0;

@@ -33,6 +33,7 @@ mod lesson_09_meshes;
 mod lesson_09_rasterization;
 mod lesson_09_shading;
 mod lesson_09_teapot;
+mod lesson_09_textures;
 mod lesson_10_densities;
 mod lesson_10_estimators;
 mod lesson_10_figures;

@@ -153,6 +153,7 @@ pub fn stages() -> Result<Diagram> {
             world: world[i],
             normal: Vec3::Z,
             colour: colours[i],
+            ..Default::default()
         },
     };
     let screen = [0, 1, 2].map(|i| ScreenVertex::from_clip(&pipeline, &vertex(i)));

@@ -128,6 +128,7 @@ pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)>
         ("triangles", mesh.model.mesh.triangles.len()),
         ("faces triangulated", counts.faces_triangulated),
         ("degenerate, skipped", counts.skipped_degenerate),
+        ("under 3 corners, skipped", counts.skipped_edges),
         ("BVH nodes", tree.bvh().node_count()),
     ] {
         sizes.row(vec![what.to_string(), count.to_string()]);

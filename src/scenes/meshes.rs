@@ -49,7 +49,7 @@ pub struct PlacedMesh {
 /// ([`MESH_BYTES_PER_TRIANGLE`] each).
 pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
     let subdivisions = check_subdivisions("subdivide", subdivisions)?;
-    let LoadedMesh { mesh, counts } = Mesh::from_obj(asset_path(path))?;
+    let LoadedMesh { mesh, counts, .. } = Mesh::from_obj(asset_path(path))?;
     let triangles = subdivided_count(mesh.triangles.len(), subdivisions);
     let param = if subdivisions == 0 {
         "mesh"

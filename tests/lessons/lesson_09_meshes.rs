@@ -13,7 +13,7 @@ use render_lessons::error::{Error, Shortfall};
 use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{FaceCounts, Mesh, teapot_obj};
 use render_lessons::scenes::floor_and_mesh;
-use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, still_life};
+use render_lessons::scenes::{TORUS_OBJ, Up, still_life};
 use render_lessons::scenes::{mesh_on_the_floor, still_life_pinhole};
 
 /// A scratch folder, and a function that writes `text` to a file of it.
@@ -217,39 +217,13 @@ fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted()
 }
 
 #[test]
-fn mesh_on_the_floor_leaves_the_torus_where_it_was_and_fits_the_teapot_to_it() {
-    use render_lessons::transform::Transform;
-    let torus = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;
-    let placed =
-        Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
-    assert_eq!(torus.model, placed);
-    // The teapot, centred and scaled: its box's longest half side is the torus's 1.4.
-    let teapot = mesh_on_the_floor(Path::new(TEAPOT_OBJ), 0).unwrap().model;
-    let back = placed.inverse().unwrap();
-    let in_box: Vec<Vec3> = teapot
-        .mesh
-        .positions
-        .iter()
-        .map(|&p| back.point(teapot.model.point(p)))
-        .collect();
-    let (lo, hi) = in_box
-        .iter()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| {
-            (lo.min(p), hi.max(p))
-        });
-    assert!(((lo + hi) / 2.0).length() < 1e-5, "{lo} {hi}");
-    assert!(
-        (((hi - lo) / 2.0).max_element() - 1.4).abs() < 1e-5,
-        "{lo} {hi}"
-    );
-}
-
-#[test]
 fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_same_image()
  {
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(96, 54).unwrap();
-    let model = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap().model;
+    let model = mesh_on_the_floor(Path::new(TORUS_OBJ), Up::Y, 0, &camera)
+        .unwrap()
+        .model;
     let floor_and_torus = floor_and_mesh(&scene, &model).unwrap();
     // The book's render, 480 x 270 x 1025 primitives: the list.
     let list = ListOrTree::new(floor_and_torus.clone(), 480 * 270);
@@ -264,11 +238,12 @@ fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_sa
 #[test]
 fn too_much_subdivision_is_refused_before_any_work() {
     let torus = Path::new(TORUS_OBJ);
+    let camera = still_life_pinhole(480, 270).unwrap();
     // 11 levels: more than the 10 allowed.
-    let err = mesh_on_the_floor(torus, 11).unwrap_err();
+    let err = mesh_on_the_floor(torus, Up::Y, 11, &camera).unwrap_err();
     assert_eq!(err.param(), "subdivide");
     // 10 levels of the torus: 1024 x 4^10 triangles, a terabyte.
-    let err = mesh_on_the_floor(torus, 10).unwrap_err();
+    let err = mesh_on_the_floor(torus, Up::Y, 10, &camera).unwrap_err();
     assert!(
         matches!(
             err,

@@ -217,22 +217,30 @@ fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted()
 }
 
 #[test]
-fn the_ray_caster_goes_through_a_bvh_when_the_list_would_be_too_slow_with_the_same_image()
- {
+fn the_ray_caster_goes_through_a_bvh_when_the_list_would_cost_more_with_the_same_image()
+{
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(96, 54).unwrap();
     let model = mesh_on_the_floor(Path::new(TORUS_OBJ), Up::Y, 0, &camera)
         .unwrap()
         .model;
     let floor_and_torus = floor_and_mesh(&scene, &model).unwrap();
-    // The book's render, 480 x 270 x 1025 primitives: the list.
-    let list = ListOrTree::new(floor_and_torus.clone(), 480 * 270);
-    assert!(matches!(list, ListOrTree::List(_)));
-    // At 1920 x 1080 the list would make 2 x 10^9 tests: the tree.
-    let tree = ListOrTree::new(floor_and_torus, 1920 * 1080);
+    // The book's render: 129 600 rays x 1025 primitives x 108 instructions for the
+    // list, 1.4 x 10^10, against 1025 x 2500 + 129 600 x 510, 6.9 x 10^7, for
+    // the tree.
+    let tree = ListOrTree::new(floor_and_torus.clone(), 480 * 270);
     assert!(matches!(tree, ListOrTree::Tree(_)));
+    // A dozen rays would not pay for the tree's build: 12 x 1025 x 108 = 1.33 x 10^6
+    // against 2.57 x 10^6.
+    let list = ListOrTree::new(floor_and_torus, 12);
+    assert!(matches!(list, ListOrTree::List(_)));
     let (a, b) = (reference(&list, &camera), reference(&tree, &camera));
     assert_eq!(a.unwrap(), b.unwrap());
+    // The floor and one triangle: 2 x 108 instructions a ray, less than a walk (510).
+    let mut two = scene.objects()[..1].to_vec();
+    two.push(scene.objects()[5].clone());
+    let two = render_lessons::scene::Scene::new(two, scene.background()).unwrap();
+    assert!(matches!(ListOrTree::new(two, 1 << 40), ListOrTree::List(_)));
 }
 
 #[test]

@@ -130,14 +130,16 @@ pub fn stand(camera: &Camera) -> Vec3 {
     STAND * frame_scale(camera, Vec3::ZERO, STAND_INSET, [STAND].into_iter())
 }
 
-// ANCHOR: bulk
 /// Which triangles of `mesh` make its bulk: those whose corners all lie in the box
 /// that holds the middle of its area, grown on every side by that box's longest
 /// side. Each triangle's area is shared among its three corners; along each axis
 /// the box runs from the coordinate below which [`BULK_TAIL`] of the area lies to
 /// the one above which [`BULK_TAIL`] lies (weighted quantiles). A speck far from
 /// the model has next to no area: it does not move the box, and it lies outside the
-/// grown box; any part of the model within the box's size of the rest is kept.
+/// grown box; any part of the model within the box's size of the rest is kept. The
+/// six tails hold at most 6 % of the corners' weight, so the triangles with a
+/// corner outside even the box before it grows hold at most 18 % of the area: the
+/// bulk is never empty.
 pub fn bulk(mesh: &Mesh) -> Vec<bool> {
     let corner = |t: &[u32; 3], k: usize| mesh.positions[t[k] as usize];
     let weights: Vec<f64> =
@@ -171,7 +173,6 @@ pub fn bulk(mesh: &Mesh) -> Vec<bool> {
         .map(|t| total == 0.0 || t.iter().all(|&i| inside(mesh.positions[i as usize])))
         .collect()
 }
-// ANCHOR_END: bulk
 
 // ANCHOR: frame_scale
 /// The largest factor, at most 1, by which the points `world` may be scaled about

@@ -9,8 +9,7 @@
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj --subdivide 4
 
-use std::path::PathBuf;
-use std::process::ExitCode;
+use std::{path::PathBuf, process::ExitCode};
 
 use clap::Parser;
 use glam::Vec3;
@@ -133,8 +132,7 @@ pub fn images(
 }
 // ANCHOR_END: images
 
-/// The lesson's images; each rasterized one against its ray-cast reference away
-/// from silhouettes (label, reference, agreement); each renderer's time in seconds.
+/// The images; each rasterized one against its reference; each renderer's time.
 pub struct Lesson {
     pub images: Images,
     pub agreements: [(&'static str, &'static str, Agreement); 6],
@@ -157,8 +155,7 @@ lesson_images! {
     }
 }
 
-/// The lesson's tables: the scene as triangles, and how far each rasterized image is
-/// from its ray-cast counterpart. No timings: they go to the terminal only.
+/// The lesson's tables: the scene as triangles, the agreements (no timings).
 pub fn numbers(
     scene: &Scene,
     segments: u32,
@@ -192,8 +189,8 @@ pub struct Args {
     /// The mesh both renderers draw (Wavefront OBJ; larger faces become triangles).
     #[arg(long, default_value = TORUS_OBJ)]
     mesh: PathBuf,
-    /// The axis that points up in the mesh's file: y, or z (scans, CAD, 3D printing).
-    #[arg(long, default_value = "y", value_parser = parsers::up)]
+    /// The axis that points up in the mesh's file.
+    #[arg(long, value_enum, default_value_t = Up::Y)]
     pub up: Up,
     /// Split each triangle in four this many times (4: a million-triangle teapot).
     #[arg(long, default_value_t = 0)]

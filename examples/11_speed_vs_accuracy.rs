@@ -25,7 +25,6 @@ use render_lessons::course::lesson::{self, Output};
 use render_lessons::course::measure::lessons::{Sweep, best_ms, lessons_measured};
 use render_lessons::course::measure::runner::run_charts;
 use render_lessons::course::measure::{ALL, Measure, Measured, Quality};
-use render_lessons::course::parsers;
 use render_lessons::course::report::{Table, Timings, num};
 use render_lessons::error::{Error, Problem};
 use render_lessons::framebuffer::Framebuffer;
@@ -170,8 +169,8 @@ pub struct Args {
     /// makes a million triangles).
     #[arg(long)]
     pub subdivide: Option<u32>,
-    /// With --mesh: the axis that points up in its file, y or z.
-    #[arg(long, default_value = "y", value_parser = parsers::up)]
+    /// With --mesh: the axis that points up in its file.
+    #[arg(long, value_enum, default_value_t = Up::Y)]
     pub up: Up,
     #[command(flatten)]
     pub output: Output,

@@ -6,7 +6,6 @@
 use glam::Vec3;
 
 use crate::error::{self, Error, Problem};
-use crate::scenes::Up;
 
 /// The largest angle a lesson takes, in degrees: a hundred turns. Beyond it f32
 /// degrees are too coarse to mean anything (at 1e7 two neighbouring values lie a
@@ -85,16 +84,6 @@ pub fn vec3(s: &str) -> Result<Vec3, String> {
     Ok(Vec3::from_array(v))
 }
 
-/// The axis that points up in a model's file: `y` (most modelling tools) or `z`
-/// (scans, CAD, 3D printing).
-pub fn up(s: &str) -> Result<Up, String> {
-    match s.trim() {
-        "y" | "Y" => Ok(Up::Y),
-        "z" | "Z" => Ok(Up::Z),
-        _ => Err(format!("'{s}' is not an axis a model may have up: y or z")),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -114,10 +103,6 @@ mod tests {
         assert_eq!(vec3("1, -2,3"), Ok(Vec3::new(1.0, -2.0, 3.0)));
         for bad in ["1,2", "1,2,3,4", "a,b,c", "nan,0,0", ""] {
             assert!(vec3(bad).is_err(), "{bad}");
-        }
-        assert_eq!((up("z"), up(" Y ")), (Ok(Up::Z), Ok(Up::Y)));
-        for bad in ["x", "-z", "up", ""] {
-            assert!(up(bad).is_err(), "{bad}");
         }
     }
 }

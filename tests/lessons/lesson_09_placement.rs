@@ -207,7 +207,7 @@ fn up_z_stands_a_z_up_model_up() {
     let parse = |up: &str| lesson::Args::try_parse_from(["09", "--up", up]);
     assert_eq!(parse("z").unwrap().up, Up::Z);
     let err = parse("x").unwrap_err().to_string();
-    assert!(err.contains("--up") && err.contains("y or z"), "{err}");
+    assert!(err.contains("'--up <UP>'") && err.contains("y, z"), "{err}");
     // The frame's fit alone: a point at the stand itself needs no shrinking.
     assert_eq!(frame_scale(&camera, STAND, 0.01, [STAND].into_iter()), 1.0);
 }

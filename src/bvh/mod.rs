@@ -13,7 +13,7 @@
 //!   ray's 1/d computed once ([`crate::shapes::PreparedRay`]).
 //!
 //! - [`list_or_tree`]: the choice between a scene's plain list and the tree, by the
-//!   number of ray-primitive tests a render would make.
+//!   instructions each would cost a render, measured.
 //!
 //! Planes and quadrics have no box; they are kept in a plain list and tested on
 //! every ray, before the tree. The tree keeps its own copy of the bounded shapes in
@@ -31,7 +31,7 @@ mod sah;
 mod slab;
 pub mod traverse;
 
-pub use list_or_tree::{BRUTE_FORCE_TESTS, ListOrTree};
+pub use list_or_tree::{BUILD_COST, ListOrTree, TEST_COST, WALK_COST};
 
 /// The most levels a tree may have, root included; also the size of the traversal
 /// stack, which never holds more entries than the tree is deep.

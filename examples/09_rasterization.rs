@@ -9,8 +9,7 @@
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj --subdivide 4
 
-use std::path::PathBuf;
-use std::process::ExitCode;
+use std::{path::PathBuf, process::ExitCode};
 
 use clap::Parser;
 use glam::Vec3;
@@ -26,7 +25,7 @@ use render_lessons::mesh::{Model, check_segments, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{Shadows, floor_settings, point_light, rasterize};
 use render_lessons::scenes::{
-    PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, floor_and_mesh, mesh_on_the_floor,
+    PlacedMesh, STILL_LIFE_OBJECTS, TORUS_OBJ, Up, floor_and_mesh, mesh_on_the_floor,
     still_life, still_life_pinhole, still_life_shadows,
 };
 use render_lessons::{Result, camera::Camera, lesson_images, render::render};
@@ -40,7 +39,7 @@ fn main() -> ExitCode {
         let camera = still_life_pinhole(width, height)?;
         check_segments(&scene, args.segments)?;
         let shadows = still_life_shadows(args.shadow_map_size, args.bias);
-        let mesh = mesh_on_the_floor(&args.mesh, args.subdivide)
+        let mesh = mesh_on_the_floor(&args.mesh, args.up, args.subdivide, &camera)
             .map_err(lesson::flag("--mesh"))?;
         let lesson = images(&scene, &camera, args.segments, shadows, &mesh.model)?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
@@ -128,8 +127,7 @@ pub fn images(
 }
 // ANCHOR_END: images
 
-/// The lesson's images; each rasterized one against its ray-cast reference away
-/// from silhouettes (label, reference, agreement); each renderer's time in seconds.
+/// The images; each rasterized one against its reference; each renderer's time.
 pub struct Lesson {
     pub images: Images,
     pub agreements: [(&'static str, &'static str, Agreement); 6],
@@ -152,8 +150,7 @@ lesson_images! {
     }
 }
 
-/// The lesson's tables: the scene as triangles, and how far each rasterized image is
-/// from its ray-cast counterpart. No timings: they go to the terminal only.
+/// The lesson's tables: the scene as triangles, the agreements (no timings).
 pub fn numbers(
     scene: &Scene,
     segments: u32,
@@ -172,7 +169,7 @@ pub fn numbers(
 #[derive(Parser, Debug)]
 #[command(about = "Lesson 09: the rasterization pipeline beside ray casting")]
 #[command(allow_negative_numbers = true)]
-struct Args {
+pub struct Args {
     #[command(flatten)]
     image: ImageFlags,
     /// Slices of longitude of each tessellated sphere (bands of latitude: half).
@@ -187,6 +184,9 @@ struct Args {
     /// The mesh both renderers draw (Wavefront OBJ; larger faces become triangles).
     #[arg(long, default_value = TORUS_OBJ)]
     mesh: PathBuf,
+    /// The axis that points up in the mesh's file.
+    #[arg(long, value_enum, default_value_t = Up::Y)]
+    pub up: Up,
     /// Split each triangle in four this many times (4: a million-triangle teapot).
     #[arg(long, default_value_t = 0)]
     subdivide: u32,

@@ -33,7 +33,7 @@ use render_lessons::raster::{Shading, floor_settings, point_light, rasterize};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scene::Object;
-use render_lessons::scenes::{floor_and, mesh_on_the_floor};
+use render_lessons::scenes::{Up, floor_and, mesh_on_the_floor};
 use render_lessons::scenes::{still_life, still_life_pinhole, still_life_shadows};
 use render_lessons::spawn::Offset;
 
@@ -41,7 +41,7 @@ fn main() -> ExitCode {
     let args = lesson::parse::<Args>();
     lesson::run(|| match &args.mesh {
         Some(path) => {
-            let (text, image) = big_mesh(path, args.subdivide.unwrap_or(0))?;
+            let (text, image) = big_mesh(path, args.up, args.subdivide.unwrap_or(0))?;
             lesson::print(&text);
             args.output.image("11_mesh.png", &image)?;
             Ok(())
@@ -103,14 +103,21 @@ pub fn lessons(quality: Quality) -> Result<Measured> {
 
 // ANCHOR: big_mesh
 /// The BVH on a mesh of any size, in lesson 09's scene (the floor, and the mesh of
-/// `path` split `subdivisions` times standing on it): read the file, build the
-/// tree, ray cast 480 x 270 with shadow rays through it, each step timed. Returns
-/// the tables to print and the image.
-pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)> {
+/// `path`, `up` up in its file, split `subdivisions` times, standing on it): read
+/// the file, build the tree, ray cast 480 x 270 with shadow rays through it, each
+/// step timed. Returns the tables to print and the image.
+pub fn big_mesh(
+    path: &Path,
+    up: Up,
+    subdivisions: u32,
+) -> Result<(String, Framebuffer)> {
     let scene = still_life(glam::Vec3::ZERO)?;
     let camera = still_life_pinhole(480, 270)?;
     let mut t = Timings::default();
-    let read = || mesh_on_the_floor(path, subdivisions).map_err(lesson::flag("--mesh"));
+    let read = || {
+        mesh_on_the_floor(path, up, subdivisions, &camera)
+            .map_err(lesson::flag("--mesh"))
+    };
     let mesh = t.time("read the OBJ file (and subdivide)", read)?;
     let triangles = mesh.model.mesh.triangles.len();
     let build = || mesh.model.shape(); // one shape, its triangles in its own tree
@@ -129,6 +136,8 @@ pub fn big_mesh(path: &Path, subdivisions: u32) -> Result<(String, Framebuffer)>
         ("triangles", triangles),
         ("faces triangulated", counts.faces_triangulated),
         ("degenerate, skipped", counts.skipped_degenerate),
+        ("under 3 corners, skipped", counts.skipped_edges),
+        ("far from the rest, left out of the fit", mesh.fit.left_out),
         ("BVH nodes", nodes),
     ] {
         sizes.row(vec![what.to_string(), count.to_string()]);
@@ -161,6 +170,9 @@ pub struct Args {
     /// makes a million triangles).
     #[arg(long)]
     pub subdivide: Option<u32>,
+    /// With --mesh: the axis that points up in its file.
+    #[arg(long, value_enum, default_value_t = Up::Y)]
+    pub up: Up,
     #[command(flatten)]
     pub output: Output,
 }

@@ -57,14 +57,16 @@ pub fn image_side(param: &'static str, value: u32) -> Result<u32> {
 /// a student has, far below what makes a thread pool fail.
 pub const MAX_THREADS: usize = 256;
 
-/// The memory a run may use: half of what the machine has available now
-/// (`MemAvailable` in /proc/meminfo), or 4 GiB where that cannot be read.
+/// The memory a run may use: half of what the machine has (`MemTotal` in
+/// /proc/meminfo), or 4 GiB where that cannot be read. The machine's memory, not
+/// what is free at the moment: a run refused is one that could not work even on
+/// an idle machine, and the same run is refused or not from one minute to the next.
 pub fn memory_limit() -> u64 {
     let available = std::fs::read_to_string("/proc/meminfo")
         .ok()
         .and_then(|text| {
             text.lines()
-                .find(|l| l.starts_with("MemAvailable:"))
+                .find(|l| l.starts_with("MemTotal:"))
                 .and_then(|l| l.split_whitespace().nth(1))
                 .and_then(|kib| kib.parse::<u64>().ok())
         })

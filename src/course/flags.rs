@@ -1,11 +1,12 @@
 //! The values of the lessons' flags that name core types (`--sampling mis`,
-//! `--scene cornell`): the renderer knows nothing of command lines, so the
+//! `--scene cornell`, `--up z`): the renderer knows nothing of command lines, so the
 //! parsing lives here, with the course's tools.
 
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
 
 use crate::pathtrace::settings::Sampling;
+use crate::scenes::Up;
 use crate::scenes::path_tracing::SceneName;
 
 /// `--sampling uniform|cosine|nee|mis`.
@@ -47,6 +48,21 @@ impl ValueEnum for SceneName {
                 "teapot",
                 "The Cornell box with the Newell teapot (4032 triangles), through a BVH",
             ),
+        };
+        Some(PossibleValue::new(name).help(help))
+    }
+}
+
+/// `--up y|z`.
+impl ValueEnum for Up {
+    fn value_variants<'a>() -> &'a [Up] {
+        &[Up::Y, Up::Z]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        let (name, help) = match self {
+            Up::Y => ("y", "y up, as most modelling tools write"),
+            Up::Z => ("z", "z up: scans, CAD and 3D-printing files"),
         };
         Some(PossibleValue::new(name).help(help))
     }

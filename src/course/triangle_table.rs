@@ -1,13 +1,14 @@
 //! The table of a scene as triangles (lesson 09 prints it): vertices and triangles
 //! of each tessellated object, their total, and the mesh read from a file.
 
-use crate::course::report::Table;
+use crate::course::report::{Table, num};
 use crate::mesh::Model;
 use crate::scenes::PlacedMesh;
 
 /// One row per object of `instances` (named by `names`) with its vertices and
 /// triangles, a row of the total, and a row for `mesh`, read from `file`: how often
-/// it was subdivided and what reading it did to its faces.
+/// it was subdivided, what reading it did to its faces, and the triangles its
+/// placement left out ([`crate::scenes::placement::bulk`]).
 pub fn triangle_table(
     names: &[&str],
     instances: &[Model],
@@ -33,7 +34,20 @@ pub fn triangle_table(
         c if c.is_empty() => c,
         c => format!("; {c}"),
     };
-    let name = format!("mesh ({file}{split}, smooth{read})");
+    let fit = &mesh.fit;
+    let left_out = match fit.left_out {
+        0 => String::new(),
+        n => {
+            let percent = match 100.0 * fit.left_out_area {
+                p if p < 0.005 => "under 0.01".to_string(),
+                p => num(p, 2),
+            };
+            format!(
+                "; fitted without {n} triangles far from the rest ({percent} % of the area)"
+            )
+        }
+    };
+    let name = format!("mesh ({file}{split}, smooth{read}{left_out})");
     table.row(vec![name, v.to_string(), t.to_string()]);
     table
 }

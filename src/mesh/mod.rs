@@ -11,6 +11,8 @@
 //! - [`modeling`]: the [`Mesh`] itself (Lecture 2, "Modeling"), and the meshes made
 //!   from shapes (a uv sphere, a box, a floor square);
 //! - [`obj`]: reading a Wavefront OBJ file, faces split into triangles;
+//! - [`polygon`]: a face of any number of corners cut into triangles (ear
+//!   clipping);
 //! - [`teapot`]: the Newell teapot's patches, cut into quads and written as OBJ;
 //! - [`subdivide`]: every triangle split in four, for meshes of a million triangles;
 //! - [`tessellate`](mod@tessellate): a scene of analytic primitives as meshes, object
@@ -18,16 +20,19 @@
 
 pub mod modeling;
 pub mod obj;
+pub mod polygon;
 pub mod subdivide;
 pub mod teapot;
 pub mod tessellate;
 
 pub use modeling::{LECTURE_TRIANGLES, LECTURE_VERTICES, Mesh};
-pub use obj::{FaceCounts, LoadedMesh, fan};
-use std::sync::Arc;
+pub use obj::{FaceCounts, LoadedMesh, PARSE_BYTES_PER_BYTE, origin};
+pub use polygon::{NotSimple, ear_clip};
 pub use subdivide::{MAX_SUBDIVISIONS, check_subdivisions, subdivided_count};
 pub use teapot::{patch_point, teapot_obj};
 pub use tessellate::{FLOOR_SIZE, check_segments, tessellate};
+
+use std::sync::Arc;
 
 use glam::Vec3;
 

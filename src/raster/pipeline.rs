@@ -47,9 +47,10 @@ struct Lights<'a> {
 }
 
 impl Lights<'_> {
-    /// Lambert's law at `p`, the light visible unless the shadow map says otherwise.
-    fn shade(&self, p: Vec3, n: Vec3, albedo: Vec3) -> Vec3 {
-        shade(p, n, albedo, self.light, &self.viewer, || {
+    /// Lambert's law at `p` with normal `n` on a surface whose own normal is `n_g`,
+    /// the light visible unless the shadow map says otherwise.
+    fn shade(&self, p: Vec3, (n, n_g): (Vec3, Vec3), albedo: Vec3) -> Vec3 {
+        shade(p, (n, n_g), albedo, self.light, &self.viewer, || {
             self.shadow_map.is_none_or(|m| m.lit(p, n))
         })
     }
@@ -169,7 +170,7 @@ fn transform_vertices(
                 .transform_vector3(mesh.normals[i])
                 .normalize_or_zero();
             let colour = match shading {
-                Shading::PerVertex => lights.shade(world, normal, albedo),
+                Shading::PerVertex => lights.shade(world, (normal, normal), albedo),
                 Shading::PerPixel => albedo,
             };
             ClipVertex {
@@ -227,9 +228,10 @@ pub(super) fn in_bands<T: Send>(
 
 // ANCHOR: draw_band
 /// The fragment stage for one band of rows: its triangles in order, a z-buffer
-/// with the test "nearer than what is there" (depth less-than), and the shading,
-/// with a textured triangle's albedo looked up at the fragment's texture
-/// coordinates, interpolated perspective-correctly as every attribute is.
+/// with the test "nearer than what is there" (depth less-than), and the shading, on
+/// the side of the triangle the viewer sees, with a textured triangle's albedo looked
+/// up at the fragment's texture coordinates, interpolated perspective-correctly as
+/// every attribute is.
 fn draw_band(
     screen: &Screen,
     mine: &[u32],
@@ -242,28 +244,25 @@ fn draw_band(
     let mut depth = vec![f32::INFINITY; pixels.len()];
     let first_row = rows.start;
     for &k in mine {
-        rasterize_triangle(
-            &screen.triangles[k as usize],
-            settings.cull,
-            width,
-            rows.clone(),
-            |f| {
-                let i = ((f.y - first_row) * width + f.x) as usize;
-                if f.depth < depth[i] {
-                    depth[i] = f.depth;
-                    let v = f.varyings;
-                    let texel = screen.textures[k as usize].map(|t| t.sample(v.uv));
-                    pixels[i] = match (settings.shading, texel) {
-                        (Shading::PerVertex, None) => v.colour,
-                        (Shading::PerVertex, Some(albedo)) => v.colour * albedo,
-                        (Shading::PerPixel, albedo) => {
-                            let albedo = albedo.unwrap_or(v.colour);
-                            lights.shade(v.world, v.normal, albedo)
-                        }
-                    };
-                }
-            },
-        );
+        let triangle = &screen.triangles[k as usize];
+        let [a, b, c] = triangle.each_ref().map(|v| v.varyings.world);
+        let facet = (b - a).cross(c - a); // the triangle's own normal
+        rasterize_triangle(triangle, settings.cull, width, rows.clone(), |f| {
+            let i = ((f.y - first_row) * width + f.x) as usize;
+            if f.depth < depth[i] {
+                depth[i] = f.depth;
+                let v = f.varyings;
+                let texel = screen.textures[k as usize].map(|t| t.sample(v.uv));
+                pixels[i] = match (settings.shading, texel) {
+                    (Shading::PerVertex, None) => v.colour,
+                    (Shading::PerVertex, Some(albedo)) => v.colour * albedo,
+                    (Shading::PerPixel, albedo) => {
+                        let albedo = albedo.unwrap_or(v.colour);
+                        lights.shade(v.world, (v.normal, facet), albedo)
+                    }
+                };
+            }
+        });
     }
 }
 // ANCHOR_END: draw_band

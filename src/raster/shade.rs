@@ -39,20 +39,30 @@ impl Viewer {
 }
 
 // ANCHOR: lambert
-/// The colour of a surface point `p` with normal `n` and colour `albedo`, lit by
-/// `light` as [`lighting::lambert`] computes it, the light visible if `visible()`
-/// says so. The normal is turned to face the viewer first (two-sided lighting), as
-/// ray casting shades the side the ray arrived from.
+/// The colour of a surface point `p` with normal `n` and colour `albedo`, on a
+/// triangle whose own (geometric) normal is `n_g`, lit by `light` as
+/// [`lighting::lambert`] computes it, the light visible if `visible()` says so. The
+/// normal is first turned to the side of the surface the viewer sees (two-sided
+/// lighting): to `n_g`'s side, then towards the viewer if the triangle faces away
+/// from it, as OpenGL decides a polygon's side by the polygon and ray casting by the
+/// side the ray arrived from ([`crate::shapes::Hit::shading_facing`]). On a flat
+/// triangle, n = n_g, that is the side facing the viewer.
 pub fn shade(
     p: Vec3,
-    n: Vec3,
+    (n, n_g): (Vec3, Vec3),
     albedo: Vec3,
     light: &PointLight,
     viewer: &Viewer,
     visible: impl FnOnce() -> bool,
 ) -> Vec3 {
     let n = n.normalize_or_zero();
-    let n = if n.dot(viewer.toward(p)) < 0.0 { -n } else { n };
+    let n_g = if n_g == Vec3::ZERO { n } else { n_g }; // a sliver of no area
+    let n = if n.dot(n_g) < 0.0 { -n } else { n };
+    let n = if n_g.dot(viewer.toward(p)) < 0.0 {
+        -n
+    } else {
+        n
+    };
     lighting::lambert(p, n, albedo, light, visible)
 }
 // ANCHOR_END: lambert

@@ -1,21 +1,34 @@
-//! The list-or-tree choice: a scene's plain list while every ray may test every
-//! primitive, else the same list through a [`BvhScene`], answering every ray alike.
+//! The list-or-tree choice: a scene's plain list while testing every primitive on
+//! every ray costs less than a tree, else the same list through a [`BvhScene`],
+//! answering every ray alike.
 
 use super::{BvhScene, Intersect, Scene, SceneHit};
 use crate::progress;
 use crate::ray::{Interval, Ray};
 
-/// Above this many ray-primitive tests (pixels times primitives) a renderer stops
-/// testing every primitive on every ray and goes through lesson 11's BVH: 2^28, about
-/// 2.7 x 10^8 tests, a few seconds of brute force. The torus at 480 x 270 (1.3 x 10^8
-/// tests) stays below; the teapot (5.2 x 10^8) goes above.
-pub const BRUTE_FORCE_TESTS: u64 = 1 << 28;
+/// What one ray-primitive test costs the list, in machine instructions: 108, a
+/// triangle of lesson 09's torus or teapot against a camera ray in a release build.
+/// Measured with `valgrind --tool=callgrind` (one thread), as the difference
+/// between ray casting lesson 09's floor and mesh at 96 x 54 pixels and only
+/// reading it, divided by the rays and the primitives.
+pub const TEST_COST: u64 = 108;
 
-/// A scene as the renderers see it: the plain list of lesson 08 while every ray may
-/// test every primitive (at most [`BRUTE_FORCE_TESTS`] tests in all), else the same
-/// list through lesson 11's BVH, which answers every ray as the list does, so the
-/// image is the same, bit for bit. Lesson 09's floor and mesh, lesson 10's teapot
-/// and lesson 11's scenes all go through it.
+/// What a ray costs the tree beyond what it costs the list at one primitive, in
+/// instructions: the walk down lesson 11's BVH. Measured as [`TEST_COST`] is, on
+/// the torus, the teapot and the teapot split in four twice (1025 to 64 513
+/// primitives): 466 to 510, the most taken.
+pub const WALK_COST: u64 = 510;
+
+/// What building the tree costs a primitive, in instructions: 1765 for the torus,
+/// 2030 for the teapot, 2489 for the teapot split in four twice (it grows with the
+/// tree's depth); rounded up.
+pub const BUILD_COST: u64 = 2500;
+
+/// A scene as the renderers see it: the plain list of lesson 08 while testing every
+/// primitive on every ray costs less than building lesson 11's BVH and walking it
+/// ([`ListOrTree::new`]), else the same list through the BVH, which answers every
+/// ray as the list does, so the image is the same, bit for bit. Lesson 09's floor
+/// and mesh, lesson 10's scenes and lesson 11's go through it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ListOrTree {
     /// Every ray tests every primitive.
@@ -25,16 +38,24 @@ pub enum ListOrTree {
 }
 
 impl ListOrTree {
-    /// `scene` as a plain list, or through a BVH (built under a spinner) when a
-    /// render of `rays` camera rays would make more than [`BRUTE_FORCE_TESTS`] tests.
+    // ANCHOR: choice
+    /// `scene` as a plain list, or through a BVH (built under a spinner), whichever
+    /// costs fewer instructions for `rays` rays: n primitives cost the list
+    /// rays x n x [`TEST_COST`] and the tree n x [`BUILD_COST`] + rays x
+    /// [`WALK_COST`]. The list wins only for a handful of primitives or of rays.
     pub fn new(scene: Scene, rays: u64) -> ListOrTree {
-        let primitives = scene.objects().len();
-        if rays.saturating_mul(primitives as u64) <= BRUTE_FORCE_TESTS {
+        let n = scene.objects().len() as u64;
+        let list = rays.saturating_mul(n).saturating_mul(TEST_COST);
+        let tree = n
+            .saturating_mul(BUILD_COST)
+            .saturating_add(rays.saturating_mul(WALK_COST));
+        if list <= tree {
             return ListOrTree::List(scene);
         }
-        let message = format!("building a BVH over {primitives} primitives");
+        let message = format!("building a BVH over {n} primitives");
         ListOrTree::Tree(progress::spinner(message, || BvhScene::new(scene)))
     }
+    // ANCHOR_END: choice
 }
 
 /// The list's or the tree's answers.

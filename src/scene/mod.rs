@@ -35,7 +35,7 @@ use crate::texture::Texture;
 pub mod list_or_tree;
 mod tree;
 
-pub use list_or_tree::{BRUTE_FORCE_TESTS, ListOrTree};
+pub use list_or_tree::{BUILD_COST, ListOrTree, TEST_COST, WALK_COST};
 pub use tree::BvhScene;
 
 /// One primitive with its material and the radiance L_e it emits.

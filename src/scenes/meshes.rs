@@ -7,11 +7,12 @@ use std::path::Path;
 use glam::Vec3;
 
 use super::asset_path;
-use crate::error::{Error, Problem, Result, finite};
+use super::placement::{Fit, Up, place};
+use crate::camera::Camera;
+use crate::error::{Error, Problem, Result};
 use crate::mesh::{FaceCounts, LoadedMesh, Mesh, Model};
 use crate::mesh::{check_subdivisions, subdivided_count};
 use crate::scene::{Object, Scene};
-use crate::transform::Transform;
 use crate::{limits, progress};
 
 /// The mesh lesson 09 draws by default: a torus of 1024 triangles, relative to the
@@ -22,14 +23,15 @@ pub const TORUS_OBJ: &str = "assets/meshes/torus.obj";
 /// repository's root: `--mesh assets/meshes/teapot.obj`.
 pub const TEAPOT_OBJ: &str = "assets/meshes/teapot.obj";
 
-/// The memory a triangle of lesson 09's mesh may take at the lesson's peak: its
+/// The memory a triangle of lesson 09's mesh takes at the lesson's peak: its
 /// flat-shaded copy (three vertices), the ray caster's primitive and its place in a
-/// BVH, the rasterizer's transformed vertices and screen triangle. Twice what was
-/// measured: lesson 09 with the teapot subdivided 4 times (a million triangles)
-/// peaks at about 770 MB, some 750 bytes a triangle.
-pub const MESH_BYTES_PER_TRIANGLE: u64 = 1536;
+/// BVH, the rasterizer's transformed vertices and screen triangle. Measured with
+/// `/usr/bin/time -f %M` on lesson 09 with the teapot split in four 1 to 4 times
+/// (16 128 to 1 032 192 triangles), less the run with the teapot as it is: 679 to
+/// 869 bytes a triangle; rounded up.
+pub const MESH_BYTES_PER_TRIANGLE: u64 = 900;
 
-/// A mesh placed in the still life, and what reading it did.
+/// A mesh placed in the still life, and what reading and placing it did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlacedMesh {
     /// The mesh, placed on the floor and coloured.
@@ -38,20 +40,29 @@ pub struct PlacedMesh {
     pub counts: FaceCounts,
     /// How many times every triangle was split in four.
     pub subdivisions: u32,
+    /// What placing it did: the triangles left out of the fit, the frame's say.
+    pub fit: Fit,
 }
 
 // ANCHOR: mesh_on_the_floor
-/// The mesh of the OBJ file at `path`, every triangle split in four `subdivisions`
-/// times, placed in lesson 08's scene where lesson 09 draws it: standing on the
-/// floor at the front right, tilted towards the camera, shaded smooth by its vertex
-/// normals in both renderers (the file's, or the average of the triangles' around
-/// each vertex: [`Mesh::new`]). A mesh of any size is scaled to fit
-/// the box of the default torus (half a side: 1.4), which leaves the torus as it is.
-/// Before the work, the triangles it would make are checked against the memory
+/// The mesh of the OBJ file at `path`, whose file has `up` up, placed in lesson
+/// 08's scene where lesson 09 draws it through `camera` ([`place`]: standing on
+/// the floor at the front right, tilted towards the camera, as large as the torus
+/// where the frame allows), then every triangle split in four `subdivisions` times,
+/// shaded smooth by its vertex normals in both renderers (the file's, or the
+/// average of the triangles' around each vertex: [`Mesh::new`]). Before the work,
+/// the triangles it would make are checked against the memory
 /// ([`MESH_BYTES_PER_TRIANGLE`] each).
-pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
+pub fn mesh_on_the_floor(
+    path: &Path,
+    up: Up,
+    subdivisions: u32,
+    camera: &Camera,
+) -> Result<PlacedMesh> {
     let subdivisions = check_subdivisions("subdivide", subdivisions)?;
-    let LoadedMesh { mesh, counts } = Mesh::from_obj(asset_path(path))?;
+    let LoadedMesh {
+        mut mesh, counts, ..
+    } = Mesh::from_obj(asset_path(path))?;
     let triangles = subdivided_count(mesh.triangles.len(), subdivisions);
     let param = if subdivisions == 0 {
         "mesh"
@@ -59,6 +70,10 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
         "subdivide"
     };
     limits::memory(param, triangles.saturating_mul(MESH_BYTES_PER_TRIANGLE))?;
+    for p in mesh.positions.iter_mut().chain(&mut mesh.normals) {
+        *p = up.to_y_up(*p);
+    }
+    let (model, fit) = place(&mut mesh, camera)?;
     let mesh = match subdivisions {
         0 => mesh,
         n => progress::spinner(
@@ -74,12 +89,6 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
             },
         });
     }
-    let placed =
-        Transform::rotation_x(-0.5).then(Transform::translation(2.2, 0.75, 1.6));
-    let model = match fit(&mesh, 1.4)? {
-        Some(fit) => fit.then(placed),
-        None => placed,
-    };
     Ok(PlacedMesh {
         model: Model {
             mesh,
@@ -89,38 +98,10 @@ pub fn mesh_on_the_floor(path: &Path, subdivisions: u32) -> Result<PlacedMesh> {
         },
         counts,
         subdivisions,
+        fit,
     })
 }
 // ANCHOR_END: mesh_on_the_floor
-
-/// The transform that centres `mesh`'s bounding box on the origin and scales it
-/// so that its longest half side is `half`; `None` for a mesh that fits so already
-/// (the torus: centred, half a side 1.4), which is then left exactly as it is.
-fn fit(mesh: &Mesh, half: f32) -> Result<Option<Transform>> {
-    let (min, max) = mesh
-        .positions
-        .iter()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &p| {
-            (lo.min(p), hi.max(p))
-        });
-    let centre = (min + max) * 0.5;
-    let scale = half / ((max - min) * 0.5).max_element();
-    if centre == Vec3::ZERO && scale == 1.0 {
-        return Ok(None);
-    }
-    // A mesh whose size is 0 or overflows has no fit (the transforms take finite
-    // numbers).
-    for (param, value) in [
-        ("dx", centre.x),
-        ("dy", centre.y),
-        ("dz", centre.z),
-        ("sx", scale),
-    ] {
-        finite(param, value)?;
-    }
-    let to_origin = Transform::translation(-centre.x, -centre.y, -centre.z);
-    Ok(Some(to_origin.then(Transform::scale(scale, scale, scale))))
-}
 
 /// The floor of `scene` (its first object) with `mesh` standing on it, as the ray
 /// caster sees them: the mesh as one shape ([`Model::object`]), the same background

@@ -6,6 +6,7 @@
 
 pub mod meshes;
 pub mod path_tracing;
+pub mod placement;
 pub mod squares;
 pub mod still_life;
 
@@ -15,6 +16,7 @@ pub use meshes::{
     MESH_BYTES_PER_TRIANGLE, PlacedMesh, TEAPOT_OBJ, TORUS_OBJ, floor_and,
     floor_and_mesh, mesh_on_the_floor,
 };
+pub use placement::{Fit, Up};
 pub use still_life::{
     STILL_LIFE_OBJECTS, still_life, still_life_cameras, still_life_pinhole,
     still_life_shadows,

@@ -133,7 +133,7 @@ impl Instance {
             .transform_vector3(local.shading)
             .normalize_or(normal);
         let hit = Hit::new(ray, t, point, normal, error);
-        Some(hit.with_shading(ray, shading, local.uv))
+        Some(hit.with_shading(shading, local.uv))
     }
     // ANCHOR_END: instance_hit
 

@@ -49,9 +49,7 @@ pub use triangle_mesh::TriangleMesh;
 /// decides the side the ray came from and where a spawned ray starts; and the
 /// `shading` normal, which lighting uses. They differ only on a mesh with a normal
 /// per vertex, whose shading normal is their blend at the point (Phong's smooth
-/// shading, lesson 09): the facets are flat, the light on them is not. Each has its
-/// side: near a smooth mesh's outline the ray can meet a facet from the front and
-/// its shading normal from behind.
+/// shading, lesson 09): the facets are flat, the light on them is not.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     /// The ray parameter, point = o + t d: the signed distance from the ray's origin
@@ -70,9 +68,6 @@ pub struct Hit {
     pub uv: Vec2,
     /// `true` if the ray arrived from the side the normal points to (d . n < 0).
     pub front_face: bool,
-    /// `true` if the ray arrived from the side the shading normal points to: equal to
-    /// `front_face` except on a mesh with normals per vertex.
-    pub shading_front: bool,
     /// A conservative bound, per coordinate, on how far `point` lies from the true
     /// surface: some surface point lies within `point +- error` (pbrt-v4 section 6.8,
     /// "Managing Rounding Error"). A ray leaving the hit starts just beyond it
@@ -97,7 +92,6 @@ impl Hit {
             shading: normal,
             uv: Vec2::ZERO,
             front_face: ray.direction().dot(normal) < 0.0,
-            shading_front: ray.direction().dot(normal) < 0.0,
             error,
         }
     }
@@ -115,10 +109,9 @@ impl Hit {
     }
     // ANCHOR_END: facing
 
-    /// The same hit of `ray` with the unit shading normal `shading` (turned to the
-    /// side of the geometric normal if it points the other way) and the texture
-    /// coordinates `uv`.
-    pub(crate) fn with_shading(self, ray: &Ray, shading: Vec3, uv: Vec2) -> Hit {
+    /// The same hit with the unit shading normal `shading` (turned to the side of the
+    /// geometric normal if it points the other way) and the texture coordinates `uv`.
+    pub(crate) fn with_shading(self, shading: Vec3, uv: Vec2) -> Hit {
         let shading = if shading.dot(self.normal) < 0.0 {
             -shading
         } else {
@@ -127,17 +120,17 @@ impl Hit {
         Hit {
             shading,
             uv,
-            shading_front: ray.direction().dot(shading) < 0.0,
             ..self
         }
     }
 
-    /// The shading normal on the side the ray came from, by its own front-face rule:
-    /// what lighting sees. Lighting is two-sided, as the rasterizer's `shade` turns
-    /// the normal it interpolates towards the viewer; on a surface without a shading
-    /// normal of its own this is [`Hit::facing`].
+    /// The shading normal on the side of the surface the ray came from, by the same
+    /// front-face rule ([`Hit::facing`]): what lighting sees. Near a smooth mesh's
+    /// outline it can lean away from the ray; it is not turned towards it, which
+    /// would light that rim as if it faced the other way (the rasterizer's `shade`
+    /// decides the side by the triangle too).
     pub fn shading_facing(&self) -> Vec3 {
-        if self.shading_front {
+        if self.front_face {
             self.shading
         } else {
             -self.shading

@@ -194,7 +194,7 @@ impl TriangleMesh {
                 b[0] * uv0 + b[1] * uv1 + b[2] * uv2
             }
         };
-        hit.with_shading(ray, shading, uv)
+        hit.with_shading(shading, uv)
     }
     // ANCHOR_END: mesh_hit
 

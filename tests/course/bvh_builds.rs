@@ -11,7 +11,9 @@ use crate::common;
 use crate::common::bits;
 use crate::examples::speed_vs_accuracy as lesson11;
 use common::Rng;
-use render_lessons::scenes::{TEAPOT_OBJ, asset_path, mesh_on_the_floor};
+use render_lessons::scenes::{
+    TEAPOT_OBJ, Up, asset_path, mesh_on_the_floor, still_life_pinhole,
+};
 use std::path::Path;
 
 use glam::Vec3;
@@ -313,12 +315,13 @@ fn lesson_10_renders_the_teapot_in_the_cornell_box_through_the_tree() {
 #[test]
 fn the_subdivided_teapot_renders_through_the_tree() {
     let teapot = asset_path(Path::new(TEAPOT_OBJ));
-    let mesh = mesh_on_the_floor(&teapot, 4).unwrap();
+    let camera = still_life_pinhole(480, 270).unwrap();
+    let mesh = mesh_on_the_floor(&teapot, Up::Y, 4, &camera).unwrap();
     assert_eq!(mesh.model.mesh.triangles.len(), 4032 * 256);
     assert_eq!(mesh.subdivisions, 4);
-    let (text, image) = lesson11::big_mesh(&teapot, 4).unwrap();
+    let (text, image) = lesson11::big_mesh(&teapot, Up::Y, 4).unwrap();
     assert!(text.contains("1032192"), "{text}");
-    let (_, unsplit) = lesson11::big_mesh(&teapot, 0).unwrap();
+    let (_, unsplit) = lesson11::big_mesh(&teapot, Up::Y, 0).unwrap();
     let differing = (0..270)
         .flat_map(|y| (0..480).map(move |x| (x, y)))
         .filter(|&(x, y)| {

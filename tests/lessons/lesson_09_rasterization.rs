@@ -23,7 +23,7 @@ use render_lessons::raster::{
 use render_lessons::render::with_threads;
 use render_lessons::scene::{PointLight, Scene};
 use render_lessons::scenes::{
-    PlacedMesh, TORUS_OBJ, mesh_on_the_floor, still_life, still_life_pinhole,
+    PlacedMesh, TORUS_OBJ, Up, mesh_on_the_floor, still_life, still_life_pinhole,
     still_life_shadows,
 };
 use render_lessons::transform::Transform;
@@ -307,7 +307,7 @@ fn same_image_for_any_thread_count() {
 fn book_lesson() -> (Scene, PlacedMesh, lesson::Lesson) {
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(480, 270).unwrap();
-    let mesh = mesh_on_the_floor(Path::new(TORUS_OBJ), 0).unwrap();
+    let mesh = mesh_on_the_floor(Path::new(TORUS_OBJ), Up::Y, 0, &camera).unwrap();
     let shadows = still_life_shadows(1024, 1.0);
     let lesson = lesson::images(&scene, &camera, 64, shadows, &mesh.model).unwrap();
     (scene, mesh, lesson)

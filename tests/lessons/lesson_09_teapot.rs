@@ -16,8 +16,8 @@ use render_lessons::mesh::teapot::{TEAPOT_PATCHES, TEAPOT_POINTS};
 use render_lessons::mesh::{Mesh, patch_point, teapot_obj};
 use render_lessons::scene::BvhScene;
 use render_lessons::scene::Intersect;
-use render_lessons::scenes::floor_and_mesh;
 use render_lessons::scenes::{TEAPOT_OBJ, asset_path, still_life};
+use render_lessons::scenes::{Up, floor_and_mesh};
 use render_lessons::scenes::{
     mesh_on_the_floor, still_life_pinhole, still_life_shadows,
 };
@@ -208,7 +208,7 @@ fn teapot_load_statistics() {
 fn small_lesson(mesh: &Path, subdivisions: u32) -> (String, lesson::Lesson) {
     let scene = still_life(Vec3::ZERO).unwrap();
     let camera = still_life_pinhole(160, 90).unwrap();
-    let mesh = mesh_on_the_floor(mesh, subdivisions).unwrap();
+    let mesh = mesh_on_the_floor(mesh, Up::Y, subdivisions, &camera).unwrap();
     let shadows = still_life_shadows(256, 1.0);
     let lesson = lesson::images(&scene, &camera, 16, shadows, &mesh.model).unwrap();
     let file = "teapot.obj";
@@ -222,7 +222,7 @@ fn small_lesson(mesh: &Path, subdivisions: u32) -> (String, lesson::Lesson) {
 /// the sky) in lesson 09's floor-and-mesh scene.
 fn mesh_pixels(mesh: &Path, camera: &Camera) -> usize {
     let scene = still_life(Vec3::ZERO).unwrap();
-    let model = mesh_on_the_floor(mesh, 0).unwrap().model;
+    let model = mesh_on_the_floor(mesh, Up::Y, 0, camera).unwrap().model;
     // Through the tree: it answers as the list does (tests/course/bvh.rs), 4033
     // objects for each of the 14 400 rays made this the slowest part of the test.
     let floor_and_mesh = BvhScene::new(floor_and_mesh(&scene, &model).unwrap());

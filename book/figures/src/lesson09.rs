@@ -20,7 +20,7 @@ use render_lessons::raster::{RasterSettings, rasterize, rasterize_triangle};
 use render_lessons::raycast::lit;
 use render_lessons::render::render;
 use render_lessons::scenes::squares::{Squares, squares};
-use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, floor_and_mesh};
+use render_lessons::scenes::{TEAPOT_OBJ, TORUS_OBJ, Up, floor_and_mesh};
 use render_lessons::scenes::{
     mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };
@@ -36,7 +36,8 @@ pub fn figures(output: &Output) -> Result<()> {
     let scene = still_life(Vec3::ZERO)?;
     let camera = still_life_pinhole(480, 270)?;
     let shadows = still_life_shadows(1024, 1.0);
-    let mesh = mesh_on_the_floor(std::path::Path::new(TORUS_OBJ), 0)?.model;
+    let torus = std::path::Path::new(TORUS_OBJ);
+    let mesh = mesh_on_the_floor(torus, Up::Y, 0, &camera)?.model;
     let instances = tessellate(&scene, 64)?;
     let light = point_light(&scene)?;
     let book = floor_settings(&scene);
@@ -51,7 +52,8 @@ pub fn figures(output: &Output) -> Result<()> {
     let (shadow_map, acne, peter_pan) = (mapped(1.0)?, mapped(0.0)?, mapped(50.0)?);
     let mesh_cast = reference(&floor_and_mesh(&scene, &mesh)?, &camera)?.image;
     let mesh_raster = draw(&[instances[0].clone(), mesh], PerPixel, None)?;
-    let teapot = mesh_on_the_floor(std::path::Path::new(TEAPOT_OBJ), 0)?.model;
+    let teapot = std::path::Path::new(TEAPOT_OBJ);
+    let teapot = mesh_on_the_floor(teapot, Up::Y, 0, &camera)?.model;
     let teapot_cast = reference(&floor_and_mesh(&scene, &teapot)?, &camera)?.image;
     let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];

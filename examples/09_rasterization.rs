@@ -8,6 +8,7 @@
 //!     cargo run --release --example 09_rasterization
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj
 //!     cargo run --release --example 09_rasterization -- --mesh assets/meshes/teapot.obj --subdivide 4
+//!     cargo run --release --example 09_rasterization -- --mesh head.obj --texture head_diffuse.tga
 
 use std::{path::PathBuf, process::ExitCode};
 
@@ -41,6 +42,8 @@ fn main() -> ExitCode {
         let shadows = still_life_shadows(args.shadow_map_size, args.bias);
         let mesh = mesh_on_the_floor(&args.mesh, args.up, args.subdivide, &camera)
             .map_err(lesson::flag("--mesh"))?;
+        let texture = args.texture.as_deref();
+        let mesh = mesh.textured(texture).map_err(lesson::flag("--texture"))?;
         let lesson = images(&scene, &camera, args.segments, shadows, &mesh.model)?;
         let file = args.mesh.file_name().unwrap_or_default().to_string_lossy();
         lesson::print(&numbers(&scene, args.segments, (&mesh, &file), &lesson)?);
@@ -83,10 +86,9 @@ pub fn images(
     let shadow_map = t.time("rasterized with a shadow map", || mapped(shadows.bias))?;
     let (acne, peter_pan) = (mapped(0.0)?, mapped(50.0 * shadows.bias)?);
 
-    let meshed = floor_and_mesh(scene, mesh)?; // the mesh as one shape, with its tree
-    let mesh_ray_cast =
-        t.time("ray cast, floor + mesh", || reference(&meshed, camera))?;
-    drop(meshed); // a big mesh: the ray caster's copy goes, the rasterizer's comes
+    let both = floor_and_mesh(scene, mesh)?; // the mesh as one shape, with its tree
+    let meshed = t.time("ray cast, floor + mesh", || reference(&both, camera))?;
+    drop(both); // a big mesh: the ray caster's copy goes, the rasterizer's comes
     let floor_and_mesh_models = [models[0].clone(), mesh.clone()];
     let mesh_raster = t.time("rasterized, floor + mesh", || {
         pipeline(&floor_and_mesh_models, PerPixel, None)
@@ -96,8 +98,7 @@ pub fn images(
     let mask = &ray_cast.silhouettes;
     let cast = ("ray_cast.png", &ray_cast.image, mask);
     let traced = ("shadow_ray.png", &shadow_ray, mask);
-    let m = &mesh_ray_cast;
-    let mesh = ("mesh_ray_cast.png", &m.image, &m.silhouettes);
+    let mesh = ("mesh_ray_cast.png", &meshed.image, &meshed.silhouettes);
     let agreements = [
         ("per-pixel shading", &per_pixel, cast),
         ("per-vertex (Gouraud)", &per_vertex, cast),
@@ -116,7 +117,7 @@ pub fn images(
         shadow_map,
         shadow_map_acne: acne,
         shadow_map_peter_pan: peter_pan,
-        mesh_ray_cast: mesh_ray_cast.image,
+        mesh_ray_cast: meshed.image,
         mesh_raster,
     };
     Ok(Lesson {
@@ -184,6 +185,9 @@ pub struct Args {
     /// The mesh both renderers draw (Wavefront OBJ; larger faces become triangles).
     #[arg(long, default_value = TORUS_OBJ)]
     mesh: PathBuf,
+    /// An image (PNG or TGA) the mesh is textured with, by its vt coordinates.
+    #[arg(long)]
+    texture: Option<PathBuf>,
     /// The axis that points up in the mesh's file.
     #[arg(long, value_enum, default_value_t = Up::Y)]
     pub up: Up,

@@ -47,7 +47,12 @@ pub fn triangle_table(
             )
         }
     };
-    let name = format!("mesh ({file}{split}, smooth{read}{left_out})");
+    let textured = if mesh.model.texture.is_some() {
+        ", textured"
+    } else {
+        ""
+    };
+    let name = format!("mesh ({file}{split}, smooth{textured}{read}{left_out})");
     table.row(vec![name, v.to_string(), t.to_string()]);
     table
 }

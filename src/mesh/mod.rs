@@ -10,7 +10,9 @@
 //!
 //! - [`modeling`]: the [`Mesh`] itself (Lecture 2, "Modeling"), and the meshes made
 //!   from shapes (a uv sphere, a box, a floor square);
-//! - [`obj`]: reading a Wavefront OBJ file, faces split into triangles;
+//! - [`obj`]: reading a Wavefront OBJ file, faces split into triangles, with the
+//!   corners' normals and texture coordinates (`attributes`) and the texture of
+//!   their material ([`mtl`]);
 //! - [`polygon`]: a face of any number of corners cut into triangles (ear
 //!   clipping);
 //! - [`teapot`]: the Newell teapot's patches, cut into quads and written as OBJ;
@@ -18,7 +20,9 @@
 //! - [`tessellate`](mod@tessellate): a scene of analytic primitives as meshes, object
 //!   by object.
 
+mod attributes;
 pub mod modeling;
+pub mod mtl;
 pub mod obj;
 pub mod polygon;
 pub mod subdivide;

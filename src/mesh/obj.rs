@@ -1,20 +1,22 @@
 //! Reading a Wavefront OBJ file into a [`Mesh`]. A model's file is plain text, one
 //! statement a line: `v x y z` a vertex, `f 1 2 3 4` a face naming its corners by
-//! vertex number (from 1; a negative number counts back from the last vertex), and
-//! lines this reader skips (normals, texture coordinates, groups, materials,
-//! comments). Models from the wild are made of quads and larger polygons as often
-//! as of triangles, while the rasterizer and the ray caster draw triangles only: a
-//! face of n corners becomes n - 2 triangles ([`ear_clip`]), and a triangle with no
+//! vertex number (from 1; a negative number counts back from the last vertex), the
+//! corners' normals, texture coordinates and materials (read by
+//! `src/mesh/attributes.rs`), and lines this reader skips (groups, comments).
+//! Models from the wild are made of quads and larger polygons as often as of
+//! triangles, while the rasterizer and the ray caster draw triangles only: a face
+//! of n corners becomes n - 2 triangles ([`ear_clip`]), and a triangle with no
 //! area (the pole of a sphere or of the teapot's lid, where a quad has two equal
 //! corners) is left out and counted.
 
 use std::fmt;
 use std::io::{BufRead, BufReader};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
 use super::Mesh;
+use super::attributes::Attributes;
 use super::polygon::ear_clip;
 use crate::error::{Error, Result};
 
@@ -69,6 +71,10 @@ pub struct LoadedMesh {
     /// The point of the file's space the mesh is stored around ([`origin`]): zero
     /// for a model near the file's origin, which keeps its coordinates.
     pub origin: DVec3,
+    /// The diffuse texture of the first material its faces use that has one
+    /// (`map_Kd` in a library named by `mtllib`), if any: a path, to be read with
+    /// [`crate::texture::Texture::read`].
+    pub texture: Option<PathBuf>,
 }
 
 impl Mesh {
@@ -77,7 +83,9 @@ impl Mesh {
     /// every face cut into triangles ([`ear_clip`]), every triangle with no area
     /// left out, and the faces of fewer than three corners too; [`FaceCounts`] says
     /// how many of each. The vertices the faces use are kept, in the order first
-    /// used; the normals are averaged from the triangles ([`Mesh::new`]).
+    /// used, with the file's normals and texture coordinates where every corner has
+    /// them (`src/mesh/attributes.rs`); else the normals are averaged from the
+    /// triangles ([`Mesh::new`]).
     ///
     /// The text is read in f64 and stored in f32 around an [`origin`] near the
     /// model, so a model far from its file's origin keeps its shape. Bytes that are
@@ -126,6 +134,8 @@ struct ObjText {
     counts: FaceCounts,
     /// The corners of the face being read.
     corners: Vec<u32>,
+    /// The corners' normals and texture coordinates, and the materials.
+    attributes: Attributes,
 }
 
 impl ObjText {
@@ -135,7 +145,8 @@ impl ObjText {
         match words.next() {
             Some("v") => self.vertex(number, words),
             Some("f") => self.face(words),
-            _ => Ok(()),
+            Some(keyword) => self.attributes.read(keyword, words),
+            None => Ok(()),
         }
     }
 
@@ -168,6 +179,7 @@ impl ObjText {
         words: impl Iterator<Item = &'a str>,
     ) -> std::result::Result<(), String> {
         self.corners.clear();
+        self.attributes.start_face();
         let defined = self.vertices.len() as i64;
         for word in words {
             let number = word.split('/').next().unwrap_or(word);
@@ -181,6 +193,7 @@ impl ObjText {
                 ));
             }
             self.corners.push(index as u32);
+            self.attributes.corner(word)?;
         }
         let n = self.corners.len();
         if n < 3 {
@@ -189,6 +202,7 @@ impl ObjText {
         }
         self.counts.faces += 1;
         self.counts.faces_triangulated += usize::from(n > 3);
+        let before = self.triangles.len();
         let without_area = ear_clip(&self.corners, &self.vertices, &mut self.triangles)
             .map_err(|_| {
                 format!(
@@ -196,6 +210,8 @@ impl ObjText {
                 )
             })?;
         self.counts.skipped_degenerate += without_area;
+        self.attributes
+            .cut(&self.corners, &self.triangles[before..]);
         Ok(())
     }
 
@@ -235,12 +251,16 @@ impl ObjText {
             }
             positions.push(p.as_vec3());
         }
-        let mesh = Mesh::new(positions, self.triangles)
+        let texture = self.attributes.texture(path);
+        let mesh = self
+            .attributes
+            .mesh(positions, self.triangles)
             .map_err(|e| obj_error(path, None, e.to_string()))?;
         Ok(LoadedMesh {
             mesh,
             counts: self.counts,
             origin,
+            texture,
         })
     }
 

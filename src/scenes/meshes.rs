@@ -3,6 +3,7 @@
 //! ([`Model::shape`]).
 
 use std::path::Path;
+use std::sync::Arc;
 
 use glam::Vec3;
 
@@ -13,6 +14,7 @@ use crate::error::{Error, Problem, Result};
 use crate::mesh::{FaceCounts, LoadedMesh, Mesh, Model};
 use crate::mesh::{check_subdivisions, subdivided_count};
 use crate::scene::{Object, Scene};
+use crate::texture::Texture;
 use crate::{limits, progress};
 
 /// The mesh lesson 09 draws by default: a torus of 1024 triangles, relative to the
@@ -50,9 +52,9 @@ pub struct PlacedMesh {
 /// the floor at the front right, tilted towards the camera, as large as the torus
 /// where the frame allows), then every triangle split in four `subdivisions` times,
 /// shaded smooth by its vertex normals in both renderers (the file's, or the
-/// average of the triangles' around each vertex: [`Mesh::new`]). Before the work,
-/// the triangles it would make are checked against the memory
-/// ([`MESH_BYTES_PER_TRIANGLE`] each).
+/// average of the triangles' around each vertex: [`Mesh::new`]) and textured by its
+/// material's texture if it names one (`map_Kd`). Before the work, the triangles it
+/// would make are checked against the memory ([`MESH_BYTES_PER_TRIANGLE`] each).
 pub fn mesh_on_the_floor(
     path: &Path,
     up: Up,
@@ -61,7 +63,10 @@ pub fn mesh_on_the_floor(
 ) -> Result<PlacedMesh> {
     let subdivisions = check_subdivisions("subdivide", subdivisions)?;
     let LoadedMesh {
-        mut mesh, counts, ..
+        mut mesh,
+        counts,
+        texture,
+        ..
     } = Mesh::from_obj(asset_path(path))?;
     let triangles = subdivided_count(mesh.triangles.len(), subdivisions);
     let param = if subdivisions == 0 {
@@ -94,7 +99,7 @@ pub fn mesh_on_the_floor(
             mesh,
             model,
             colour: Vec3::new(0.8, 0.55, 0.3),
-            texture: None,
+            texture: texture.map(Texture::read).transpose()?.map(Arc::new),
         },
         counts,
         subdivisions,
@@ -102,6 +107,22 @@ pub fn mesh_on_the_floor(
     })
 }
 // ANCHOR_END: mesh_on_the_floor
+
+impl PlacedMesh {
+    /// The same mesh textured by the image file at `path` if one is given (lesson
+    /// 09's `--texture`: tinyrenderer's models, for one, come without a material
+    /// library to name theirs); its texture coordinates are checked when it is drawn.
+    pub fn textured(self, path: Option<&Path>) -> Result<PlacedMesh> {
+        let Some(path) = path else {
+            return Ok(self);
+        };
+        let texture = Texture::read(asset_path(path))?;
+        Ok(PlacedMesh {
+            model: self.model.textured(texture),
+            ..self
+        })
+    }
+}
 
 /// The floor of `scene` (its first object) with `mesh` standing on it, as the ray
 /// caster sees them: the mesh as one shape ([`Model::object`]), the same background

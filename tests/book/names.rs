@@ -76,6 +76,13 @@ const FOREIGN: &[&str] = &[
     "assert_eq",
     // The header of a PFM file, which lesson 10 writes.
     "PF",
+    // Statements of Wavefront OBJ and MTL files, which lesson 09 reads.
+    "vt",
+    "vn",
+    "mtllib",
+    "usemtl",
+    "newmtl",
+    "map_Kd",
 ];
 
 /// `text` with its `//` comments removed (strings are kept: a name only in a string

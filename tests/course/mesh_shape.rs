@@ -90,16 +90,16 @@ fn mesh_shape_hits_are_the_triangle_lists() {
     }
 }
 
-/// A scene holding the teapot as one object and a ball answers through its own
-/// tree (`BvhScene`) what its list answers, the whole hit record bit for bit.
+/// A scene holding the teapot (4032 triangles) as one object and a ball answers
+/// through its own tree (`BvhScene`) what its list answers, the whole hit record
+/// bit for bit.
 #[test]
 fn a_scene_of_a_mesh_shape_through_a_tree_is_its_list() {
     let mut rng = Rng::seeded(33);
     let ball = render_lessons::shapes::Sphere::new(Vec3::new(1.0, 0.0, 0.0), 0.4);
-    let objects = vec![
-        teapot().object().unwrap(),
-        Object::diffuse(ball.unwrap(), Vec3::ONE),
-    ];
+    let teapot = teapot().object().unwrap();
+    assert!(matches!(&teapot.shape, Shape::Mesh(m) if m.len() == 4032));
+    let objects = vec![teapot, Object::diffuse(ball.unwrap(), Vec3::ONE)];
     let list = Scene::new(objects, Vec3::ZERO).unwrap();
     let tree = BvhScene::new(list.clone());
     let mut hits = 0;

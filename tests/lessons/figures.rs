@@ -139,7 +139,7 @@ fn a_tick_value_under_a_label_is_left_out_and_a_collision_is_reported() {
 /// scaled down. Renders carry no text; a strip's captions are drawn large enough for
 /// the scale (the browser test, tests/browser/check.mjs, checks every figure's
 /// smallest text as the page shows it).
-const STRIPS: [(&str, u32, &str); 5] = [
+const STRIPS: [(&str, u32, &str); 6] = [
     (
         "09_side_by_side.png",
         3 * 480 + 2 * 8,
@@ -149,6 +149,7 @@ const STRIPS: [(&str, u32, &str); 5] = [
     ("09_shadow_bias.png", 2 * 480 + 8, "two renders, no text"),
     ("09_mesh.png", 2 * 480 + 8, "two renders, no text"),
     ("09_teapot.png", 2 * 480 + 8, "two renders, no text"),
+    ("09_texture.png", 2 * 480 + 8, "two renders, no text"),
 ];
 
 /// The width of a PNG (from its IHDR chunk) or an SVG (its root element's `width`),

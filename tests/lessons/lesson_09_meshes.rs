@@ -189,12 +189,13 @@ fn obj_files() {
     assert_eq!(loaded.mesh.triangles, vec![[0, 1, 2]]);
     assert!((loaded.mesh.normals[0] - Vec3::Z).length() < 1e-6);
     assert_eq!(loaded.counts.to_string(), "");
-    // Normals in the file (vn) are not read: the mesh's are the triangles'.
+    // Normals in the file (vn) are the mesh's, even against the winding
+    // (tests/lessons/lesson_09_obj_textures.rs reads the rest of a corner).
     let with_normals = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n";
     let mesh = Mesh::from_obj(write("normals.obj", with_normals))
         .unwrap()
         .mesh;
-    assert_eq!(mesh.normals, vec![Vec3::Z; 3]);
+    assert_eq!(mesh.normals, vec![-Vec3::Z; 3]);
     // Two groups are merged into one mesh, the second's indices shifted.
     let groups = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\ng a\nf 1 2 3\ng b\nf 2 4 3\n";
     let mesh = Mesh::from_obj(write("groups.obj", groups)).unwrap().mesh;

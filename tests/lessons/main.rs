@@ -30,6 +30,7 @@ mod lesson_08_ray_casting;
 mod lesson_08_spawned_rays;
 mod lesson_09_coverage;
 mod lesson_09_meshes;
+mod lesson_09_obj_textures;
 mod lesson_09_placement;
 mod lesson_09_rasterization;
 mod lesson_09_real_models;

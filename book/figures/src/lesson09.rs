@@ -10,7 +10,7 @@ use render_lessons::course::diagram::{Diagram, Place, Rgb, palette};
 use render_lessons::course::lesson::Output;
 use render_lessons::error::Problem;
 use render_lessons::framebuffer::{Framebuffer, to_srgb8};
-use render_lessons::mesh::{Model, tessellate};
+use render_lessons::mesh::{Mesh, Model, tessellate};
 use render_lessons::raster::Shading::{PerPixel, PerVertex};
 use render_lessons::raster::{CameraTransforms, Shadows, floor_settings, point_light};
 use render_lessons::raster::{
@@ -25,11 +25,13 @@ use render_lessons::scenes::{
     mesh_on_the_floor, still_life, still_life_pinhole, still_life_shadows,
 };
 use render_lessons::spawn::Offset;
+use render_lessons::texture::Texture;
 use render_lessons::transform::Transform;
 use render_lessons::{Error, Result};
 
 /// Writes `09_side_by_side.png`, `09_shadows.png`, `09_shadow_bias.png`,
-/// `09_mesh.png`, `09_teapot.png`, `09_z_buffer.png` and `09_pipeline_stages.png`:
+/// `09_mesh.png`, `09_teapot.png`, `09_texture.png`, `09_z_buffer.png` and
+/// `09_pipeline_stages.png`:
 /// lesson 09 at its defaults (480 x 270, spheres of 64 segments, a 1024^2 shadow map, a
 /// bias of one texel footprint), and with `--mesh assets/meshes/teapot.obj`.
 pub fn figures(output: &Output) -> Result<()> {
@@ -56,6 +58,9 @@ pub fn figures(output: &Output) -> Result<()> {
     let teapot = mesh_on_the_floor(teapot, Up::Y, 0, &camera)?.model;
     let teapot_cast = reference(&floor_and_mesh(&scene, &teapot)?, &camera)?.image;
     let teapot_raster = draw(&[instances[0].clone(), teapot], PerPixel, None)?;
+    let square = checkered_square()?;
+    let square_cast = reference(&floor_and_mesh(&scene, &square)?, &camera)?.image;
+    let square_raster = draw(&[instances[0].clone(), square], PerPixel, None)?;
     let three = [&ray_cast, &per_pixel, &per_vertex];
     output.diagram("09_side_by_side.png", &captioned(&three, &SIDE_BY_SIDE)?)?;
     let panels = [
@@ -63,12 +68,31 @@ pub fn figures(output: &Output) -> Result<()> {
         ("09_shadow_bias.png", vec![&acne, &peter_pan]),
         ("09_mesh.png", vec![&mesh_cast, &mesh_raster]),
         ("09_teapot.png", vec![&teapot_cast, &teapot_raster]),
+        ("09_texture.png", vec![&square_cast, &square_raster]),
     ];
     for (name, images) in panels {
         output.image(name, &Framebuffer::beside(&images, 8)?)?;
     }
     output.image("09_z_buffer.png", &z_buffer()?)?;
     output.diagram("09_pipeline_stages.png", &stages()?)
+}
+
+/// A square of side 5 just above the floor of the still life, textured with
+/// a checkerboard of 8 x 8 squares (256 x 256 texels), its texture coordinates 0 to 1
+/// from corner to corner: receding, its squares shrink with distance.
+fn checkered_square() -> Result<Model> {
+    let side = 256;
+    let texels = (0..side * side)
+        .map(|k: u32| match (k % side / 32 + k / side / 32) % 2 {
+            0 => Vec3::new(0.1, 0.2, 0.6),
+            _ => Vec3::new(0.9, 0.8, 0.3),
+        })
+        .collect();
+    let texture = Texture::new(side, side, texels)?;
+    // Mesh::floor's corners run (-x, -z), (-x, +z), (+x, +z), (+x, -z).
+    let uvs = vec![Vec2::Y, Vec2::ZERO, Vec2::X, Vec2::ONE];
+    let square = Mesh::floor(Vec3::new(0.0, 0.02, 0.5), 5.0)?.with_uvs(uvs)?;
+    Ok(Model::new(square, Vec3::ONE).textured(texture))
 }
 
 /// The z-buffer's two squares (`scenes::squares`), rasterized with the red one first

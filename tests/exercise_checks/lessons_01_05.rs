@@ -12,7 +12,7 @@ use render_lessons::course::exercises::check::*;
 use render_lessons::ray::Ray;
 use render_lessons::transform::Transform;
 
-use crate::common::fails_with;
+use crate::common::{fails_with, slide_film};
 use crate::pitfalls_01_05::camera_basis_without_gram_schmidt;
 
 // Chapter 01.
@@ -159,7 +159,7 @@ fn pixel_to_plane_with(
 
 #[test]
 fn pixel_to_plane_accepts_the_reference() {
-    let slide = Film::new(4, 3, (-8.0, 8.0), (-6.0, 6.0)).unwrap();
+    let slide = slide_film();
     assert_eq!(slide.pixel_to_plane(0, 0), Vec2::new(-6.0, 4.0));
     assert_eq!(
         check_pixel_to_plane(|film: &Film, px, py| film.pixel_to_plane(px, py)),

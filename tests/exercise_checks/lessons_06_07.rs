@@ -8,10 +8,10 @@
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Film, Frame, PinholeCamera};
 use render_lessons::course::exercises::check::*;
-use render_lessons::ray::{Interval, Ray};
+use render_lessons::ray::Interval;
 use render_lessons::shapes::{Plane, Sphere};
 
-use crate::common::fails_with;
+use crate::common::{fails_with, ray};
 
 // Chapter 06.
 
@@ -121,8 +121,7 @@ fn project_rejects_mistakes() {
 
 #[test]
 fn ray_plane_t_accepts_the_reference() {
-    let reference =
-        |o, d, p0, n| Plane::new(p0, n).unwrap().t(&Ray::new(o, d).unwrap());
+    let reference = |o, d, p0, n| Plane::new(p0, n).unwrap().t(&ray(o, d));
     assert_eq!(check_ray_plane_t(reference), Outcome::Pass);
     let by_hand = |o: Vec3, d: Vec3, p0: Vec3, n: Vec3| {
         let denom = d.dot(n);
@@ -159,7 +158,6 @@ fn sphere(c: Vec3, r: f32) -> Sphere {
 
 #[test]
 fn ray_sphere_roots_accepts_the_reference() {
-    let ray = |o, d| Ray::new(o, d).unwrap();
     assert_eq!(
         check_ray_sphere_roots(move |o, d, c, r| sphere(c, r)
             .roots_stable(&ray(o, d))
@@ -183,7 +181,6 @@ fn ray_sphere_roots_accepts_the_reference() {
 
 #[test]
 fn ray_sphere_roots_rejects_mistakes() {
-    let ray = |o, d| Ray::new(o, d).unwrap();
     fails_with(
         check_ray_sphere_roots(move |o, d, c, r| {
             sphere(c, r)
@@ -286,7 +283,6 @@ fn moller_trumbore_with(
 fn moller_trumbore_accepts_the_reference() {
     use render_lessons::shapes::Triangle;
     let triangle = |v0, v1, v2| Triangle::new(v0, v1, v2).unwrap();
-    let ray = |o, d| Ray::new(o, d).unwrap();
     assert_eq!(
         check_moller_trumbore(move |o, d, v0, v1, v2| {
             triangle(v0, v1, v2)

@@ -9,24 +9,16 @@ use glam::Vec3;
 use render_lessons::course::exercises::check::*;
 use render_lessons::raster::ScreenVertex;
 use render_lessons::ray::Ray;
-use render_lessons::scene::{Object, PointLight, Scene};
+use render_lessons::scene::PointLight;
 use render_lessons::shapes::Shape;
 
-use crate::common::{fails_hinting, fails_with};
+use crate::common::{fails_hinting, fails_with, reference_closest};
 
 // Chapter 08.
 
 #[test]
 fn closest_accepts_the_reference() {
-    let reference = |ray: &Ray, shapes: &[Shape], range| {
-        let objects = shapes
-            .iter()
-            .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
-            .collect();
-        let scene = Scene::new(objects, Vec3::ZERO).unwrap();
-        scene.closest(ray, range)
-    };
-    assert_eq!(check_closest(reference), Outcome::Pass);
+    assert_eq!(check_closest(reference_closest), Outcome::Pass);
     assert_eq!(check_closest(closest_solution), Outcome::Pass);
     // Every hit, then the smallest t: no shrinking of range.max.
     let min_of_all = |ray: &Ray, shapes: &[Shape], range| {

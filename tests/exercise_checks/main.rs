@@ -6,6 +6,7 @@
 //! runs a student's answers (time limits, panics, the summary). The student's own
 //! tests are in `tests/exercises.rs`.
 
+#[path = "../common/mod.rs"]
 mod common;
 
 mod harness;

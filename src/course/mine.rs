@@ -280,13 +280,13 @@ pub fn compared(
     name: &str,
     lesson: &std::path::Path,
 ) -> Option<String> {
-    let theirs = image::open(lesson).ok()?.to_rgba8();
-    if (theirs.width(), theirs.height()) != (mine.width(), mine.height()) {
+    let (width, height, theirs) = crate::files::read_png_rgba(lesson).ok()?;
+    if (width, height) != (mine.width(), mine.height()) {
         return None;
     }
     let ours = mine.to_srgb8().ok()?;
     let like = lesson.file_name()?.to_string_lossy();
-    Some(Comparison::of(&ours, theirs.as_raw()).verdict(name, &like))
+    Some(Comparison::of(&ours, &theirs).verdict(name, &like))
 }
 
 #[cfg(all(test, not(feature = "exercises")))]

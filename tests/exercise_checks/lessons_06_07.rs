@@ -1,9 +1,9 @@
 //! The checks of the coding exercises of lessons 06 and 07, themselves checked (run by
-//! the default test suite, without the `exercises` feature): each check must pass the
-//! crate's reference and an independent answer, and must fail wrong answers, each with
-//! a hint that names the mistake, so that a wrong check fails CI. The mistakes the
-//! chapters warn about, as a student writes them, are in `pitfalls_06_07.rs`; the
-//! student's own tests in `tests/exercises.rs`.
+//! the default test suite): each check must pass the crate's reference and an
+//! independent answer, and must fail wrong answers, each with a hint that names the
+//! mistake, so that a wrong check fails CI. The mistakes the chapters warn about, as a
+//! student writes them, are in `pitfalls_06_07.rs`; the student's own tests in
+//! `tests/exercises.rs`.
 
 use glam::{Vec2, Vec3};
 use render_lessons::camera::{Film, Frame, PinholeCamera};

@@ -169,7 +169,7 @@ pub struct Args {
     #[arg(long, default_value = "1,2,3", value_parser = parsers::vec3)]
     pub point: Vec3,
     /// Also draw the figure with your own `compose` (coding exercise 1.6):
-    /// `cargo run --features exercises --example 01_transforms -- --mine`.
+    /// `cargo run --example 01_transforms -- --mine`.
     #[arg(long)]
     pub mine: bool,
     #[command(flatten)]

@@ -175,7 +175,7 @@ pub struct Args {
     #[arg(long, default_value = "6", value_parser = parsers::finite)]
     pub y_max: f32,
     /// Also draw the origin image with your own `pixel_to_plane` (coding exercise 3.5):
-    /// `cargo run --features exercises --example 03_ortho_camera -- --mine`.
+    /// `cargo run --example 03_ortho_camera -- --mine`.
     #[arg(long)]
     pub mine: bool,
     #[command(flatten)]

@@ -192,7 +192,7 @@ pub struct Args {
     #[arg(long, default_value_t = 320, value_parser = parsers::pixels(MAX_RESOLUTION / 2))]
     pub view_width: u32,
     /// Also draw the pinhole view with your own `pinhole_ray` (coding exercise 6.3):
-    /// `cargo run --features exercises --example 06_pinhole_camera -- --mine`.
+    /// `cargo run --example 06_pinhole_camera -- --mine`.
     #[arg(long)]
     pub mine: bool,
     #[command(flatten)]

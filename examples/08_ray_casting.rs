@@ -185,8 +185,8 @@ struct Args {
     #[arg(long, default_value = "10000,0,0", value_parser = parsers::vec3, allow_hyphen_values = true)]
     far: Vec3,
     /// Also draw the shadowless pinhole image with your own `closest` (coding exercise
-    /// 8.1) and the Lambert image with your own `lambert` (8.2):
-    /// `cargo run --release --features exercises --example 08_ray_casting -- --mine`.
+    /// 8.3) and the Lambert image with your own `lambert` (8.7):
+    /// `cargo run --release --example 08_ray_casting -- --mine`.
     #[arg(long)]
     mine: bool,
     #[command(flatten)]

@@ -43,17 +43,56 @@ fn readable_by_all(_file: &std::fs::File) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Encodes an 8-bit RGBA image as PNG and writes it atomically.
+/// Encodes an 8-bit RGBA image as PNG and writes it atomically. The settings are
+/// those the `image` crate gave the same `png` encoder (fast deflate, adaptive
+/// filters), so that the committed figures stayed the same bytes when the crate
+/// dropped `image`.
 pub fn write_png_rgba(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<()> {
     let mut bytes = Vec::new();
-    let encoder = image::codecs::png::PngEncoder::new(&mut bytes);
-    image::ImageEncoder::write_image(
-        encoder,
-        rgba,
-        width,
-        height,
-        image::ExtendedColorType::Rgba8,
-    )
-    .map_err(|e| io_error(path, e))?;
+    let mut encoder = png::Encoder::new(&mut bytes, width, height);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Fast);
+    encoder.set_filter(png::Filter::Adaptive);
+    encoder
+        .write_header()
+        .and_then(|mut writer| writer.write_image_data(rgba))
+        .map_err(|e| io_error(path, e))?;
     write_atomically(path, &bytes)
+}
+
+/// Reads a PNG file as 8-bit RGBA: its width, height and pixels, row by row from
+/// the top. Palettes and grey levels are expanded, 16-bit channels keep their high
+/// byte, and a missing alpha channel is opaque.
+pub fn read_png_rgba(path: &Path) -> Result<(u32, u32, Vec<u8>)> {
+    let file = std::fs::File::open(path).map_err(|e| io_error(path, e))?;
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::normalize_to_color8());
+    let mut reader = decoder.read_info().map_err(|e| io_error(path, e))?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| io_error(path, "the image is too large to read"))?;
+    let mut pixels = vec![0; size];
+    let frame = reader
+        .next_frame(&mut pixels)
+        .map_err(|e| io_error(path, e))?;
+    pixels.truncate(frame.buffer_size());
+    let rgba = match frame.color_type {
+        png::ColorType::Rgba => pixels,
+        png::ColorType::Rgb => pixels
+            .chunks(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect(),
+        png::ColorType::GrayscaleAlpha => pixels
+            .chunks(2)
+            .flat_map(|p| [p[0], p[0], p[0], p[1]])
+            .collect(),
+        png::ColorType::Grayscale => {
+            pixels.iter().flat_map(|&g| [g, g, g, 255]).collect()
+        }
+        png::ColorType::Indexed => {
+            return Err(io_error(path, "a palette left unexpanded"));
+        }
+    };
+    Ok((frame.width, frame.height, rgba))
 }

@@ -2,22 +2,22 @@
 //!
 //! One test per exercise runs its check on your function in
 //! `src/course/exercises/chNN.rs` and fails, printing the exercise's number, the case,
-//! the expected and the received answer and a hint, unless every case passes. The
-//! tests are named after the lesson and the exercise,
-//! `ch03::exercise_3_5_pixel_to_plane`, so that either selects them:
+//! the expected and the received answer and a hint, unless every case passes; a
+//! function still `todo!()` fails as `NOT STARTED`. The tests are named after the
+//! lesson and the exercise, `ch03::exercise_3_5_pixel_to_plane`, so that either
+//! selects them:
 //!
 //! ```text
-//! cargo test --features exercises --test exercises                 # all your exercises
-//! cargo test --features exercises --test exercises ch03            # lesson 03's
-//! cargo test --features exercises --test exercises exercise_3_5_   # one exercise
-//! cargo test --features exercises --test exercises summary -- --nocapture   # the table
+//! cargo test --test exercises                                 # all your exercises
+//! cargo test --test exercises ch03                            # lesson 03's
+//! cargo test --test exercises exercise_3_5_                   # one exercise
+//! cargo test --test exercises summary -- --nocapture          # the table
 //! ```
 //!
-//! This file holds your exercises' tests and nothing else. Without the `exercises`
-//! feature your files are not compiled and it has no test: the course's own tests of
-//! the checks and of the harness, which run with every `cargo test`, are in
-//! `tests/exercise_checks/`.
-#![cfg(feature = "exercises")]
+//! This file holds your exercises' tests and nothing else, and a plain `cargo test`
+//! does not run it (`test = false` in `Cargo.toml`): until you write them, your
+//! exercises fail. The course's own tests of the checks and of the harness, which run
+//! with every `cargo test`, are in `tests/exercise_checks/`.
 
 use render_lessons::course::exercises::check::*;
 use render_lessons::course::exercises::{self as yours, check_all};
@@ -90,7 +90,7 @@ exercises! {
 }
 
 /// The table of every exercise's status; never fails on your answers. See it with
-/// `cargo test --features exercises --test exercises summary -- --nocapture`.
+/// `cargo test --test exercises summary -- --nocapture`.
 #[test]
 fn summary() {
     let results = check_all();

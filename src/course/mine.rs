@@ -2,15 +2,15 @@
 //!
 //! Each `my_*` function gives the student's function of one coding exercise (from
 //! `src/course/exercises/chNN.rs`) once its check passes. Otherwise it is an error
-//! whose message says what to do: the check's report (the case, expected, got and
-//! hint), or, without the `exercises` feature, one line with the command that turns
-//! it on. The examples' `--mine` flags call these; the pictures themselves are the
-//! examples' own, drawn with the function given.
+//! whose message says what to do: the check's report, which for a function still
+//! `todo!()` names the file to write it in and the command that tests it, and
+//! otherwise gives the case, expected, got and hint. The examples' `--mine` flags
+//! call these; the pictures themselves are the examples' own, drawn with the
+//! function given.
 
 use glam::{Mat4, Vec2, Vec3};
 
 use crate::camera::{Film, Frame};
-#[cfg(feature = "exercises")]
 use crate::course::exercises as ch;
 use crate::course::exercises::check::{self, Exercise};
 use crate::course::failure::{Failure, LessonResult};
@@ -40,97 +40,57 @@ pub type Lambert = fn(Vec3, Vec3, Vec3, &PointLight, bool) -> Vec3;
 
 /// The student's `compose` for lesson 01's `--mine` (coding exercise 1.6).
 pub fn my_compose() -> LessonResult<Compose> {
-    #[cfg(feature = "exercises")]
-    {
-        passing(
-            check::COMPOSE,
-            check::check_compose(ch::ch01::compose),
-            ch::ch01::compose,
-        )
-    }
-    #[cfg(not(feature = "exercises"))]
-    Err(feature_off(
+    passing(
         check::COMPOSE,
-        "cargo run --features exercises --example 01_transforms -- --mine",
-    ))
+        check::check_compose(ch::ch01::compose),
+        ch::ch01::compose,
+    )
 }
 
 /// The student's `pixel_to_plane` for lesson 03's `--mine` (coding exercise 3.5).
 pub fn my_pixel_to_plane() -> LessonResult<PixelToPlane> {
-    #[cfg(feature = "exercises")]
-    {
-        passing(
-            check::PIXEL_TO_PLANE,
-            check::check_pixel_to_plane(ch::ch03::pixel_to_plane),
-            ch::ch03::pixel_to_plane,
-        )
-    }
-    #[cfg(not(feature = "exercises"))]
-    Err(feature_off(
+    passing(
         check::PIXEL_TO_PLANE,
-        "cargo run --features exercises --example 03_ortho_camera -- --mine",
-    ))
+        check::check_pixel_to_plane(ch::ch03::pixel_to_plane),
+        ch::ch03::pixel_to_plane,
+    )
 }
 
 /// The student's `pinhole_ray` for lesson 06's `--mine` (coding exercise 6.3).
 pub fn my_pinhole_ray() -> LessonResult<PinholeRay> {
-    #[cfg(feature = "exercises")]
-    {
-        passing(
-            check::PINHOLE_RAY,
-            check::check_pinhole_ray(ch::ch06::pinhole_ray),
-            ch::ch06::pinhole_ray,
-        )
-    }
-    #[cfg(not(feature = "exercises"))]
-    Err(feature_off(
+    passing(
         check::PINHOLE_RAY,
-        "cargo run --features exercises --example 06_pinhole_camera -- --mine",
-    ))
+        check::check_pinhole_ray(ch::ch06::pinhole_ray),
+        ch::ch06::pinhole_ray,
+    )
 }
 
 /// The student's `closest` for lesson 08's `--mine` (coding exercise 8.3).
 pub fn my_closest() -> LessonResult<Closest> {
-    #[cfg(feature = "exercises")]
-    {
-        passing(
-            check::CLOSEST,
-            check::check_closest(ch::ch08::closest),
-            ch::ch08::closest,
-        )
-    }
-    #[cfg(not(feature = "exercises"))]
-    Err(feature_off(
+    passing(
         check::CLOSEST,
-        "cargo run --release --features exercises --example 08_ray_casting -- --mine",
-    ))
+        check::check_closest(ch::ch08::closest),
+        ch::ch08::closest,
+    )
 }
 
 /// The student's `lambert` for lesson 08's `--mine` (coding exercise 8.7).
 pub fn my_lambert() -> LessonResult<Lambert> {
-    #[cfg(feature = "exercises")]
-    {
-        passing(
-            check::LAMBERT,
-            check::check_lambert(ch::ch08::lambert),
-            ch::ch08::lambert,
-        )
-    }
-    #[cfg(not(feature = "exercises"))]
-    Err(feature_off(
+    passing(
         check::LAMBERT,
-        "cargo run --release --features exercises --example 08_ray_casting -- --mine",
-    ))
+        check::check_lambert(ch::ch08::lambert),
+        ch::ch08::lambert,
+    )
 }
 
 /// For a lesson whose `--mine` draws several pictures, one per exercise: `Some` of
 /// the student's function when its exercise passes; `None` when it does not, after
 /// printing the check's report on stderr, so that the pictures of the exercises that
-/// pass are still drawn. Without the `exercises` feature, the error.
+/// pass are still drawn.
 pub fn if_passing<F>(mine: LessonResult<F>) -> LessonResult<Option<F>> {
     match mine {
         Ok(f) => Ok(Some(f)),
-        Err(Failure::Exercise { report }) if cfg!(feature = "exercises") => {
+        Err(Failure::Exercise { report }) => {
             eprintln!("{report}\n(its --mine picture is not drawn)\n");
             Ok(None)
         }
@@ -158,25 +118,12 @@ pub fn lit_with(scene: &Scene, ray: &Ray, lambert: Lambert) -> Vec3 {
 
 /// The student's function `f` of `exercise` if its check's `outcome` is a pass;
 /// otherwise the check's report as the error.
-#[cfg(feature = "exercises")]
 fn passing<F>(exercise: Exercise, outcome: check::Outcome, f: F) -> LessonResult<F> {
     match outcome {
         check::Outcome::Pass => Ok(f),
         outcome => Err(Failure::Exercise {
             report: exercise.report(&outcome),
         }),
-    }
-}
-
-/// `--mine` without the `exercises` feature: one line with the `command` that turns
-/// it on.
-#[cfg(not(feature = "exercises"))]
-fn feature_off(exercise: Exercise, command: &str) -> Failure {
-    Failure::Exercise {
-        report: format!(
-            "--mine runs your code for coding exercise {}; turn the exercises on: {command}",
-            exercise.number
-        ),
     }
 }
 
@@ -280,52 +227,48 @@ pub fn compared(
     name: &str,
     lesson: &std::path::Path,
 ) -> Option<String> {
-    let theirs = image::open(lesson).ok()?.to_rgba8();
-    if (theirs.width(), theirs.height()) != (mine.width(), mine.height()) {
+    let (width, height, theirs) = crate::files::read_png_rgba(lesson).ok()?;
+    if (width, height) != (mine.width(), mine.height()) {
         return None;
     }
     let ours = mine.to_srgb8().ok()?;
     let like = lesson.file_name()?.to_string_lossy();
-    Some(Comparison::of(&ours, theirs.as_raw()).verdict(name, &like))
+    Some(Comparison::of(&ours, &theirs).verdict(name, &like))
 }
 
-#[cfg(all(test, not(feature = "exercises")))]
+#[cfg(test)]
 mod tests {
     use super::*;
+    use check::*;
 
-    /// Without the `exercises` feature, every lesson's `--mine` (01, 03, 06, and both
-    /// exercises of 08) is a one-line error with the command that turns it on, naming
-    /// the lesson so that it can be pasted as it is; a lesson with two exercises still
-    /// stops with the error.
+    /// `--mine` on a function still `todo!()` (as every exercise file begins) says
+    /// what to do: write the function, in its file, and test it with the command
+    /// that runs that lesson's exercises. The functions here are `todo!()`s of the
+    /// test's own, so that the test does not change when a student writes theirs.
     #[test]
-    fn mine_without_the_exercises_feature_says_how_to_turn_it_on() {
-        let run = "cargo run --features exercises --example";
-        let release = "cargo run --release --features exercises --example";
-        let lessons = [
-            (my_compose().err(), format!("{run} 01_transforms -- --mine")),
-            (
-                my_pixel_to_plane().err(),
-                format!("{run} 03_ortho_camera -- --mine"),
-            ),
-            (
-                my_pinhole_ray().err(),
-                format!("{run} 06_pinhole_camera -- --mine"),
-            ),
-            (
-                my_closest().err(),
-                format!("{release} 08_ray_casting -- --mine"),
-            ),
-            (
-                my_lambert().err(),
-                format!("{release} 08_ray_casting -- --mine"),
-            ),
+    fn mine_on_an_unwritten_exercise_says_where_to_write_it_and_how_to_test_it() {
+        let unwritten = [
+            (COMPOSE, check_compose(|_, _| todo!())),
+            (PIXEL_TO_PLANE, check_pixel_to_plane(|_, _, _| todo!())),
+            (PINHOLE_RAY, check_pinhole_ray(|_, _, _, _, _| todo!())),
+            (CLOSEST, check_closest(|_, _, _| todo!())),
+            (LAMBERT, check_lambert(|_, _, _, _, _| todo!())),
         ];
-        for (failure, command) in lessons {
-            let message = failure.expect("an error").to_string();
-            assert!(message.contains(&command), "{message}");
-            assert_eq!(message.lines().count(), 1, "{message}");
-            let report = Failure::Exercise { report: message };
-            assert!(if_passing(Err::<(), _>(report)).is_err());
+        for (exercise, outcome) in unwritten {
+            let Err(Failure::Exercise { report }) = passing(exercise, outcome, ())
+            else {
+                panic!("{}: a todo!() must not be drawn", exercise.number);
+            };
+            for says in [
+                "NOT STARTED",
+                exercise.function,
+                exercise.file,
+                &format!("cargo test --test exercises ch{}", exercise.chapter),
+            ] {
+                assert!(report.contains(says), "{report}\nsays nothing of {says:?}");
+            }
+            let failure = Failure::Exercise { report };
+            assert!(matches!(if_passing(Err::<(), _>(failure)), Ok(None)));
         }
     }
 }

@@ -7,9 +7,9 @@ use render_lessons::ray::{Interval, Ray};
 use render_lessons::scene::{Object, Scene, SceneHit};
 use render_lessons::shapes::{Aabb, Shape, Sphere};
 
-/// The ray from `o` along `d` (not normalised).
-pub fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d)).unwrap()
+/// The ray from `o` along `d` (not normalised), each a `Vec3` or a `[f32; 3]`.
+pub fn ray(o: impl Into<Vec3>, d: impl Into<Vec3>) -> Ray {
+    Ray::new(o.into(), d.into()).unwrap()
 }
 
 /// The sphere of radius 1 at the origin (`.into()` makes it a `Shape`).

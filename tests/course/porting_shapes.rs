@@ -449,7 +449,7 @@ fn every_shape() -> Vec<(&'static str, Shape)> {
             "instance",
             Shape::Instance(Box::new(
                 Instance::new(
-                    Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap()),
+                    Shape::from(unit_sphere()),
                     Transform::translation(0.0, 0.0, -4.0)
                         * Transform::rotation_z(0.4)
                         * Transform::scale(1.5, 0.7, 1.0),

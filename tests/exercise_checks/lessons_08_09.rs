@@ -1,32 +1,24 @@
 //! The checks of the coding exercises of lessons 08 and 09, themselves checked (run by
-//! the default test suite, without the `exercises` feature): each check must pass the
-//! crate's reference and an independent answer, and must fail the wrong answers its
-//! chapter warns about, each with a hint that names the mistake, so that a wrong check
-//! fails CI. The student's own tests are in `tests/exercises.rs`.
+//! the default test suite): each check must pass the crate's reference and an
+//! independent answer, and must fail wrong answers, each with a hint that names the
+//! mistake, so that a wrong check fails CI. The mistakes the chapters warn about, as a
+//! student writes them, are in `pitfalls_08_09.rs`; the student's own tests in
+//! `tests/exercises.rs`.
 
 use glam::Vec3;
 use render_lessons::course::exercises::check::*;
-use render_lessons::lighting::AMBIENT;
 use render_lessons::raster::ScreenVertex;
-use render_lessons::ray::{Interval, Ray};
-use render_lessons::scene::{Object, PointLight, Scene, SceneHit};
+use render_lessons::ray::Ray;
+use render_lessons::scene::PointLight;
 use render_lessons::shapes::Shape;
 
-use crate::common::{fails_hinting, fails_with};
+use crate::common::{fails_hinting, fails_with, reference_closest};
 
 // Chapter 08.
 
 #[test]
 fn closest_accepts_the_reference() {
-    let reference = |ray: &Ray, shapes: &[Shape], range| {
-        let objects = shapes
-            .iter()
-            .map(|s| Object::diffuse(s.clone(), Vec3::ONE))
-            .collect();
-        let scene = Scene::new(objects, Vec3::ZERO).unwrap();
-        scene.closest(ray, range)
-    };
-    assert_eq!(check_closest(reference), Outcome::Pass);
+    assert_eq!(check_closest(reference_closest), Outcome::Pass);
     assert_eq!(check_closest(closest_solution), Outcome::Pass);
     // Every hit, then the smallest t: no shrinking of range.max.
     let min_of_all = |ray: &Ray, shapes: &[Shape], range| {
@@ -179,9 +171,10 @@ fn lambert_rejects_mistakes() {
 
 // Chapter 09.
 
-type P = (i64, i64);
+/// A pixel position, in whole pixels.
+pub(crate) type P = (i64, i64);
 
-fn edge(u: P, v: P, q: P) -> i64 {
+pub(crate) fn edge(u: P, v: P, q: P) -> i64 {
     (q.0 - u.0) * (v.1 - u.1) - (q.1 - u.1) * (v.0 - u.0)
 }
 
@@ -191,14 +184,14 @@ fn top_left(u: P, v: P) -> bool {
 
 /// The edges b -> c, c -> a, a -> b, with b and c swapped if the area is
 /// negative; `None` if it is zero.
-fn edges(a: P, b: P, c: P) -> Option<[(P, P); 3]> {
+pub(crate) fn edges(a: P, b: P, c: P) -> Option<[(P, P); 3]> {
     let area = edge(a, b, c);
     let (b, c) = if area < 0 { (c, b) } else { (b, c) };
     (area != 0).then_some([(b, c), (c, a), (a, b)])
 }
 
 /// The right rule with the arithmetic done in the type `to` converts to.
-fn covers_in<T>(to: fn(i64) -> T, a: P, b: P, c: P, p: P) -> bool
+pub(crate) fn covers_in<T>(to: fn(i64) -> T, a: P, b: P, c: P, p: P) -> bool
 where
     T: Copy
         + Default
@@ -364,103 +357,4 @@ fn perspective_weights_rejects_mistakes() {
         check_perspective_weights(|_, _| todo!()),
         Outcome::NotStarted
     );
-}
-
-// The chapters' warnings, as a student writes them: each a plain function in the
-// exercise's shape, which its check must fail with a hint naming the mistake.
-
-/// Lesson 08, "returning the first hit instead of the closest".
-fn closest_first_hit(ray: &Ray, shapes: &[Shape], range: Interval) -> Option<SceneHit> {
-    shapes.iter().enumerate().find_map(|(object, shape)| {
-        shape.hit(ray, range).map(|hit| SceneHit { hit, object })
-    })
-}
-
-/// Lesson 08, "accepting t <= 0": every crossing of the line counts, the range unused.
-fn closest_anywhere_on_the_line(
-    ray: &Ray,
-    shapes: &[Shape],
-    _: Interval,
-) -> Option<SceneHit> {
-    let mut range = Interval::EVERYWHERE;
-    let mut closest = None;
-    for (object, shape) in shapes.iter().enumerate() {
-        if let Some(hit) = shape.hit(ray, range) {
-            range.max = hit.t;
-            closest = Some(SceneHit { hit, object });
-        }
-    }
-    closest
-}
-
-/// Lesson 08's step 1 without the fall-off: a point light that does not spread.
-fn lambert_without_falloff(
-    p: Vec3,
-    n: Vec3,
-    albedo: Vec3,
-    light: &PointLight,
-    visible: bool,
-) -> Vec3 {
-    let l = (light.position - p).normalize();
-    let cos = n.dot(l);
-    let direct = if visible && cos > 0.0 {
-        light.intensity * cos
-    } else {
-        Vec3::ZERO
-    };
-    albedo * (AMBIENT + direct)
-}
-
-/// Lesson 08: the cosine unclamped, so a surface facing away darkens below ambient.
-fn lambert_unclamped(
-    p: Vec3,
-    n: Vec3,
-    albedo: Vec3,
-    light: &PointLight,
-    visible: bool,
-) -> Vec3 {
-    let to_light = light.position - p;
-    let cos = n.dot(to_light.normalize());
-    let direct = if visible {
-        light.intensity * cos / to_light.length_squared()
-    } else {
-        Vec3::ZERO
-    };
-    albedo * (AMBIENT + direct)
-}
-
-/// Lesson 09, "testing coverage in floating point": the right rule, in f32.
-fn covers_in_f32(a: P, b: P, c: P, p: P) -> bool {
-    covers_in(|x| x as f32, a, b, c, p)
-}
-
-/// Lesson 09: E >= 0 on every edge, no top-left rule, so shared edges are drawn twice.
-fn covers_both_sides_of_an_edge(a: P, b: P, c: P, p: P) -> bool {
-    edges(a, b, c).is_some_and(|es| es.into_iter().all(|(u, v)| edge(u, v, p) >= 0))
-}
-
-/// Lesson 09, "interpolating attributes with the screen weights".
-fn perspective_weights_of_the_screen(b: [f32; 3], _: &[ScreenVertex; 3]) -> [f32; 3] {
-    b
-}
-
-#[test]
-fn every_exercise_of_lessons_08_and_09_fails_what_its_chapter_warns_about() {
-    for (outcome, hint) in [
-        (check_closest(closest_first_hit), "first hit in list order"),
-        (check_closest(closest_anywhere_on_the_line), "outside range"),
-        (
-            check_lambert(lambert_without_falloff),
-            "spreads over a sphere",
-        ),
-        (check_lambert(lambert_unclamped), "facing away"),
-        (check_covers(covers_in_f32), "not in floating point"),
-        (check_covers(covers_both_sides_of_an_edge), "drawn twice"),
-        (
-            check_perspective_weights(perspective_weights_of_the_screen),
-            "screen weights",
-        ),
-    ] {
-        fails_with(outcome, hint);
-    }
 }

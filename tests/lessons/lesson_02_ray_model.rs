@@ -120,7 +120,7 @@ fn an_unnormalised_ray_keeps_its_direction_and_counts_t_in_its_lengths() {
 #[test]
 fn an_unnormalised_ray_keeps_t_through_a_transform() {
     use render_lessons::ray::Interval;
-    use render_lessons::shapes::{Instance, Shape, Sphere};
+    use render_lessons::shapes::{Instance, Shape};
     use render_lessons::transform::Transform;
     // The object ray (M^-1 o, M^-1 d), not normalised, finds the world ray's t in
     // object space: the instance's own answer (which normalises and rescales), to
@@ -133,7 +133,7 @@ fn an_unnormalised_ray_keeps_t_through_a_transform() {
             .then(Transform::rotation_z(0.4))
             .then(Transform::translation(0.3, 0.1, -0.7)),
     ];
-    let unit = Shape::from(Sphere::new(Vec3::ZERO, 1.0).unwrap());
+    let unit = Shape::from(common::unit_sphere());
     for m in placements {
         let instance = Instance::new(unit.clone(), m).unwrap();
         let to_object = instance.to_object();

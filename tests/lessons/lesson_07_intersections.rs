@@ -302,8 +302,8 @@ fn lesson_07_worked_numbers() {
         (0.5f64 * 0.5, b, c, b * b - 4.0 * c),
         (0.25, -6.0, 8.25, 3.0)
     );
-    let sphere = Sphere::new(Vec3::ZERO, 1.0).unwrap();
-    let ray = Ray::new(Vec3::new(-3.0, 0.5, 0.0), Vec3::X).unwrap();
+    let sphere = common::unit_sphere();
+    let ray = common::ray([-3.0, 0.5, 0.0], Vec3::X);
     let (t0, t1) = sphere.roots_stable(&ray).pair().unwrap();
     assert_eq!(
         format!("{t0:.3} {t1:.3} {:.3}", 0.75f64.sqrt()),

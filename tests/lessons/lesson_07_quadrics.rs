@@ -9,12 +9,12 @@
 //! `cargo test --test lessons lesson_07_quadrics -- --nocapture` to see them).
 
 use crate::common::pages::{assert_page_says, sci};
-use crate::common::ray;
+use crate::common::{ray, unit_sphere};
 use glam::{DVec3, Mat4, Vec3, Vec4};
 use render_lessons::Error;
 use render_lessons::error::Problem;
 use render_lessons::ray::{Crossings, Interval, Ray};
-use render_lessons::shapes::{Instance, Quadric, Shape, Sphere};
+use render_lessons::shapes::{Instance, Quadric, Shape};
 use render_lessons::transform::Transform;
 
 fn first(r: Crossings) -> Option<f32> {
@@ -374,7 +374,7 @@ fn bad_input_names_its_parameter() {
         assert_eq!(param(Quadric::cylinder(r)), "radius", "{r}");
         assert_eq!(param(Quadric::cone(r)), "slope", "{r}");
     }
-    let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());
+    let sphere = Shape::from(unit_sphere());
     let flat = Transform::scale(1.0, 0.0, 1.0);
     assert_eq!(
         Instance::new(sphere, flat).unwrap_err(),

@@ -395,7 +395,7 @@ fn scaled_offset_from_o_plus_t_d_fails_on_triangles_with_large_coordinates() {
 /// and every pixel's exact value is 0.8; a re-hit multiplies by 0.8 again. Returns
 /// the mean and the standard deviation of one sample over `n` samples.
 fn far_furnace(distance: f32, n: u32) -> (f64, f64) {
-    let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());
+    let sphere = Shape::from(unit_sphere());
     let grey = Material::diffuse(Vec3::splat(0.8)).unwrap();
     let scene = Scene::new(vec![Object::new(sphere, grey)], Vec3::ONE).unwrap();
     let eye = distance * towards_camera();

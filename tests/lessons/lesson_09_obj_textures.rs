@@ -15,6 +15,7 @@ use render_lessons::scenes::{Up, mesh_on_the_floor, still_life, still_life_pinho
 use render_lessons::texture::{Texture, from_srgb8};
 
 use crate::examples::rasterization as lesson;
+use crate::lesson_09_textures::tga;
 
 /// A scratch folder, and a function that writes `bytes` to a file of it.
 fn scratch() -> (tempfile::TempDir, impl Fn(&str, &[u8]) -> PathBuf) {
@@ -27,17 +28,14 @@ fn scratch() -> (tempfile::TempDir, impl Fn(&str, &[u8]) -> PathBuf) {
     })
 }
 
-/// A 2 x 2 checker of two colours, as 8-bit sRGB codes, saved as a TGA file (the
-/// image crate writes it uncompressed; tinyrenderer's are run-length encoded, which
-/// the same decoder reads).
+/// A 2 x 2 checker of two colours, as 8-bit sRGB codes, saved as a run-length
+/// encoded TGA file, as tinyrenderer's textures are.
 const DARK: [u8; 3] = [40, 60, 160];
 const BRIGHT: [u8; 3] = [230, 200, 80];
 
 fn write_checker(path: &Path) {
-    let image = image::RgbImage::from_fn(2, 2, |i, j| {
-        image::Rgb(if (i + j) % 2 == 0 { DARK } else { BRIGHT })
-    });
-    image.save(path).unwrap();
+    let rows = vec![vec![DARK, BRIGHT], vec![BRIGHT, DARK]];
+    std::fs::write(path, tga(&rows, true)).unwrap();
 }
 
 /// A unit square in z = 0 as tinyrenderer writes a model: positions, texture
@@ -216,9 +214,7 @@ fn lesson_09_draws_a_textured_model_both_ways() {
     assert!(numbers.contains(row), "{numbers}");
     // --texture: another image instead, one red texel.
     let other = obj.with_file_name("red.png");
-    image::RgbImage::from_pixel(1, 1, image::Rgb([255, 0, 0]))
-        .save(&other)
-        .unwrap();
+    render_lessons::files::write_png_rgba(&other, 1, 1, &[255, 0, 0, 255]).unwrap();
     let textured = mesh.clone().textured(Some(&other)).unwrap();
     let red = Texture::new(1, 1, vec![Vec3::X]).unwrap();
     assert_eq!(textured.model.texture.as_deref(), Some(&red));

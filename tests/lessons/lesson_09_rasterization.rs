@@ -32,24 +32,22 @@ pub(crate) fn film() -> Film {
     Film::new(16, 9, (-1.6, 1.6), (-0.9, 0.9)).unwrap()
 }
 
-pub(crate) fn pinhole() -> PinholeCamera {
-    let frame = Frame::look(
+/// Both cameras' place: at (1, 2, 6), looking along (-0.2, -0.3, -1), Y up.
+fn frame() -> Frame {
+    Frame::look(
         Vec3::new(1.0, 2.0, 6.0),
         Vec3::new(-0.2, -0.3, -1.0),
         Vec3::Y,
     )
-    .unwrap();
-    PinholeCamera::new(film(), 1.5, frame).unwrap()
+    .unwrap()
+}
+
+pub(crate) fn pinhole() -> PinholeCamera {
+    PinholeCamera::new(film(), 1.5, frame()).unwrap()
 }
 
 fn ortho() -> OrthoCamera {
-    let frame = Frame::look(
-        Vec3::new(1.0, 2.0, 6.0),
-        Vec3::new(-0.2, -0.3, -1.0),
-        Vec3::Y,
-    )
-    .unwrap();
-    OrthoCamera::new(film(), frame)
+    OrthoCamera::new(film(), frame())
 }
 
 pub(crate) const DEPTH: DepthRange = DepthRange {

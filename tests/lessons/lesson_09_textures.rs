@@ -245,32 +245,98 @@ fn srgb_codes_decode_to_the_linear_values_they_encode() {
     assert_eq!((from_srgb8(0), from_srgb8(255)), (0.0, 1.0));
 }
 
-/// A texture file is read as its sRGB texels made linear (a PNG written here, and
-/// the same image as an uncompressed TGA, tinyrenderer's format); a file that is not
-/// an image, or a texture without texture coordinates to look it up by, is refused
-/// with the name of what is wrong.
+/// `rows` (the top row first) as a TGA file: type 2, uncompressed 24-bit pixels with
+/// rows from the bottom, as most writers store them; or type 10, run-length encoded
+/// 32-bit pixels with rows from the top, a run packet for each repeated pixel and a
+/// raw packet for each other.
+pub(crate) fn tga(rows: &[Vec<[u8; 3]>], rle: bool) -> Vec<u8> {
+    let (w, h) = (rows[0].len() as u16, rows.len() as u16);
+    let (kind, bits, descriptor) = if rle { (10, 32, 0x28) } else { (2, 24, 0) };
+    let mut bytes = vec![0, 0, kind, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+    bytes.extend(w.to_le_bytes().into_iter().chain(h.to_le_bytes()));
+    bytes.extend([bits, descriptor]);
+    let stored = |[r, g, b]: [u8; 3]| {
+        if rle {
+            vec![b, g, r, 255]
+        } else {
+            vec![b, g, r]
+        }
+    };
+    if !rle {
+        bytes.extend(rows.iter().rev().flatten().flat_map(|&p| stored(p)));
+        return bytes;
+    }
+    let pixels: Vec<[u8; 3]> = rows.concat();
+    let mut k = 0;
+    while k < pixels.len() {
+        let run = pixels[k..]
+            .iter()
+            .take(128)
+            .take_while(|&&p| p == pixels[k]);
+        let n = run.count();
+        bytes.push(if n > 1 { 0x80 | (n - 1) as u8 } else { 0 });
+        bytes.extend(stored(pixels[k]));
+        k += n;
+    }
+    bytes
+}
+
+/// A texture file is read as its sRGB texels made linear: a PNG written here, and
+/// the same image as TGA files, uncompressed and run-length encoded (tinyrenderer's);
+/// a file that is not an image, a TGA cut short or of a kind not read, or a texture
+/// without texture coordinates to look it up by, is refused with the name of what is
+/// wrong.
 #[test]
 fn a_texture_is_read_from_png_and_tga() {
     let dir = tempfile::tempdir().unwrap();
-    let codes: [[u8; 3]; 4] = [[0, 0, 0], [255, 0, 0], [0, 128, 0], [10, 20, 250]];
+    let write = |name: &str, bytes: &[u8]| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, bytes).unwrap();
+        path
+    };
+    let rows = vec![
+        vec![[0, 0, 0], [255, 0, 0], [255, 0, 0], [255, 0, 0]],
+        vec![[0, 128, 0], [10, 20, 250], [7, 7, 7], [7, 7, 7]],
+    ];
     let png = dir.path().join("t.png");
-    let tga = dir.path().join("t.tga");
-    let image =
-        image::RgbImage::from_fn(2, 2, |i, j| image::Rgb(codes[(2 * j + i) as usize]));
-    image.save(&png).unwrap();
-    image.save(&tga).unwrap();
-    for path in [&png, &tga] {
+    let rgba: Vec<u8> = rows
+        .concat()
+        .iter()
+        .flat_map(|p| [p[0], p[1], p[2], 255])
+        .collect();
+    render_lessons::files::write_png_rgba(&png, 4, 2, &rgba).unwrap();
+    let plain = write("plain.tga", &tga(&rows, false));
+    let rle = write("rle.TGA", &tga(&rows, true));
+    for path in [&png, &plain, &rle] {
         let t = Texture::read(path).unwrap();
-        assert_eq!((t.width(), t.height()), (2, 2));
-        for (k, code) in codes.iter().enumerate() {
-            let (i, j) = (k as u32 % 2, k as u32 / 2);
-            assert_eq!(t.texel(i, j), Vec3::from(code.map(from_srgb8)), "{path:?}");
+        assert_eq!((t.width(), t.height()), (4, 2));
+        for (j, row) in rows.iter().enumerate() {
+            for (i, code) in row.iter().enumerate() {
+                let expected = Vec3::from(code.map(from_srgb8));
+                assert_eq!(t.texel(i as u32, j as u32), expected, "{path:?}");
+            }
         }
     }
-    let text = dir.path().join("t.txt");
-    std::fs::write(&text, "not an image").unwrap();
-    let err = Texture::read(&text).unwrap_err();
-    assert!(err.to_string().contains("t.txt"), "{err}");
+    let refused = |name: &str, bytes: &[u8], says: &str| {
+        let err = Texture::read(write(name, bytes)).unwrap_err();
+        let message = err.to_string();
+        assert!(
+            message.contains(name) && message.contains(says),
+            "{message}"
+        );
+    };
+    let whole = tga(&rows, true);
+    refused(
+        "short.tga",
+        &whole[..whole.len() - 3],
+        "ends before its last pixel",
+    );
+    refused("header.tga", &whole[..10], "shorter than a TGA header");
+    let mut mapped = whole.clone();
+    mapped[2] = 1;
+    refused("mapped.tga", &mapped, "type 1");
+    refused("t.txt", b"not an image", "PNG or TGA");
+    refused("fake.png", b"not an image", "no PNG");
     // A texture on a mesh without texture coordinates.
     let bare = Mesh::floor(Vec3::ZERO, 1.0).unwrap();
     let model = Model::new(bare, Vec3::ONE).textured(checker());

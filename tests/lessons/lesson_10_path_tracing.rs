@@ -6,7 +6,7 @@
 //! `lesson_10_figures`, `lesson_10_monte_carlo` (step 1), `lesson_10_pages`,
 //! `lesson_10_densities` and `lesson_10_pfm`.
 
-use crate::common::bits;
+use crate::common::{bits, unit_sphere};
 use crate::examples::path_tracing as lesson;
 
 use clap::Parser;
@@ -315,7 +315,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
         "focus"
     );
 
-    let sphere = || Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0).unwrap());
+    let sphere = || Shape::from(unit_sphere());
     let nan =
         Object::emitting(sphere(), Material::BLACK, Vec3::new(1.0, f32::NAN, 1.0));
     assert_eq!(

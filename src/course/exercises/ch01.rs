@@ -1,6 +1,6 @@
 //! Chapter 01, Geometric transformations: coding exercises 1.5 and 1.6.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch01`.
+//! Check them with `cargo test --test exercises ch01`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

@@ -1,6 +1,6 @@
 //! Chapter 02, The ray: coding exercises 2.5 and 2.6.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch02`.
+//! Check them with `cargo test --test exercises ch02`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

@@ -1,6 +1,6 @@
 //! Chapter 03, The orthographic camera: coding exercises 3.5 and 3.6.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch03`.
+//! Check them with `cargo test --test exercises ch03`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

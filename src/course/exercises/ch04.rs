@@ -1,6 +1,6 @@
 //! Chapter 04, Change of basis: coding exercises 4.5 and 4.6.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch04`.
+//! Check them with `cargo test --test exercises ch04`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

@@ -1,6 +1,6 @@
 //! Chapter 05, An arbitrary orthographic camera: coding exercises 5.4 and 5.5.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch05`.
+//! Check them with `cargo test --test exercises ch05`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

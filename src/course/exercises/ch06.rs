@@ -1,6 +1,6 @@
 //! Chapter 06, The pinhole camera: coding exercises 6.3 and 6.4.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch06`.
+//! Check them with `cargo test --test exercises ch06`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

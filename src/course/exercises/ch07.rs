@@ -1,6 +1,6 @@
 //! Chapter 07, Ray/primitive intersections: coding exercises 7.16, 7.17 and 7.18.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch07`.
+//! Check them with `cargo test --test exercises ch07`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

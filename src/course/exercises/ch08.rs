@@ -1,6 +1,6 @@
 //! Chapter 08, Ray casting: coding exercises 8.3 and 8.7.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch08`.
+//! Check them with `cargo test --test exercises ch08`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

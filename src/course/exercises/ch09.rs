@@ -1,6 +1,6 @@
 //! Chapter 09, The rasterization pipeline: coding exercises 9.6 and 9.7.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch09`.
+//! Check them with `cargo test --test exercises ch09`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

@@ -1,6 +1,6 @@
 //! Chapter 10, Path tracing: coding exercises 10.11 and 10.12.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch10`.
+//! Check them with `cargo test --test exercises ch10`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

@@ -1,6 +1,6 @@
 //! Chapter 11, Speed against accuracy: coding exercises 11.4 and 11.6.
 //!
-//! Check them with `cargo test --features exercises --test exercises ch11`.
+//! Check them with `cargo test --test exercises ch11`.
 // The parameters are unused until you write the bodies.
 #![allow(unused_variables)]
 

@@ -21,10 +21,10 @@
 //! (the mistakes each check must catch); boxed, the cases and the harness are
 //! compiled once, in the library.
 //!
-//! This module is compiled without the `exercises` feature too: the default test
-//! suite runs every check against the reference implementation (it must pass) and
-//! against a deliberately wrong one (it must fail with a hint), so a wrong check
-//! fails CI.
+//! The default test suite runs every check against the reference implementation
+//! (it must pass) and against deliberately wrong ones (they must fail with a hint),
+//! so a wrong check fails CI; the student's own tests (`tests/exercises.rs`) run
+//! only when asked for, `cargo test --test exercises`.
 
 use std::any::Any;
 use std::cell::{Cell, RefCell};
@@ -167,7 +167,7 @@ impl Exercise {
         match outcome {
             Outcome::NotStarted => format!(
                 "{head}\nNOT STARTED: replace the todo!() in `{}` in {} with your code,\n  \
-                 then run `cargo test --features exercises --test exercises ch{}`.",
+                 then run `cargo test --test exercises ch{}`.",
                 self.function, self.file, self.chapter
             ),
             other => format!("{head}\n{other}"),
@@ -225,7 +225,7 @@ pub const CASE_TIME_LIMIT: Duration = Duration::from_secs(5);
 /// The environment variable that sets the time limit of every case in whole
 /// seconds, instead of [`CASE_TIME_LIMIT`]: more for a machine much slower than
 /// usual, or while stepping through an answer in a debugger
-/// (`EXERCISE_SECONDS=600 cargo test --features exercises --test exercises ch03`).
+/// (`EXERCISE_SECONDS=600 cargo test --test exercises ch03`).
 pub const TIME_LIMIT_VARIABLE: &str = "EXERCISE_SECONDS";
 
 thread_local! {

@@ -3,18 +3,17 @@
 //! One file per chapter, in which the student writes the functions the lesson is
 //! about, two or more per lesson ([`check::ALL`] lists them).
 //!
-//! The files `chNN.rs` hold the student's functions, each a `todo!()` to begin with;
-//! they are compiled only with the `exercises` feature. [`check`] holds the checks,
-//! which compare an implementation with the crate's reference code and are always
-//! compiled (the default tests run them against the reference and against typical
-//! wrong answers). A check runs the student's function on a thread of its own, each
+//! The files `chNN.rs` hold the student's functions, each a `todo!()` to begin with
+//! (a check says `NOT STARTED` for it, and its test fails). [`check`] holds the
+//! checks, which compare an implementation with the crate's reference code (the
+//! default tests run them against the reference and against typical wrong answers). A check runs the student's function on a thread of its own, each
 //! case within [`harness::CASE_TIME_LIMIT`], and catches its panics. `--mine`
 //! ([`crate::course::mine`]) draws a lesson's picture with a passing function. Check
 //! your work with
 //!
 //! ```text
-//! cargo test --features exercises --test exercises          # every exercise
-//! cargo test --features exercises --test exercises ch03     # chapter 03 only
+//! cargo test --test exercises          # every exercise
+//! cargo test --test exercises ch03     # chapter 03 only
 //! ```
 
 // Each check hands the student's function on boxed, its signature spelled out in
@@ -38,31 +37,19 @@ pub mod ch11_sah_check;
 pub mod check;
 pub mod harness;
 
-#[cfg(feature = "exercises")]
 pub mod ch01;
-#[cfg(feature = "exercises")]
 pub mod ch02;
-#[cfg(feature = "exercises")]
 pub mod ch03;
-#[cfg(feature = "exercises")]
 pub mod ch04;
-#[cfg(feature = "exercises")]
 pub mod ch05;
-#[cfg(feature = "exercises")]
 pub mod ch06;
-#[cfg(feature = "exercises")]
 pub mod ch07;
-#[cfg(feature = "exercises")]
 pub mod ch08;
-#[cfg(feature = "exercises")]
 pub mod ch09;
-#[cfg(feature = "exercises")]
 pub mod ch10;
-#[cfg(feature = "exercises")]
 pub mod ch11;
 
 /// Every exercise checked on the student's code, in book order.
-#[cfg(feature = "exercises")]
 pub fn check_all() -> Vec<(check::Exercise, check::Outcome)> {
     use check::*;
     vec![

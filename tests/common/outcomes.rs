@@ -1,5 +1,5 @@
-//! What the tests of the exercises' checks share.
-#![allow(dead_code)] // each module of the crate uses some of these
+//! What a check of a coding exercise answered (`tests/exercise_checks`): a failure
+//! with a wrong answer and its hint, a panic, or any failure whose hint says something.
 
 use render_lessons::course::exercises::check::{Outcome, Reason};
 

@@ -13,6 +13,8 @@ use glam::{Vec2, Vec3};
 
 use crate::error::{Error, Problem, Result};
 
+mod tga;
+
 /// A texture's texels, linear RGB, row 0 at the top of the image.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Texture {
@@ -24,6 +26,11 @@ pub struct Texture {
 /// Bytes of memory a texel takes once read: the decoder's 4 bytes, and the 12 of its
 /// linear colour.
 const BYTES_PER_TEXEL: u64 = 16;
+
+/// `Ok` if a texture of `texels` texels fits in memory ([`crate::limits::memory`]).
+fn fits(texels: u64) -> Result<()> {
+    crate::limits::memory("texture", texels.saturating_mul(BYTES_PER_TEXEL))
+}
 
 impl Texture {
     /// A `width` x `height` texture of `texels`, row by row from the top, each channel
@@ -52,8 +59,9 @@ impl Texture {
         })
     }
 
-    /// Reads the image file at `path` (PNG or TGA) as a texture, its sRGB colours made
-    /// linear ([`from_srgb8`]). The memory it takes is checked against the machine's
+    /// Reads the image file at `path`, PNG (by [`crate::files::read_png_rgba`]) or TGA
+    /// (by its name's extension), as a texture, its sRGB colours made linear
+    /// ([`from_srgb8`]). The memory it takes is checked against the machine's
     /// ([`crate::limits::memory`]) from the image's size before it is decoded.
     pub fn read(path: impl AsRef<Path>) -> Result<Texture> {
         let path = path.as_ref();
@@ -62,18 +70,27 @@ impl Texture {
             line: None,
             message,
         };
-        let (width, height) =
-            image::image_dimensions(path).map_err(|e| fail(e.to_string()))?;
-        let texels = u64::from(width) * u64::from(height);
-        crate::limits::memory("texture", texels.saturating_mul(BYTES_PER_TEXEL))?;
-        let image = image::open(path)
-            .map_err(|e| fail(e.to_string()))?
-            .to_rgb8();
-        let texels = image
-            .pixels()
-            .map(|p| Vec3::from(p.0.map(from_srgb8)))
-            .collect();
-        Texture::new(width, height, texels)
+        let extension = path.extension().map(|e| e.to_string_lossy().to_lowercase());
+        let (width, height, codes) = match extension.as_deref() {
+            Some("png") => {
+                let (w, h) =
+                    png_size(path).ok_or_else(|| fail("is no PNG image".into()))?;
+                fits(u64::from(w) * u64::from(h))?;
+                let (w, h, rgba) = crate::files::read_png_rgba(path)?;
+                (w, h, rgba.chunks(4).map(|p| [p[0], p[1], p[2]]).collect())
+            }
+            Some("tga") => {
+                let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
+                tga::decode(&bytes, fits, fail)?
+            }
+            _ => {
+                return Err(fail(
+                    "is not named as a PNG or TGA image (.png, .tga)".into(),
+                ));
+            }
+        };
+        let texels = codes.iter().map(|c| Vec3::from(c.map(from_srgb8)));
+        Texture::new(width, height, texels.collect())
     }
 
     /// Width in texels.
@@ -133,4 +150,16 @@ pub fn from_srgb8(code: u8) -> f32 {
     } else {
         ((c + 0.055) / 1.055).powf(2.4)
     }
+}
+
+/// The width and height a PNG file's header (its IHDR chunk, bytes 16 to 24) gives,
+/// read before the image is; `None` if the file is not a PNG.
+fn png_size(path: &Path) -> Option<(u32, u32)> {
+    use std::io::Read;
+    let mut head = [0u8; 24];
+    std::fs::File::open(path).ok()?.read_exact(&mut head).ok()?;
+    let signature = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
+    let word =
+        |k: usize| u32::from_be_bytes([head[k], head[k + 1], head[k + 2], head[k + 3]]);
+    (head[..8] == signature && &head[12..16] == b"IHDR").then(|| (word(16), word(20)))
 }

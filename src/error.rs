@@ -283,6 +283,24 @@ pub fn finite(param: &'static str, value: f32) -> Result<f32> {
     }
 }
 
+/// Every corner of every triangle names one of `vertices` vertices, else a
+/// `Problem::VertexIndex` error naming the first triangle that does not.
+pub fn vertex_indices(triangles: &[[u32; 3]], vertices: usize) -> Result<()> {
+    for (triangle, t) in triangles.iter().enumerate() {
+        if let Some(&index) = t.iter().find(|&&i| i as usize >= vertices) {
+            return Err(Error::Value {
+                param: "triangle",
+                problem: Problem::VertexIndex {
+                    triangle,
+                    index,
+                    vertices,
+                },
+            });
+        }
+    }
+    Ok(())
+}
+
 /// `v` itself if all three components are finite.
 pub fn finite3(param: &'static str, v: Vec3) -> Result<Vec3> {
     if v.is_finite() {

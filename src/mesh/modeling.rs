@@ -6,7 +6,7 @@ use std::f32::consts::PI;
 
 use glam::{Vec2, Vec3};
 
-use crate::error::{Error, Problem, Result, finite3, positive};
+use crate::error::{Error, Problem, Result, finite3, positive, vertex_indices};
 use crate::scene::Object;
 use crate::shapes::{Shape, Triangle};
 
@@ -313,19 +313,7 @@ fn check(positions: &[Vec3], triangles: &[[u32; 3]]) -> Result<()> {
     for p in positions {
         finite3("position", *p)?;
     }
-    for (triangle, t) in triangles.iter().enumerate() {
-        if let Some(&index) = t.iter().find(|&&i| i as usize >= positions.len()) {
-            return Err(Error::Value {
-                param: "triangle",
-                problem: Problem::VertexIndex {
-                    triangle,
-                    index,
-                    vertices: positions.len(),
-                },
-            });
-        }
-    }
-    Ok(())
+    vertex_indices(triangles, positions.len())
 }
 
 /// Area-weighted vertex normals: the cross product (b - a) x (c - a) of a triangle

@@ -16,7 +16,7 @@ use glam::{Vec2, Vec3};
 
 use super::{Aabb, Barycentric, Crossings, Hit, PreparedRay, Triangle};
 use crate::bvh::{Bvh, Crossing};
-use crate::error::{Error, Problem, Result, finite3};
+use crate::error::{Error, Problem, Result, finite3, vertex_indices};
 use crate::ray::{Interval, Ray};
 
 /// A triangle mesh placed in the world, searched through its own BVH.
@@ -75,19 +75,10 @@ impl TriangleMesh {
         if let Some(uv) = uvs.iter().find(|uv| !uv.is_finite()) {
             finite3("uv", uv.extend(0.0))?;
         }
+        vertex_indices(triangles, positions.len())?;
         let mut kept = Vec::with_capacity(triangles.len());
         let mut shapes = Vec::with_capacity(triangles.len());
-        for (triangle, t) in triangles.iter().enumerate() {
-            if let Some(&index) = t.iter().find(|&&i| i as usize >= positions.len()) {
-                return Err(Error::Value {
-                    param: "triangle",
-                    problem: Problem::VertexIndex {
-                        triangle,
-                        index,
-                        vertices: positions.len(),
-                    },
-                });
-            }
+        for t in triangles {
             let [a, b, c] = t.map(|i| positions[i as usize]);
             if let Ok(shape) = Triangle::new(a, b, c) {
                 kept.push(*t);

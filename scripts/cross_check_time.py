@@ -228,17 +228,11 @@ def sweep(out_dir):
 # ---------------------------------------------------------------- outputs
 
 
-def efficiency(rows, who):
-    """RMS error x sqrt(seconds), the error at one second if the error falls as
-    1/sqrt(time): its geometric mean over the renderer's points from 4 spp on."""
-    logs = [math.log(r["rmse"] * math.sqrt(r["seconds"])) for r in rows
-            if r["renderer"] == who and r["spp"] >= 4]
-    return math.exp(sum(logs) / len(logs))
-
-
-def per_sample(rows, who):
-    """RMS error x sqrt(spp): the error of one sample per pixel, the same geometric mean."""
-    logs = [math.log(r["rmse"] * math.sqrt(r["spp"])) for r in rows
+def per_root(rows, who, key):
+    """RMS error x sqrt(row[key]), its geometric mean over the renderer's points from
+    4 spp on. For key "seconds": the error after one second, if the error falls as
+    1/sqrt(time); for key "spp": the error of one sample per pixel."""
+    logs = [math.log(r["rmse"] * math.sqrt(r[key])) for r in rows
             if r["renderer"] == who and r["spp"] >= 4]
     return math.exp(sum(logs) / len(logs))
 
@@ -279,11 +273,11 @@ def write_outputs(out_dir, rows, stamp):
            "| slope of log error against log time | "
            + " | ".join(f"{slope(rows, w):.2f}" for w in renderers) + " |",
            "| error x sqrt(seconds) | "
-           + " | ".join(f"{efficiency(rows, w):.4f}" for w in renderers) + " |",
+           + " | ".join(f"{per_root(rows, w, 'seconds'):.4f}" for w in renderers) + " |",
            "| error x sqrt(samples per pixel) | "
-           + " | ".join(f"{per_sample(rows, w):.4f}" for w in renderers) + " |",
+           + " | ".join(f"{per_root(rows, w, 'spp'):.4f}" for w in renderers) + " |",
            "| time to the crate's error, over the crate's | "
-           + " | ".join(f"{(efficiency(rows, w) / efficiency(rows, 'crate')) ** 2:.2f}"
+           + " | ".join(f"{(per_root(rows, w, 'seconds') / per_root(rows, 'crate', 'seconds')) ** 2:.2f}"
                         for w in renderers) + " |",
            "<!-- ANCHOR_END: summary -->"]
     with open(os.path.join(out_dir, "10_9_error_time.md"), "w") as f:

@@ -5,8 +5,8 @@
 //! - [`compare`]: `close` (a tolerance, any number of components) and `bits` (bit for
 //!   bit, -0 and 0 apart);
 //! - [`fixtures`]: rays, shapes, the slides' camera, the reference closest-hit loop;
-//! - [`random`]: the crate's random stream for every random case, and proptest's
-//!   strategies;
+//! - [`random`]: the crate's random stream for every random case, and `for_cases`,
+//!   the loop a property runs its cases in;
 //! - [`pixels`]: what a diagram draws, counted by colour;
 //! - [`pages`]: the book's pages and the tests' snapshots, read as text;
 //! - [`outcomes`]: what a check of a coding exercise answered (`fails_with`, ...).
@@ -25,4 +25,4 @@ pub use fixtures::{
 };
 pub use outcomes::{fails_hinting, fails_with, panicked};
 pub use pixels::{blue_pixels, red_pixels};
-pub use random::{Rng, direction};
+pub use random::{Rng, for_cases};

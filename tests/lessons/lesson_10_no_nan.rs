@@ -2,10 +2,10 @@
 //! edge-on lights and rays far out nearly parallel to the floor, under any sampling
 //! strategy, in every scene with any flags.
 
+use crate::common;
 use crate::lesson_10_path_tracing::settings;
 
 use glam::Vec3;
-use proptest::prelude::*;
 use render_lessons::pathtrace::{
     Accumulator, PixelSampling, Sampling, Settings, SphereSampling, radiance,
 };
@@ -19,29 +19,30 @@ use render_lessons::spawn::Offset;
 
 // ---------------------------------------------------------------- no NaN
 
-fn any_sampling() -> impl Strategy<Value = Settings> {
-    (0..4usize, any::<bool>(), any::<bool>(), 0..3u32).prop_map(
-        |(s, area, rr, depth)| Settings {
-            sampling: [
-                Sampling::UniformHemisphere,
-                Sampling::Cosine,
-                Sampling::NextEvent,
-                Sampling::Mis,
-            ][s],
-            sphere_lights: if area {
-                SphereSampling::Area
-            } else {
-                SphereSampling::Cone
-            },
-            max_depth: [Some(1), Some(8), None][depth as usize].or(if rr {
-                None
-            } else {
-                Some(8)
-            }),
-            russian_roulette: rr,
-            offset: Offset::Scaled,
+/// Any sampling strategy, sphere-light sampling, depth and roulette.
+fn any_sampling(rng: &mut common::Rng) -> Settings {
+    let (s, area, rr, depth) =
+        (rng.below(0, 4), rng.coin(), rng.coin(), rng.below(0, 3));
+    Settings {
+        sampling: [
+            Sampling::UniformHemisphere,
+            Sampling::Cosine,
+            Sampling::NextEvent,
+            Sampling::Mis,
+        ][s as usize],
+        sphere_lights: if area {
+            SphereSampling::Area
+        } else {
+            SphereSampling::Cone
         },
-    )
+        max_depth: [Some(1), Some(8), None][depth as usize].or(if rr {
+            None
+        } else {
+            Some(8)
+        }),
+        russian_roulette: rr,
+        offset: Offset::Scaled,
+    }
 }
 
 fn all_scenes() -> Vec<Scene> {
@@ -64,33 +65,32 @@ fn assert_finite(scene: &Scene, ray: Ray, s: &Settings, seed: u64) {
     }
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
-
-    #[test]
-    fn radiance_is_finite_for_random_rays(
-        s in any_sampling(),
-        which in 0..4usize,
-        o in (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0),
-        d in (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0),
-        seed in any::<u64>(),
-    ) {
+#[test]
+fn radiance_is_finite_for_random_rays() {
+    common::for_cases(10, 64, |rng| {
+        let s = any_sampling(rng);
+        let which = rng.below(0, 4) as usize;
+        let (o, d, seed) = (rng.point(1.0), rng.point(1.0), rng.bits64());
         let scene = &all_scenes()[which];
         // Origins inside the Cornell box for it, near the origin otherwise.
-        let o = Vec3::from(o);
-        let origin = if which == 0 { Vec3::new(50.0, 40.0, 80.0) + o * Vec3::new(45.0, 38.0, 75.0) } else { o * 0.9 };
-        prop_assume!(Vec3::from(d).length() > 1e-3);
-        assert_finite(scene, Ray::new(origin, Vec3::from(d)).unwrap(), &s, seed);
-    }
+        let origin = if which == 0 {
+            Vec3::new(50.0, 40.0, 80.0) + o * Vec3::new(45.0, 38.0, 75.0)
+        } else {
+            o * 0.9
+        };
+        if d.length() <= 1e-3 {
+            return;
+        }
+        assert_finite(scene, Ray::new(origin, d).unwrap(), &s, seed);
+    });
+}
 
-    #[test]
-    fn radiance_is_finite_for_grazing_rays_and_edge_on_lights(
-        s in any_sampling(),
-        x in 1.0f32..99.0,
-        z in 0.0f32..170.0,
-        t in -1.0f32..1.0,
-        seed in any::<u64>(),
-    ) {
+#[test]
+fn radiance_is_finite_for_grazing_rays_and_edge_on_lights() {
+    common::for_cases(1010, 64, |rng| {
+        let s = any_sampling(rng);
+        let (x, z) = (rng.range(1.0, 99.0), rng.range(0.0, 170.0));
+        let (t, seed) = (rng.range(-1.0, 1.0), rng.bits64());
         let Staged { scene: cornell, .. } = cornell(4, 4).unwrap();
         // In the plane of the ceiling light, along the floor, along the walls.
         let light_y = 81.6 - render_lessons::scenes::path_tracing::CORNELL_LIGHT_GAP;
@@ -102,18 +102,30 @@ proptest! {
             // Tangent to the mirror sphere (centre (27, 16.5, 47), radius 16.5).
             Ray::new(Vec3::new(27.0 + 16.5, 16.5, z), Vec3::new(0.0, t, 1.0)).unwrap(),
             // Through the glass sphere near its rim.
-            Ray::new(Vec3::new(73.0 + 16.5 * t.abs().sqrt(), 16.5, 200.0), -Vec3::Z).unwrap(),
+            Ray::new(
+                Vec3::new(73.0 + 16.5 * t.abs().sqrt(), 16.5, 200.0),
+                -Vec3::Z,
+            )
+            .unwrap(),
         ];
         for ray in rays {
             assert_finite(&cornell, ray, &s, seed);
         }
         let Staged { scene: lights, .. } = two_lights(4, 4).unwrap();
         // Tangent to the small light, and grazing the floor towards both lights.
-        let tangent = Ray::new(Vec3::new(-1.5 + 0.05, 1.0, -3.0), Vec3::new(0.0, t * 1e-3, 1.0)).unwrap();
+        let tangent = Ray::new(
+            Vec3::new(-1.5 + 0.05, 1.0, -3.0),
+            Vec3::new(0.0, t * 1e-3, 1.0),
+        )
+        .unwrap();
         assert_finite(&lights, tangent, &s, seed);
-        let graze = Ray::new(Vec3::new(x - 50.0, 1e-5, z - 85.0), Vec3::new(t, -1e-6, 1.0)).unwrap();
+        let graze = Ray::new(
+            Vec3::new(x - 50.0, 1e-5, z - 85.0),
+            Vec3::new(t, -1e-6, 1.0),
+        )
+        .unwrap();
         assert_finite(&lights, graze, &s, seed);
-    }
+    });
 }
 
 #[test]

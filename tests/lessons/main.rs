@@ -1,5 +1,5 @@
 //! The lessons' claims, one module per lesson topic: each lesson's numbers (insta
-//! snapshots the chapters include), the invariants of its algorithms (proptest), the
+//! snapshots the chapters include), the invariants of its algorithms (random cases), the
 //! STABILITY cases it meets, and its example's flags. Run one lesson with
 //! `cargo test --test lessons lesson_07`.
 //!

@@ -235,6 +235,7 @@ fn same_hits_as_the_list_with_a_plane_and_a_quadric() {
 }
 
 #[test]
+#[ignore = "over 1 s in a debug build: the release suite runs it (.ci/run: `cargo test --release --test course --test lessons -- --ignored`)"]
 fn watertight_through_the_tree_no_leaks_at_vertices_or_edges() {
     for n in [16, 32] {
         let (vertices, indices) = bumpy_sphere(n, n);

@@ -45,6 +45,7 @@ fn last(estimator: Estimator) -> f64 {
 }
 
 #[test]
+#[ignore = "over 1 s in a debug build: the release suite runs it (.ci/run: `cargo test --release --test course --test lessons -- --ignored`)"]
 fn s18_independent_samples_converge_as_n_to_the_minus_one_half() {
     for e in Estimator::INDEPENDENT {
         let c = curve(e);
@@ -66,6 +67,7 @@ fn s18_jittered_samples_converge_faster() {
 }
 
 #[test]
+#[ignore = "over 1 s in a debug build: the release suite runs it (.ci/run: `cargo test --release --test course --test lessons -- --ignored`)"]
 fn every_estimator_gets_better_with_more_samples() {
     for (e, c) in curves() {
         let (first, final_) = (c[0].1, c.last().unwrap().1);

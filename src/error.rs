@@ -325,11 +325,9 @@ pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
     // subnormal or 0: with a few significant bits left, |v| and so v / |v| come out
     // wrong by up to a few parts in a thousand. Dividing by the largest component
     // first changes nothing for a vector of sane length, which skips it.
-    let length2 = v.length_squared();
-    let n = if (f32::MIN_POSITIVE..=f32::MAX).contains(&length2) {
-        v.normalize_or_zero()
-    } else {
-        (v / v.abs().max_element()).normalize_or_zero()
+    let n = match sane_unit(v) {
+        Some((n, _)) => n,
+        None => (v / v.abs().max_element()).normalize_or_zero(),
     };
     if n == Vec3::ZERO {
         Err(Error::Value {
@@ -339,6 +337,18 @@ pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
     } else {
         Ok(n)
     }
+}
+
+/// `v / |v|` and `|v|` for a `v` of sane length, |v|^2 a normal float (so finite and
+/// not zero), as [`unit`] computes them; `None` for any other `v`. For a direction
+/// the renderer makes itself (a shadow ray's, from one point to another), which
+/// needs its length too and no error message: [`unit`] is for user values.
+#[inline]
+pub(crate) fn sane_unit(v: Vec3) -> Option<(Vec3, f32)> {
+    let length2 = v.length_squared();
+    (f32::MIN_POSITIVE..=f32::MAX)
+        .contains(&length2)
+        .then(|| v.normalize_and_length())
 }
 
 /// `value` if it is finite and strictly positive.

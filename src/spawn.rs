@@ -22,6 +22,7 @@
 
 use glam::Vec3;
 
+use crate::error::sane_unit;
 use crate::ray::{Interval, Ray};
 
 /// How a secondary ray avoids its own surface.
@@ -110,8 +111,15 @@ impl Start {
     /// end that S20 measures.
     pub fn ray_to_short_by(self, to: Start, share: f32) -> Option<ShadowRay> {
         let gap = to.point - self.point;
-        let ray = Ray::new(self.point, gap).ok()?;
-        let t_max = (gap.length() - to.t_min) * (1.0 - share);
+        // Its unit direction and its length, from one square root; a gap too short
+        // or too long for that, or not finite, takes `Ray::new`'s checks.
+        let (ray, length) = match sane_unit(gap) {
+            Some((direction, length)) => {
+                (Ray::from_checked(self.point, direction), length)
+            }
+            None => (Ray::new(self.point, gap).ok()?, gap.length()),
+        };
+        let t_max = (length - to.t_min) * (1.0 - share);
         let range = Interval::new(self.t_min, t_max);
         Some(ShadowRay { ray, range })
     }

@@ -5,13 +5,14 @@
 //! It finds what asking every shape of the list for [`Shape::candidate`] in turn
 //! finds, bit for bit: the same tests on the same shapes in the same order, each hit
 //! shrinking the range for the next (so on a tie the earlier shape still wins).
-//! Lesson 08's scene, a floor, three spheres, a box and a triangle, is four runs.
+//! Lesson 08's scene, a floor, three spheres, a box and a triangle, is four runs;
+//! lesson 10's Cornell box, five walls, two balls and the lamp (a quad), is three.
 //! Each kind's test is its own `candidate` ([`Sphere::candidate`] and the rest), the
-//! one the other loops call too. Shapes without a run of their own (quads,
-//! quadrics, cylinders, instances) make runs that ask [`Shape::candidate`], `match`
+//! one the other loops call too. Shapes without a run of their own (quadrics,
+//! cylinders, instances, meshes) make runs that ask [`Shape::candidate`], `match`
 //! and all.
 
-use super::{Aabb, Candidate, Plane, PreparedRay, Shape, Sphere, Triangle};
+use super::{Aabb, Candidate, Plane, PreparedRay, Quad, Shape, Sphere, Triangle};
 use crate::ray::Interval;
 
 /// The shapes of a list in runs of one kind, each run knowing the list index of its
@@ -35,6 +36,7 @@ enum Shapes {
     Planes(Vec<Plane>),
     Boxes(Vec<Aabb>),
     Triangles(Vec<Triangle>),
+    Quads(Vec<Quad>),
     Others(Vec<Shape>),
 }
 
@@ -46,6 +48,7 @@ impl Shapes {
             (Shapes::Planes(v), Shape::Plane(p)) => v.push(*p),
             (Shapes::Boxes(v), Shape::Aabb(b)) => v.push(*b),
             (Shapes::Triangles(v), Shape::Triangle(t)) => v.push(*t),
+            (Shapes::Quads(v), Shape::Quad(q)) => v.push(*q),
             (Shapes::Others(v), shape) if Shapes::of(shape).is_none() => {
                 v.push(shape.clone())
             }
@@ -66,6 +69,7 @@ impl Shapes {
             Shape::Plane(p) => Shapes::Planes(vec![*p]),
             Shape::Aabb(b) => Shapes::Boxes(vec![*b]),
             Shape::Triangle(t) => Shapes::Triangles(vec![*t]),
+            Shape::Quad(q) => Shapes::Quads(vec![*q]),
             _ => return None,
         })
     }
@@ -140,6 +144,9 @@ impl ShapesByKind {
                 Shapes::Triangles(v) => {
                     closest_in(v, first, &mut range, found, |t, r| t.candidate(ray, r))
                 }
+                Shapes::Quads(v) => {
+                    closest_in(v, first, &mut range, found, |q, r| q.candidate(ray, r))
+                }
                 Shapes::Others(v) => {
                     closest_in(v, first, &mut range, found, |s, r| s.candidate(ray, r))
                 }
@@ -156,6 +163,7 @@ impl ShapesByKind {
             Shapes::Planes(v) => v.iter().any(|p| p.candidate(ray, range).is_some()),
             Shapes::Boxes(v) => v.iter().any(|b| b.candidate(ray, range).is_some()),
             Shapes::Triangles(v) => v.iter().any(|t| t.candidate(ray, range).is_some()),
+            Shapes::Quads(v) => v.iter().any(|q| q.candidate(ray, range).is_some()),
             Shapes::Others(v) => v.iter().any(|s| s.candidate(ray, range).is_some()),
         })
     }

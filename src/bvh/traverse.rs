@@ -16,6 +16,8 @@
 
 use std::ops::Range;
 
+use arrayvec::ArrayVec;
+
 use crate::bvh::slab::{BoxRay, both_entries, box_entry};
 use crate::bvh::{Bvh, MAX_DEPTH};
 use crate::float::gamma;
@@ -224,8 +226,7 @@ impl Bvh {
         if box_entry((root.min, root.max), box_ray, range).is_none() {
             return;
         }
-        let mut stack = [(0u32, 0u32, 0.0f32); MAX_DEPTH];
-        let mut pending = 0;
+        let mut stack = ArrayVec::<(u32, u32, f32), MAX_DEPTH>::new();
         let (mut first, mut count) = (root.first, root.count);
         loop {
             if count > 0 {
@@ -241,8 +242,7 @@ impl Bvh {
                         let (near, far, t_far) =
                             if a <= b { (0, 1, b) } else { (1, 0, a) };
                         let (f, c) = node.packed(far);
-                        stack[pending] = (f, c, t_far);
-                        pending += 1;
+                        stack.push((f, c, t_far));
                         Some(near)
                     }
                     [Some(_), None] => Some(0),
@@ -255,11 +255,9 @@ impl Bvh {
                 }
             }
             (first, count) = loop {
-                if pending == 0 {
+                let Some((f, c, t_entry)) = stack.pop() else {
                     return;
-                }
-                pending -= 1;
-                let (f, c, t_entry) = stack[pending];
+                };
                 if t_entry <= range.max {
                     break (f, c);
                 }

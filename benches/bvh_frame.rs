@@ -1,8 +1,8 @@
 //! One or more frames of the BVH bench's near view (or its far one; 480 x 270 unless
-//! told) on one thread, through this crate's tree, obvhs's `Bvh2` or Embree, each tree built
-//! before the frames: what `valgrind --tool=callgrind` counts in
-//! `scripts/instructions-per-ray --bvh`, which runs it for 1 and 2 frames and divides
-//! the difference by the number of rays.
+//! told) on one thread, through this crate's tree, obvhs's `Bvh2` or Embree, each
+//! tree built before the frames: what `valgrind --tool=callgrind` counts in
+//! `scripts/instructions-per-ray --bvh` (`--far` for the far view), which runs it for
+//! 1 and 2 frames and divides the difference by the number of rays.
 //!
 //!     cargo build --release -p render-benches --bin bvh-frame
 //!     target/release/bvh-frame TREE [WIDTH HEIGHT [FRAMES [near|far]]]

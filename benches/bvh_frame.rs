@@ -1,11 +1,11 @@
-//! One or more frames of the BVH bench's near view (480 x 270 unless told) on one
-//! thread, through this crate's tree, obvhs's `Bvh2` or Embree, each tree built
-//! before the frames: what `valgrind --tool=callgrind` counts in
-//! `scripts/instructions-per-ray --bvh`, which runs it for 1 and 2 frames and divides
-//! the difference by the number of rays.
+//! One or more frames of the BVH bench's near view (or its far one; 480 x 270 unless
+//! told) on one thread, through this crate's tree, obvhs's `Bvh2` or Embree, each
+//! tree built before the frames: what `valgrind --tool=callgrind` counts in
+//! `scripts/instructions-per-ray --bvh` (`--far` for the far view), which runs it for
+//! 1 and 2 frames and divides the difference by the number of rays.
 //!
 //!     cargo build --release -p render-benches --bin bvh-frame
-//!     target/release/bvh-frame TREE [WIDTH HEIGHT [FRAMES]]
+//!     target/release/bvh-frame TREE [WIDTH HEIGHT [FRAMES [near|far]]]
 //!     target/release/bvh-frame check [WIDTH HEIGHT]
 //!
 //! TREE is `ours` (`BvhScene::closest_object`), `obvhs` (`Bvh2::ray_traverse` with
@@ -21,7 +21,7 @@ use obvhs::ray::RayHit;
 use render_benches::args::{self, number};
 use render_benches::embree::{self, Agreement, EmbreeMesh, flat_rays};
 use render_benches::mesh_view::{
-    NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_mesh, sphere_scene,
+    FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_mesh, sphere_scene,
 };
 use render_lessons::ray::Interval;
 use render_lessons::scene::BvhScene;
@@ -36,22 +36,29 @@ fn main() -> ExitCode {
 
 fn run(args: Vec<String>) -> Result<String, String> {
     let tree = args.first().map(String::as_str).unwrap_or_default();
-    if !["ours", "obvhs", "embree", "check"].contains(&tree) || args.len() > 4 {
+    if !["ours", "obvhs", "embree", "check"].contains(&tree) || args.len() > 5 {
         return Err(format!(
-            "usage: bvh-frame ours|obvhs|embree [WIDTH HEIGHT [FRAMES]], or check [WIDTH HEIGHT] \
-             (TREE was '{tree}')"
+            "usage: bvh-frame ours|obvhs|embree [WIDTH HEIGHT [FRAMES [near|far]]], or check \
+             [WIDTH HEIGHT] (TREE was '{tree}')"
         ));
     }
     let width = number(&args, 1, "WIDTH", 480)?;
     let height = number(&args, 2, "HEIGHT", 270)?;
     let frames = number(&args, 3, "FRAMES", 1)?;
+    let distance = match args.get(4).map(String::as_str) {
+        None | Some("near") => NEAR,
+        Some("far") => FAR,
+        Some(other) => {
+            return Err(format!("CAMERA must be near or far, not '{other}'"));
+        }
+    };
     if u64::from(width) * u64::from(height) > MAX_RAYS {
         return Err(format!(
             "WIDTH x HEIGHT must be at most {MAX_RAYS} rays (they are kept in memory), not {width} x {height}"
         ));
     }
     let scene = sphere_scene(224);
-    let rays = rays(&camera(width, height, NEAR));
+    let rays = rays(&camera(width, height, distance));
     let mut hits = 0;
     if tree == "check" || tree == "embree" {
         let mesh = EmbreeMesh::new(&sphere_mesh(224));

@@ -46,6 +46,12 @@ impl BoxRay {
             finite: inv_d.is_finite(),
         }
     }
+
+    /// True if 1/d is finite on every axis: the ray is parallel to no axis.
+    #[inline(always)]
+    pub fn finite(&self) -> bool {
+        self.finite
+    }
 }
 
 /// The conservative slab test of a box given by its corners: the entry
@@ -112,15 +118,16 @@ fn enter(near: f32, far: f32, range: Interval) -> Option<f32> {
 /// swapping the halves of their distances pairs each child's min plane with its max
 /// plane, so one `min` and one `max` give both children's nearer and farther plane
 /// on that axis, in lanes 0 and 1.
+///
+/// For a ray whose 1/d is finite on every axis ([`BoxRay::finite`]); the walk
+/// chooses this test or [`both_entries_careful`] once per ray.
 #[inline(always)]
 pub(super) fn both_entries(
     node: &Node,
     ray: &BoxRay,
     range: Interval,
 ) -> [Option<f32>; 2] {
-    if !ray.finite {
-        return [0, 1].map(|i| box_entry_careful(node.corners(i), ray, range));
-    }
+    debug_assert!(ray.finite);
     let [x, y, z] = node.planes();
     let ends = |planes: Vec4, (o, inv_d): (Vec4, Vec4)| {
         let t = (planes - o) * inv_d;
@@ -143,6 +150,16 @@ pub(super) fn both_entries(
     ]
 }
 // ANCHOR_END: both_entries
+
+/// [`both_entries`] for a ray with an infinite 1/d: each box by
+/// [`box_entry_careful`].
+pub(super) fn both_entries_careful(
+    node: &Node,
+    ray: &BoxRay,
+    range: Interval,
+) -> [Option<f32>; 2] {
+    [0, 1].map(|i| box_entry_careful(node.corners(i), ray, range))
+}
 
 #[cfg(test)]
 mod tests {
@@ -215,7 +232,12 @@ mod tests {
             let node = Node::new(boxes, [Child::Node(0); 2]);
             let box_ray = BoxRay::new(&ray);
             let each = [0, 1].map(|i| box_entry(node.corners(i), &box_ray, range));
-            assert_eq!(both_entries(&node, &box_ray, range), each, "case {n}");
+            let both = if box_ray.finite() {
+                both_entries(&node, &box_ray, range)
+            } else {
+                both_entries_careful(&node, &box_ray, range)
+            };
+            assert_eq!(both, each, "case {n}");
             compared += 1;
             entered += each.iter().flatten().count();
         }

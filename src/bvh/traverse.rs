@@ -16,8 +16,10 @@
 
 use std::ops::Range;
 
-use crate::bvh::slab::{BoxRay, both_entries, box_entry};
-use crate::bvh::{Bvh, MAX_DEPTH};
+use arrayvec::ArrayVec;
+
+use crate::bvh::slab::{BoxRay, both_entries, both_entries_careful, box_entry};
+use crate::bvh::{Bvh, MAX_DEPTH, Node};
 use crate::float::gamma;
 use crate::ray::{Interval, Ray};
 
@@ -206,27 +208,44 @@ impl Bvh {
     /// [`Bvh::primitives`]) to `leaf`, which answers with the far end to use from
     /// then on, or [`Walk::Stop`].
     ///
-    /// `(first, count)` is the child being visited, packed as a node stores it (a
-    /// leaf if `count > 0`, else node `first`), its box already known to be hit;
-    /// `stack` holds the farther children still to visit, packed the same way, each
-    /// with its entry distance. A pushed child whose entry now lies beyond `t_max` is
-    /// dropped when popped.
+    /// The node test is chosen here, once per ray: [`both_entries`], or, for a ray
+    /// parallel to an axis (1/d infinite), [`both_entries_careful`]. Each choice
+    /// gets its own copy of the loop ([`Bvh::walk_from`]), which then never asks.
     fn walk(
         &self,
         box_ray: &BoxRay,
         range: Interval,
-        mut leaf: impl FnMut(Range<usize>) -> Walk,
+        leaf: impl FnMut(Range<usize>) -> Walk,
     ) {
         let Some(root) = &self.root else {
             return;
         };
-        let mut range = range;
         if box_entry((root.min, root.max), box_ray, range).is_none() {
             return;
         }
-        let mut stack = [(0u32, 0u32, 0.0f32); MAX_DEPTH];
-        let mut pending = 0;
-        let (mut first, mut count) = (root.first, root.count);
+        let root = (root.first, root.count);
+        if box_ray.finite() {
+            self.walk_from(root, box_ray, range, leaf, both_entries);
+        } else {
+            self.walk_from(root, box_ray, range, leaf, both_entries_careful);
+        }
+    }
+
+    /// The walk from the child `(first, count)`, packed as a node stores it (a leaf
+    /// if `count > 0`, else node `first`), its box already known to be hit, with
+    /// `entries` as the node test. `stack` holds the farther children still to
+    /// visit, packed the same way, each with its entry distance. A pushed child
+    /// whose entry now lies beyond `t_max` is dropped when popped.
+    #[inline(always)]
+    fn walk_from(
+        &self,
+        (mut first, mut count): (u32, u32),
+        box_ray: &BoxRay,
+        mut range: Interval,
+        mut leaf: impl FnMut(Range<usize>) -> Walk,
+        entries: impl Fn(&Node, &BoxRay, Interval) -> [Option<f32>; 2],
+    ) {
+        let mut stack = ArrayVec::<(u32, u32, f32), MAX_DEPTH>::new();
         loop {
             if count > 0 {
                 let first = first as usize;
@@ -236,13 +255,12 @@ impl Bvh {
                 }
             } else {
                 let node = &self.nodes[first as usize];
-                let next = match both_entries(node, box_ray, range) {
+                let next = match entries(node, box_ray, range) {
                     [Some(a), Some(b)] => {
                         let (near, far, t_far) =
                             if a <= b { (0, 1, b) } else { (1, 0, a) };
                         let (f, c) = node.packed(far);
-                        stack[pending] = (f, c, t_far);
-                        pending += 1;
+                        stack.push((f, c, t_far));
                         Some(near)
                     }
                     [Some(_), None] => Some(0),
@@ -255,11 +273,9 @@ impl Bvh {
                 }
             }
             (first, count) = loop {
-                if pending == 0 {
+                let Some((f, c, t_entry)) = stack.pop() else {
                     return;
-                }
-                pending -= 1;
-                let (f, c, t_entry) = stack[pending];
+                };
                 if t_entry <= range.max {
                     break (f, c);
                 }

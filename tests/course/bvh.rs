@@ -317,3 +317,28 @@ fn same_hits_as_the_list_with_capped_cylinders() {
     let hits = assert_same_answers(&scene, &rays);
     assert!(hits > 1500, "{hits} hits");
 }
+
+/// A path's ray of lesson 10's reference render (160 x 120, 512 MIS samples per
+/// pixel) that starts between the lamp and the ceiling and meets the lamp's back at
+/// its edge (z = 65.6499, the lamp's smallest z). The lamp's test rounds o + t d and
+/// takes the point as inside; the lamp's box is flat, and an exact slab test of it
+/// misses the ray by a hair. The tree grows every box by `BOX_MARGIN`, so it finds
+/// the lamp as the list does (it used to find the wall behind it).
+#[test]
+fn the_tree_finds_a_grazing_hit_on_the_lamps_edge_as_the_list_does() {
+    let cornell = render_lessons::scenes::path_tracing::cornell(160, 120)
+        .unwrap()
+        .scene;
+    let ray = Ray::new(
+        Vec3::new(56.75864, 81.598045, 65.62817),
+        Vec3::new(0.5477776, -0.7622769, 0.3447807),
+    )
+    .unwrap();
+    let list = cornell.closest(&ray, Interval::AHEAD).unwrap();
+    assert_eq!(
+        (list.object, list.hit.t),
+        (7, 0.06303474),
+        "the lamp, just ahead"
+    );
+    assert_same_answers(&cornell, &[ray]);
+}

@@ -40,19 +40,27 @@ pub enum ListOrTree {
 impl ListOrTree {
     // ANCHOR: choice
     /// `scene` as a plain list, or through a BVH (built under a spinner), whichever
-    /// costs fewer instructions for `rays` rays: n primitives cost the list
-    /// rays x n x [`TEST_COST`] and the tree n x [`BUILD_COST`] + rays x
-    /// [`WALK_COST`]. The list wins only for a handful of primitives or of rays.
+    /// costs fewer instructions for `rays` rays. Of n primitives, b have a box and
+    /// go into the tree; the other n - b (planes, quadrics) are tested on every ray
+    /// either way. The list costs rays x n x [`TEST_COST`]; the tree b x
+    /// [`BUILD_COST`] + rays x ([`WALK_COST`] + (n - b) x [`TEST_COST`]). The list
+    /// wins for a handful of boxed primitives or of rays.
     pub fn new(scene: Scene, rays: u64) -> ListOrTree {
         let n = scene.objects().len() as u64;
+        let boxed = scene
+            .objects()
+            .iter()
+            .filter(|o| o.shape.bounds().is_some());
+        let b = boxed.count() as u64;
         let list = rays.saturating_mul(n).saturating_mul(TEST_COST);
-        let tree = n
+        let per_ray = WALK_COST.saturating_add((n - b).saturating_mul(TEST_COST));
+        let tree = b
             .saturating_mul(BUILD_COST)
-            .saturating_add(rays.saturating_mul(WALK_COST));
+            .saturating_add(rays.saturating_mul(per_ray));
         if list <= tree {
             return ListOrTree::List(scene);
         }
-        let message = format!("building a BVH over {n} primitives");
+        let message = format!("building a BVH over {b} primitives");
         ListOrTree::Tree(progress::spinner(message, || BvhScene::new(scene)))
     }
     // ANCHOR_END: choice

@@ -74,12 +74,7 @@ impl Rng {
     /// normalised.
     pub fn rotation(&mut self) -> Quat {
         loop {
-            let q = Quat::from_xyzw(
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            );
+            let q = Quat::from_vec4(self.point(1.0).extend(self.range(-1.0, 1.0)));
             if q.length_squared() > 1e-2 {
                 return q.normalize();
             }

@@ -67,11 +67,12 @@ fn assert_finite(scene: &Scene, ray: Ray, s: &Settings, seed: u64) {
 
 #[test]
 fn radiance_is_finite_for_random_rays() {
+    let scenes = all_scenes();
     common::for_cases(10, 64, |rng| {
         let s = any_sampling(rng);
         let which = rng.below(0, 4) as usize;
         let (o, d, seed) = (rng.point(1.0), rng.point(1.0), rng.bits64());
-        let scene = &all_scenes()[which];
+        let scene = &scenes[which];
         // Origins inside the Cornell box for it, near the origin otherwise.
         let origin = if which == 0 {
             Vec3::new(50.0, 40.0, 80.0) + o * Vec3::new(45.0, 38.0, 75.0)
@@ -87,11 +88,12 @@ fn radiance_is_finite_for_random_rays() {
 
 #[test]
 fn radiance_is_finite_for_grazing_rays_and_edge_on_lights() {
+    let Staged { scene: cornell, .. } = cornell(4, 4).unwrap();
+    let Staged { scene: lights, .. } = two_lights(4, 4).unwrap();
     common::for_cases(1010, 64, |rng| {
         let s = any_sampling(rng);
         let (x, z) = (rng.range(1.0, 99.0), rng.range(0.0, 170.0));
         let (t, seed) = (rng.range(-1.0, 1.0), rng.bits64());
-        let Staged { scene: cornell, .. } = cornell(4, 4).unwrap();
         // In the plane of the ceiling light, along the floor, along the walls.
         let light_y = 81.6 - render_lessons::scenes::path_tracing::CORNELL_LIGHT_GAP;
         let rays = [
@@ -111,7 +113,6 @@ fn radiance_is_finite_for_grazing_rays_and_edge_on_lights() {
         for ray in rays {
             assert_finite(&cornell, ray, &s, seed);
         }
-        let Staged { scene: lights, .. } = two_lights(4, 4).unwrap();
         // Tangent to the small light, and grazing the floor towards both lights.
         let tangent = Ray::new(
             Vec3::new(-1.5 + 0.05, 1.0, -3.0),

@@ -270,5 +270,7 @@ mod tests {
             let failure = Failure::Exercise { report };
             assert!(matches!(if_passing(Err::<(), _>(failure)), Ok(None)));
         }
+        // A passing exercise's function is handed on, to draw its picture.
+        assert!(matches!(if_passing(Ok::<u8, Failure>(7)), Ok(Some(7))));
     }
 }

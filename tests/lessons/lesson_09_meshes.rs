@@ -206,7 +206,7 @@ fn obj_files() {
 }
 
 #[test]
-fn obj_files_with_nothing_to_draw_are_refused_and_degenerate_triangles_counted() {
+fn obj_degenerate_triangles_are_skipped_and_counted() {
     let (_dir, write) = scratch();
     // One triangle with area, one whose corners lie on a line: the mesh keeps the
     // first only, and the count says so.

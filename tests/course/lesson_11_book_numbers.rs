@@ -238,3 +238,46 @@ fn chart_5_exercise_ratio_follows_the_fragment() {
     let ratio = variance("cosine") / variance("light cone");
     assert_eq!(format!("{ratio:.1e}"), "1.7e5");
 }
+
+/// Page 11_2 reads chart 9's fit through the committed run's first and last rows as
+/// it comes out: the robust caster's per-ray cost positive, the plain caster's
+/// negative, because a primitive adds less to a plain ray between the first two rows
+/// than between the last two (the plain time is not quite a line).
+#[test]
+fn chart_9s_per_ray_costs_are_what_page_11_2_reads_from_them() {
+    let fragment = crate::common::pages::read("chapters/figures/11_9_tax.md");
+    let between = |anchor: &str| {
+        let start = format!("ANCHOR: {anchor} -->");
+        let rest = fragment.split(start.as_str()).nth(1).unwrap();
+        rest.split("<!--").next().unwrap().trim().to_string()
+    };
+    let number = |anchor: &str| between(anchor).parse::<f64>().unwrap();
+    let page = crate::common::pages::page("11_2_robustness_tax.md");
+    assert!(page.contains("A negative time is no cost"));
+    assert!(
+        number("per_ray_plain") < 0.0,
+        "{}",
+        between("per_ray_plain")
+    );
+    assert!(
+        number("per_ray_robust") > 0.0,
+        "{}",
+        between("per_ray_robust")
+    );
+    // (primitives, plain ns per ray) of each row.
+    let rows: Vec<(f64, f64)> = between("tax_rows")
+        .lines()
+        .filter(|l| l.starts_with('|'))
+        .map(|row| {
+            let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+            (cells[1].parse().unwrap(), cells[3].parse().unwrap())
+        })
+        .collect();
+    let per_primitive = |a: (f64, f64), b: (f64, f64)| (b.1 - a.1) / (b.0 - a.0);
+    let n = rows.len();
+    assert!(n >= 3, "{rows:?}");
+    assert!(
+        per_primitive(rows[0], rows[1]) < per_primitive(rows[n - 2], rows[n - 1]),
+        "{rows:?}"
+    );
+}

@@ -64,8 +64,7 @@ fn very_short_and_very_long_directions_are_normalised_not_refused() {
     // |d| underflows (1e-30 squared is 0 in f32) or overflows (3e38 squared is
     // infinite): the direction is still well defined, and Ray::new scales it first.
     let diagonal = Vec3::splat(1.0 / 3f32.sqrt());
-    // Between them, 3e-22 squared is subnormal but not 0: without the rescaling its
-    // length came out 1.8e-3 too long.
+    // Between them, 3e-22 squared is subnormal but not 0 (checked below).
     for d in [
         Vec3::splat(1e-30),
         Vec3::splat(3e-22),
@@ -75,6 +74,14 @@ fn very_short_and_very_long_directions_are_normalised_not_refused() {
         let ray = Ray::new(Vec3::ZERO, d).unwrap();
         assert!((ray.direction() - diagonal).length() < 1e-6, "{d}");
     }
+    // The page's "components under about 1e-19": below sqrt(f32::MIN_POSITIVE) a
+    // component's square is no longer a normal f32; and "off by parts in a thousand":
+    // 3e-22's length, computed plainly from its squares, is 1.8e-3 too short (the
+    // squares lose bits as subnormals).
+    assert!((f32::MIN_POSITIVE.sqrt() / 1.08e-19 - 1.0).abs() < 0.01);
+    let short = Vec3::splat(3e-22);
+    let plain = f64::from(short.dot(short).sqrt()) / (3e-22 * 3f64.sqrt());
+    assert!((1.5e-3..2.0e-3).contains(&(1.0 - plain)), "{plain}");
     for scale in [3e38, 3e-22] {
         let tilted = Ray::new(Vec3::ZERO, Vec3::new(scale, scale, 0.0)).unwrap();
         let expected = Vec3::new(1.0, 1.0, 0.0).normalize();

@@ -433,3 +433,40 @@ fn far_sphere_furnace_is_0_8_from_near_and_far() {
         );
     }
 }
+
+/// Page 08_1: "The acne spares the box and the floor." Of the pixels of lesson 08's
+/// far image that the fixed epsilon changes (by more than two levels of 255 in a
+/// channel, as the lesson counts them), those on the box or the floor are changed
+/// the same with the scaled offset (moving the scene changed them, not the epsilon);
+/// every other shows a sphere or the triangle.
+#[test]
+fn the_acne_of_the_fixed_epsilon_spares_the_box_and_the_floor() {
+    use crate::examples::ray_casting as lesson;
+    use render_lessons::scenes::{STILL_LIFE_OBJECTS, still_life, still_life_cameras};
+    let ((width, height), far) = ((480, 270), Vec3::new(1e4, 0.0, 0.0));
+    let images = lesson::images((width, height), 1e-4, far).unwrap();
+    let scene = still_life(far).unwrap();
+    let [_, camera] = still_life_cameras(width, height, far).unwrap();
+    let (mut acne, mut moved) = (0, 0);
+    for y in 0..height {
+        for x in 0..width {
+            let clean = images.lambert.get(x, y).unwrap();
+            let fixed = images.far_fixed_epsilon.get(x, y).unwrap();
+            if (clean - fixed).abs().max_element() <= 2.0 / 255.0 {
+                continue;
+            }
+            let object = scene.closest_object(&camera.ray(x, y), Interval::AHEAD);
+            let shows = object.map_or("the sky", |i| STILL_LIFE_OBJECTS[i]);
+            if ["box", "floor"].contains(&shows) {
+                let scaled = images.far_scaled_offset.get(x, y).unwrap();
+                assert_eq!(fixed, scaled, "({x}, {y}): {shows}");
+                moved += 1;
+            } else {
+                acne += 1;
+            }
+        }
+    }
+    // The page's 2797 pixels (the acne snapshot counts them): three on the box and
+    // the floor, which the scaled offset's 8 include.
+    assert_eq!((acne, moved), (2794, 3));
+}

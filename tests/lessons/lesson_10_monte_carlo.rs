@@ -89,7 +89,7 @@ fn the_monte_carlo_page_quotes_its_snapshot() {
     assert_quotes(page, "and 0.9493 around", hi);
     assert_quotes(
         page,
-        "$\\sigma = 0.8928$ (64 runs",
+        "$\\sigma = 0.8928$ (an RMSE over 64 runs",
         after(&snap, "sample = "),
     );
     assert_quotes(page, "fitted slope is −0.511", after(&snap, "log N: "));

@@ -185,3 +185,41 @@ fn each_step_figure_is_what_its_command_writes() {
         assert!(written == step.render(32, 24).unwrap(), "{}", step.file);
     }
 }
+
+/// Page 10_2: "The ceiling is darker and noisier than the floor" in step 2's render
+/// (`10_step_uniform.png`, the committed figure), read pixel by pixel: the ceiling's
+/// pixels (where the camera's ray meets it first) have a lower mean and a larger
+/// spread relative to their mean than the floor's.
+#[test]
+fn in_the_naive_render_the_ceiling_is_darker_and_noisier_than_the_floor() {
+    use render_lessons::files::read_png_rgba;
+    use render_lessons::ray::Interval;
+    use render_lessons::texture::from_srgb8;
+    let path = std::path::Path::new("chapters/figures/10_step_uniform.png");
+    let (width, height, rgba) = read_png_rgba(path).unwrap();
+    let Staged { scene, camera } = cornell(width, height).unwrap();
+    // Objects 3 and 4 of the Cornell box are the floor and the ceiling.
+    let (mut floor, mut ceiling) = (Vec::new(), Vec::new());
+    for y in 0..height {
+        for x in 0..width {
+            let i = 4 * (y * width + x) as usize;
+            let linear = |k: usize| f64::from(from_srgb8(rgba[i + k]));
+            let value = (0..3).map(linear).sum::<f64>() / 3.0;
+            match scene.closest_object(&camera.ray(x, y), Interval::AHEAD) {
+                Some(3) => floor.push(value),
+                Some(4) => ceiling.push(value),
+                _ => {}
+            }
+        }
+    }
+    let stats = |v: &[f64]| {
+        let mean = v.iter().sum::<f64>() / v.len() as f64;
+        let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / v.len() as f64;
+        (v.len(), mean, var.sqrt() / mean)
+    };
+    eprintln!("floor {:?} ceiling {:?}", stats(&floor), stats(&ceiling));
+    let ((nf, mf, rf), (nc, mc, rc)) = (stats(&floor), stats(&ceiling));
+    assert!(nf > 500 && nc > 500, "{nf} {nc}");
+    assert!(mc < mf, "mean: ceiling {mc}, floor {mf}");
+    assert!(rc > rf, "spread / mean: ceiling {rc}, floor {rf}");
+}

@@ -321,34 +321,32 @@ pub fn finite3(param: &'static str, v: Vec3) -> Result<Vec3> {
 /// rejected as having zero length.
 pub fn unit(param: &'static str, v: Vec3) -> Result<Vec3> {
     let v = finite3(param, v)?;
+    unit_and_length(v).map(|(n, _)| n).ok_or(Error::Value {
+        param,
+        problem: Problem::ZeroLength,
+    })
+}
+
+/// `v / |v|` and `|v|`, from one square root, for a finite non-zero `v`; `None` for
+/// any other. What [`unit`] computes, for a vector the renderer makes itself (a
+/// shadow ray's gap between two points), which needs its length too and no error
+/// message.
+#[inline]
+pub(crate) fn unit_and_length(v: Vec3) -> Option<(Vec3, f32)> {
+    let length2 = v.length_squared();
+    if (f32::MIN_POSITIVE..=f32::MAX).contains(&length2) {
+        return Some(v.normalize_and_length());
+    }
     // |v|^2 overflows past about 1.8e19 per component, and below about 1e-19 it is
     // subnormal or 0: with a few significant bits left, |v| and so v / |v| come out
     // wrong by up to a few parts in a thousand. Dividing by the largest component
-    // first changes nothing for a vector of sane length, which skips it.
-    let n = match sane_unit(v) {
-        Some((n, _)) => n,
-        None => (v / v.abs().max_element()).normalize_or_zero(),
-    };
-    if n == Vec3::ZERO {
-        Err(Error::Value {
-            param,
-            problem: Problem::ZeroLength,
-        })
-    } else {
-        Ok(n)
+    // first, whose scaled length is then between 1 and sqrt(3), avoids both.
+    let largest = v.abs().max_element();
+    if !v.is_finite() || largest == 0.0 {
+        return None;
     }
-}
-
-/// `v / |v|` and `|v|` for a `v` of sane length, |v|^2 a normal float (so finite and
-/// not zero), as [`unit`] computes them; `None` for any other `v`. For a direction
-/// the renderer makes itself (a shadow ray's, from one point to another), which
-/// needs its length too and no error message: [`unit`] is for user values.
-#[inline]
-pub(crate) fn sane_unit(v: Vec3) -> Option<(Vec3, f32)> {
-    let length2 = v.length_squared();
-    (f32::MIN_POSITIVE..=f32::MAX)
-        .contains(&length2)
-        .then(|| v.normalize_and_length())
+    let (n, length) = (v / largest).normalize_and_length();
+    Some((n, length * largest))
 }
 
 /// `value` if it is finite and strictly positive.
@@ -398,7 +396,25 @@ mod tests {
                     (n.as_dvec3() - exact).length() < 1e-6,
                     "{w}: {n} against {exact}"
                 );
+                // The length too (a shadow ray's): right to 1e-6 wherever it is a
+                // normal f32 (at 1e-45 it is itself a subnormal, with one bit).
+                let (m, length) = unit_and_length(w).unwrap();
+                let exact = w.as_dvec3().length();
+                assert_eq!(m, n, "{w}");
+                if exact >= f64::from(f32::MIN_POSITIVE) {
+                    assert!(
+                        (f64::from(length) / exact - 1.0).abs() < 1e-6,
+                        "{w}: {length} against {exact}"
+                    );
+                }
             }
+        }
+        for v in [
+            Vec3::ZERO,
+            Vec3::new(f32::NAN, 1.0, 0.0),
+            Vec3::Y * f32::INFINITY,
+        ] {
+            assert_eq!(unit_and_length(v), None, "{v}");
         }
         assert_eq!(
             unit("v", Vec3::ZERO),

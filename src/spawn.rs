@@ -22,7 +22,7 @@
 
 use glam::Vec3;
 
-use crate::error::sane_unit;
+use crate::error::unit_and_length;
 use crate::ray::{Interval, Ray};
 
 /// How a secondary ray avoids its own surface.
@@ -110,15 +110,10 @@ impl Start {
     /// [`SHADOW_EPSILON`]: 0 is the end at the light's error bound alone, the naive
     /// end that S20 measures.
     pub fn ray_to_short_by(self, to: Start, share: f32) -> Option<ShadowRay> {
-        let gap = to.point - self.point;
-        // Its unit direction and its length, from one square root; a gap too short
-        // or too long for that, or not finite, takes `Ray::new`'s checks.
-        let (ray, length) = match sane_unit(gap) {
-            Some((direction, length)) => {
-                (Ray::from_checked(self.point, direction), length)
-            }
-            None => (Ray::new(self.point, gap).ok()?, gap.length()),
-        };
+        // The gap's unit direction and its length, from one square root; none for
+        // two points that coincide or are not finite (a finite gap has finite ends).
+        let (direction, length) = unit_and_length(to.point - self.point)?;
+        let ray = Ray::from_checked(self.point, direction);
         let t_max = (length - to.t_min) * (1.0 - share);
         let range = Interval::new(self.t_min, t_max);
         Some(ShadowRay { ray, range })

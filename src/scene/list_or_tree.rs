@@ -47,11 +47,11 @@ impl ListOrTree {
     /// wins for a handful of boxed primitives or of rays.
     pub fn new(scene: Scene, rays: u64) -> ListOrTree {
         let n = scene.objects().len() as u64;
-        let boxed = scene
+        let b = scene
             .objects()
             .iter()
-            .filter(|o| o.shape.bounds().is_some());
-        let b = boxed.count() as u64;
+            .filter(|o| o.shape.bounds().is_some())
+            .count() as u64;
         let list = rays.saturating_mul(n).saturating_mul(TEST_COST);
         let per_ray = WALK_COST.saturating_add((n - b).saturating_mul(TEST_COST));
         let tree = b

@@ -81,11 +81,8 @@ fn in_the_books_run_the_tree_wins_every_row_and_builds_in_under_a_frame_but_the_
         );
     }
     let (first, last) = (ran[0], ran[ran.len() - 1]);
-    let growth = |a: f64, b: f64| b / a;
-    let (list_growth, tree_growth) = (
-        growth(first.1.unwrap(), last.1.unwrap()),
-        growth(first.2, last.2),
-    );
+    let list_growth = last.1.unwrap() / first.1.unwrap();
+    let tree_growth = last.2 / first.2;
     assert!(
         list_growth > 100.0 * tree_growth,
         "{list_growth} {tree_growth}"

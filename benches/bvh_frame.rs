@@ -14,8 +14,12 @@
 //! with the crate's on the frame's rays (`embree::Agreement`, as the bench does
 //! before it times them) and fails when they differ; without Embree it says so and
 //! passes, as `.ci/run` runs it on machines with and without it.
+//!
+//! The line it prints ends with the time the frames took, the tree's build left
+//! out, which `scripts/instructions-per-ray --bvh --clock` turns into cycles per ray.
 
 use std::process::ExitCode;
+use std::time::{Duration, Instant};
 
 use obvhs::ray::RayHit;
 use render_benches::args::{self, number};
@@ -60,6 +64,7 @@ fn run(args: Vec<String>) -> Result<String, String> {
     let scene = sphere_scene(224);
     let rays = rays(&camera(width, height, distance));
     let mut hits = 0;
+    let took: Duration;
     if tree == "check" || tree == "embree" {
         let mesh = EmbreeMesh::new(&sphere_mesh(224));
         // Without Embree the check passes (a machine without it is an ordinary one);
@@ -82,17 +87,21 @@ fn run(args: Vec<String>) -> Result<String, String> {
             };
         }
         let flat = flat_rays(&rays);
+        let start = Instant::now();
         for _ in 0..frames {
             hits += embree.count_hits(&flat);
         }
+        took = start.elapsed();
     } else if tree == "ours" {
         let ours = BvhScene::new(scene);
+        let start = Instant::now();
         for _ in 0..frames {
             hits += rays
                 .iter()
                 .filter(|r| ours.closest_object(r, Interval::AHEAD).is_some())
                 .count();
         }
+        took = start.elapsed();
     } else {
         let triangles = obvhs_triangles(&scene);
         let params = obvhs::BvhBuildParams::medium_build();
@@ -102,6 +111,7 @@ fn run(args: Vec<String>) -> Result<String, String> {
             params,
             &mut build_time,
         );
+        let start = Instant::now();
         for _ in 0..frames {
             hits += rays
                 .iter()
@@ -113,8 +123,10 @@ fn run(args: Vec<String>) -> Result<String, String> {
                 })
                 .count();
         }
+        took = start.elapsed();
     }
     Ok(format!(
-        "{tree}: {frames} frame(s) of {width}x{height}, {hits} rays hit"
+        "{tree}: {frames} frame(s) of {width}x{height}, {hits} rays hit, in {:.6} s",
+        took.as_secs_f64()
     ))
 }

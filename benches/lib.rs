@@ -5,6 +5,7 @@
 
 pub mod anchor;
 pub mod args;
+pub mod clock;
 pub mod embree;
 pub mod frame;
 pub mod mesh_view;

@@ -10,20 +10,28 @@
 //! (`raycast::shadowless`), `c-camera` or `camera` (camera rays only, C or Rust).
 //! `check` instead compares the C anchor with the Rust plain caster, image and camera
 //! rays, bit for bit, and fails when a pixel differs (`.ci/run` runs it); without a
-//! C compiler it says that the anchor was skipped.
+//! C compiler it says that the anchor was skipped. `clock` measures the core's clock
+//! rate instead ([`clock::cycles_per_second`]).
+//!
+//! The line it prints ends with the time the frames took, set-up left out, which
+//! `scripts/instructions-per-ray --clock` turns into cycles per ray.
 
 use std::process::ExitCode;
+use std::time::Instant;
 
 use glam::Vec3;
 use render_benches::anchor;
 use render_benches::args::{self, number};
+use render_benches::clock;
 use render_benches::frame::FrameLoop;
 use render_lessons::camera::Camera;
 use render_lessons::course::measure::plain::PlainScene;
 use render_lessons::raycast::shadowless;
 use render_lessons::scenes::{still_life, still_life_pinhole};
 
-const CASTERS: [&str; 6] = ["c", "plain", "robust", "c-camera", "camera", "check"];
+const CASTERS: [&str; 7] = [
+    "c", "plain", "robust", "c-camera", "camera", "check", "clock",
+];
 
 fn main() -> ExitCode {
     args::main("one-frame", run)
@@ -39,7 +47,7 @@ fn run(args: Vec<String>) -> Result<String, String> {
     }
     if args.len() > 4 {
         return Err(
-            "usage: one-frame CASTER [WIDTH HEIGHT [FRAMES]], or check [WIDTH HEIGHT]"
+            "usage: one-frame CASTER [WIDTH HEIGHT [FRAMES]], check [WIDTH HEIGHT], or clock"
                 .into(),
         );
     }
@@ -54,6 +62,14 @@ fn run(args: Vec<String>) -> Result<String, String> {
     if caster == "check" {
         return check(&camera, &plain, &mut frame);
     }
+    if caster == "clock" {
+        return clock::cycles_per_second(7)
+            .map(|hz| format!("clock: {:.3} GHz", hz / 1e9))
+            .ok_or(
+                "clock: measured with x86-64 additions; this is another machine".into(),
+            );
+    }
+    let start = Instant::now();
     for _ in 0..frames {
         match caster {
             "c" => anchor::frame(width, height, frame.pixels_mut())
@@ -66,13 +82,14 @@ fn run(args: Vec<String>) -> Result<String, String> {
         }
         std::hint::black_box(frame.pixels());
     }
+    let seconds = start.elapsed().as_secs_f64();
     let sum: f64 = frame
         .pixels()
         .iter()
         .map(|p| f64::from(p.x + p.y + p.z))
         .sum();
     Ok(format!(
-        "{caster}: {frames} frame(s) of {width}x{height}, checksum {sum:.6}"
+        "{caster}: {frames} frame(s) of {width}x{height}, checksum {sum:.6}, in {seconds:.6} s"
     ))
 }
 

@@ -1,0 +1,52 @@
+//! The core's clock rate, measured, so that a time per ray can be given in cycles
+//! and an instruction count in instructions per cycle (`scripts/instructions-per-ray
+//! --clock`). The machine's nominal rate (`/proc/cpuinfo`) says nothing of the boost a
+//! virtual machine's core runs at, and this machine has no cycle counters to read.
+//!
+//! The measurement: a chain of integer additions, each one using the result of the
+//! one before, retires one addition a cycle on every x86-64 core (the latency of
+//! `add` is one cycle; a chain cannot go faster, and the loop's own counter runs
+//! beside it on another port). The rate is the chain's length over its time, the
+//! fastest of several rounds.
+
+use std::time::{Duration, Instant};
+
+/// Additions in one pass of the loop.
+#[cfg(target_arch = "x86_64")]
+const CHAIN: u64 = 100;
+
+/// One chain of `passes` x [`CHAIN`] dependent additions.
+#[cfg(target_arch = "x86_64")]
+fn chain(passes: u64) -> u64 {
+    let mut x: u64 = 0;
+    for _ in 0..passes {
+        // SAFETY: a hundred additions to one register; no memory, no stack, no flags
+        // that the compiler relies on.
+        unsafe {
+            std::arch::asm!(".rept 100", "add {x}, 1", ".endr", x = inout(reg) x,
+                options(nomem, nostack));
+        }
+    }
+    x
+}
+
+/// The clock rate in cycles per second: the fastest of `rounds` chains of about
+/// 200 million cycles each. `None` on a machine that is not x86-64.
+pub fn cycles_per_second(rounds: u32) -> Option<f64> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        const PASSES: u64 = 2_000_000;
+        let mut best = Duration::MAX;
+        for _ in 0..rounds.max(1) {
+            let start = Instant::now();
+            std::hint::black_box(chain(std::hint::black_box(PASSES)));
+            best = best.min(start.elapsed());
+        }
+        Some((PASSES * CHAIN) as f64 / best.as_secs_f64())
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (rounds, Instant::now(), Duration::ZERO);
+        None
+    }
+}

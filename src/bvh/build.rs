@@ -89,6 +89,7 @@ impl Bvh {
         });
         Bvh {
             root,
+            wide: super::wide::collapse(&builder.nodes),
             nodes: builder.nodes,
             primitives: items.iter().map(|item| item.index as usize).collect(),
             unbounded,

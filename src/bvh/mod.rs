@@ -26,6 +26,7 @@ pub mod build;
 mod sah;
 mod slab;
 pub mod traverse;
+pub mod wide;
 
 pub use slab::BoxRay;
 pub use traverse::{Crossing, Nearest, TIE_MARGIN};
@@ -151,6 +152,77 @@ impl Child {
     }
 }
 
+/// The most children of a 4-wide node.
+pub const WIDTH: usize = 4;
+
+// ANCHOR: wide_node
+/// A node of the 4-wide tree, 128 bytes (two cache lines): the boxes of its
+/// children, structure of arrays, and what each child is, packed as a [`Node`]
+/// packs its two ([`Child::packed`]).
+///
+/// `planes` holds, axis by axis, the four children's min planes and then their
+/// max planes: x min, x max, y min, y max, z min, z max, each a 4-wide vector. A
+/// lane with no child holds the box turned inside out (every min +inf, every max
+/// -inf), which every ray misses (see `four_entries` in `src/bvh/slab.rs`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct WideNode {
+    planes: [Vec4; 6],
+    /// Per child: its first primitive (a leaf) or its node's index (interior).
+    first: [u32; WIDTH],
+    /// Per child: its number of primitives; 0 for an interior node (or no child).
+    count: [u32; WIDTH],
+}
+// ANCHOR_END: wide_node
+
+impl WideNode {
+    /// A node whose children are `children`, each with its box's (min, max)
+    /// corners; at most [`WIDTH`] of them.
+    pub(crate) fn new(children: &[((Vec3, Vec3), Child)]) -> WideNode {
+        debug_assert!(children.len() <= WIDTH);
+        let (min, max) = (Vec4::INFINITY, Vec4::NEG_INFINITY); // inside out
+        let mut node = WideNode {
+            planes: [min, max, min, max, min, max],
+            first: [0; WIDTH],
+            count: [0; WIDTH],
+        };
+        for (lane, &((min, max), child)) in children.iter().enumerate() {
+            for axis in 0..3 {
+                node.planes[2 * axis][lane] = min[axis];
+                node.planes[2 * axis + 1][lane] = max[axis];
+            }
+            (node.first[lane], node.count[lane]) = child.packed();
+        }
+        node
+    }
+
+    /// The min planes (`max` false) or the max planes (`max` true) of the four
+    /// children along `axis`.
+    #[inline(always)]
+    pub(crate) fn planes(&self, axis: usize, max: bool) -> Vec4 {
+        self.planes[2 * axis + usize::from(max)]
+    }
+
+    /// Child `lane`'s box corners as 4-wide vectors (the fourth lane 0); the box
+    /// turned inside out for a lane with no child.
+    pub(crate) fn corners(&self, lane: usize) -> (Vec3A, Vec3A) {
+        let corner = |max: bool| {
+            Vec3A::new(
+                self.planes(0, max)[lane],
+                self.planes(1, max)[lane],
+                self.planes(2, max)[lane],
+            )
+        };
+        (corner(false), corner(true))
+    }
+
+    /// Child `lane` packed as (first, count), as the walk carries it.
+    #[inline(always)]
+    pub(crate) fn packed(&self, lane: usize) -> (u32, u32) {
+        (self.first[lane], self.count[lane])
+    }
+}
+
 /// The root of a tree: the box around every bounded object, and what the root is
 /// (as a [`Node`] stores a child).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -169,6 +241,9 @@ pub struct Bvh {
     root: Option<Root>,
     /// The interior nodes, the root first if it is one. Empty if the root is a leaf.
     nodes: Vec<Node>,
+    /// The same tree with four children a node ([`wide::collapse`]), the root
+    /// first; what [`Bvh::closest`] walks.
+    wide: Vec<WideNode>,
     /// Primitive indices, each leaf's contiguous.
     primitives: Vec<usize>,
     /// Primitives without a box (planes, quadrics), tested on every ray.

@@ -36,7 +36,7 @@ pub trait Crossing: Copy {
 
 /// What the walk does after a leaf.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Walk {
+pub(super) enum Walk {
     /// Go on, with boxes tested up to this far end.
     Continue { t_max: f32 },
     /// The question is answered.
@@ -147,7 +147,7 @@ impl Bvh {
                 nearest.offer(c, i);
             }
         }
-        self.walk(ray, range.up_to(nearest.box_limit()), |positions| {
+        self.walk_wide(ray, range.up_to(nearest.box_limit()), |positions| {
             leaf(positions, &mut nearest);
             Walk::Continue {
                 t_max: nearest.box_limit(),

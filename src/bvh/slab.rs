@@ -51,6 +51,12 @@ impl BoxRay {
         }
     }
 
+    /// 1/d.
+    #[inline(always)]
+    pub fn inv_d(&self) -> Vec3 {
+        self.inv_d.into()
+    }
+
     /// True if 1/d is finite on every axis: the ray is parallel to no axis.
     #[inline(always)]
     pub fn finite(&self) -> bool {

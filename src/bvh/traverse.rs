@@ -21,7 +21,7 @@ use arrayvec::ArrayVec;
 use crate::bvh::slab::{BoxRay, both_entries, both_entries_careful, box_entry};
 use crate::bvh::{Bvh, MAX_DEPTH, Node};
 use crate::float::gamma;
-use crate::ray::{Interval, Ray};
+use crate::ray::Interval;
 
 /// The relative margin added to the far end of the box tests: 4 gamma(3), about
 /// 7e-7 (a few ulps of `t`). See [`Nearest::box_limit`].
@@ -188,18 +188,16 @@ impl Bvh {
     /// True if the ray can meet nothing: no unbounded primitive, and it misses the
     /// root's box. Tested with 1/d alone, before the rest of a ray's set-up for the
     /// primitives' tests (the watertight test's shear costs two more divisions) is
-    /// made for nothing.
-    pub fn misses_everything(&self, ray: &Ray, range: Interval) -> bool {
+    /// made for nothing; that set-up then reuses the same 1/d
+    /// ([`PreparedRay::with_inv_d`](crate::shapes::PreparedRay::with_inv_d)) and
+    /// `ray`, and [`Bvh::closest`] does not test the root's box again.
+    pub fn misses_everything(&self, ray: &BoxRay, range: Interval) -> bool {
         let Some(root) = &self.root else {
             return self.unbounded.is_empty();
         };
         self.unbounded.is_empty()
-            && box_entry(
-                (root.min, root.max),
-                &BoxRay::new(ray),
-                range.up_to(widened(range.max)),
-            )
-            .is_none()
+            && box_entry((root.min, root.max), ray, range.up_to(widened(range.max)))
+                .is_none()
     }
 
     // ANCHOR: traverse

@@ -14,7 +14,7 @@ use std::ops::Range;
 use arrayvec::ArrayVec;
 use glam::{Vec3, Vec4};
 
-use crate::bvh::slab::{BoxRay, box_entry, four_entries, four_entries_careful};
+use crate::bvh::slab::{BoxRay, four_entries, four_entries_careful};
 use crate::bvh::traverse::Walk;
 use crate::bvh::{Bvh, Child, MAX_DEPTH, Node, WIDTH, WideNode};
 use crate::ray::Interval;
@@ -59,10 +59,15 @@ const STACK: usize = (WIDTH - 1) * MAX_DEPTH / 2;
 
 impl Bvh {
     // ANCHOR: walk_wide
-    /// [`Bvh::walk`](crate::bvh::Bvh) on the 4-wide tree: visits, nearest child
-    /// first, every leaf whose box the ray passes through within `range`, handing
-    /// the range of its primitives to `leaf`, which answers with the far end to use
-    /// from then on, or [`Walk::Stop`].
+    /// `Bvh::walk` on the 4-wide tree: visits, nearest child first, every leaf
+    /// whose box the ray passes through within `range`, handing the range of its
+    /// primitives to `leaf`, which answers with the far end to use from then on, or
+    /// [`Walk::Stop`].
+    ///
+    /// The root's own box is not tested: the scene's questions test it before
+    /// (`Bvh::misses_everything`), and a box test only ever spares work: without
+    /// it the root node's four boxes are tested all the same (or a leaf root's
+    /// primitives).
     pub(super) fn walk_wide(
         &self,
         box_ray: &BoxRay,
@@ -72,9 +77,6 @@ impl Bvh {
         let Some(root) = &self.root else {
             return;
         };
-        if box_entry((root.min, root.max), box_ray, range).is_none() {
-            return;
-        }
         let root = (root.first, root.count);
         if box_ray.finite() {
             self.walk_wide_from(root, box_ray, range, leaf, four_entries);

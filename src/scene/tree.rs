@@ -7,7 +7,7 @@
 //! box and are tested on every ray, before the tree.
 
 use super::{Intersect, Object, Scene, SceneHit};
-use crate::bvh::{Bounded, Bvh};
+use crate::bvh::{Bounded, BoxRay, Bvh};
 use crate::ray::{Interval, Ray};
 use crate::shapes::{Candidate, PreparedRay, Shape, Triangle};
 
@@ -89,16 +89,18 @@ impl BvhScene {
     }
 
     /// The closest candidate and its object, as [`Intersect::closest`] finds them:
-    /// the unbounded objects, then the tree's leaves, by [`Bvh::closest`].
+    /// the unbounded objects, then the tree's leaves, by [`Bvh::closest`], with
+    /// `box_ray` the ray as the boxes see it (the one `prepared` was made from).
     fn closest_candidate(
         &self,
         prepared: &PreparedRay,
+        box_ray: &BoxRay,
         range: Interval,
     ) -> Option<(Candidate, usize)> {
         let objects = self.scene.objects();
         let unbounded = |i: usize, r| objects[i].shape.candidate(prepared, r);
         self.bvh
-            .closest(&prepared.box_ray(), range, unbounded, |leaf, nearest| {
+            .closest(box_ray, range, unbounded, |leaf, nearest| {
                 let indices = &self.bvh.primitives()[leaf.clone()];
                 match &self.shapes {
                     LeafShapes::Triangles(t) => {
@@ -125,11 +127,12 @@ impl Intersect for BvhScene {
     }
 
     fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        if self.bvh.misses_everything(ray, range) {
+        let box_ray = BoxRay::new(ray);
+        if self.bvh.misses_everything(&box_ray, range) {
             return None;
         }
-        let prepared = PreparedRay::new(ray);
-        let (candidate, object) = self.closest_candidate(&prepared, range)?;
+        let prepared = PreparedRay::with_inv_d(ray, box_ray.inv_d());
+        let (candidate, object) = self.closest_candidate(&prepared, &box_ray, range)?;
         let hit = self.scene.objects()[object]
             .shape
             .record(&prepared, candidate);
@@ -137,11 +140,12 @@ impl Intersect for BvhScene {
     }
 
     fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
-        if self.bvh.misses_everything(ray, range) {
+        let box_ray = BoxRay::new(ray);
+        if self.bvh.misses_everything(&box_ray, range) {
             return None;
         }
-        let prepared = PreparedRay::new(ray);
-        Some(self.closest_candidate(&prepared, range)?.1)
+        let prepared = PreparedRay::with_inv_d(ray, box_ray.inv_d());
+        Some(self.closest_candidate(&prepared, &box_ray, range)?.1)
     }
 
     fn occluded(&self, ray: &Ray, range: Interval) -> bool {

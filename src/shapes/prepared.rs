@@ -30,11 +30,17 @@ impl PreparedRay {
     // ANCHOR: prepare
     /// Computes 1/d, the permutation and the shear of `ray`, once.
     pub fn new(ray: &Ray) -> PreparedRay {
+        PreparedRay::with_inv_d(ray, ray.direction().recip())
+    }
+
+    /// [`PreparedRay::new`] for a ray whose 1/d, `inv_d`, is known already (a
+    /// [`BoxRay`]'s): it must be `ray.direction().recip()`.
+    #[inline(always)]
+    pub fn with_inv_d(ray: &Ray, inv_d: Vec3) -> PreparedRay {
         let d = ray.direction();
         let kz = d.abs().max_position();
         let next = |k: usize| if k == 2 { 0 } else { k + 1 }; // (k + 1) mod 3
         let (kx, ky) = (next(kz), next(next(kz)));
-        let inv_d = d.recip();
         let inv_kz = inv_d[kz]; // 1 / d_kz, the same division
         PreparedRay {
             ray: *ray,

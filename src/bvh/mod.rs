@@ -12,10 +12,14 @@
 //! - [`build`]: binned surface area heuristic (MacDonald and Booth 1990; binning after
 //!   Wald 2007), into a flat array of 64-byte interior nodes, each holding its two
 //!   children's boxes.
-//! - [`traverse`]: an iterative walk with a small fixed stack; at each interior node
-//!   both children's boxes are tested and the nearer one visited first, with the
-//!   conservative slab test of Ize 2013 on the node boxes (STABILITY S6) and the
-//!   ray's 1/d computed once ([`BoxRay`]).
+//! - [`wide`]: the binary tree collapsed into nodes of up to four children (each
+//!   binary node with its children's children), and the walk over them: an
+//!   iterative walk with a small fixed stack; at each node the four children's boxes
+//!   are tested at once, the nearest hit child is visited first, with the
+//!   conservative slab test of Ize 2013 (STABILITY S6) and the ray's 1/d computed
+//!   once ([`BoxRay`]).
+//! - [`traverse`]: what the walk is for: the nearest crossing (with the same
+//!   answer as a plain list, ties included) and whether there is any.
 //!
 //! Primitives without a box (planes, quadrics) are kept in a plain list and tested
 //! on every ray, before the tree.
@@ -59,15 +63,15 @@ pub enum Child {
 }
 
 // ANCHOR: node
-/// An interior node of the flattened tree, 64 bytes (one cache line): its two
-/// children's boxes and what each child is. A node keeps its children's boxes, not
-/// its own (the layout of Aila and Laine 2009, "Understanding the Efficiency of Ray
-/// Traversal on GPUs"): the walk tests both boxes from the one node it has loaded,
-/// and knows whether a child it enters is a leaf without loading anything else.
+/// An interior node of the flattened binary tree the build makes, 64 bytes (one
+/// cache line): its two children's boxes and what each child is. A node keeps its
+/// children's boxes, not its own (the layout of Aila and Laine 2009,
+/// "Understanding the Efficiency of Ray Traversal on GPUs"), as the 4-wide nodes
+/// that the walk visits do ([`WideNode`], made from these by `wide::collapse`): a
+/// node's test needs no other node, and knows whether a child is a leaf.
 ///
 /// The boxes are stored axis by axis, each axis a 4-wide vector of four plane
-/// positions: (min of child 0, min of child 1, max of child 0, max of child 1). The
-/// slab test of both children is then a few SIMD operations per axis.
+/// positions: (min of child 0, min of child 1, max of child 0, max of child 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(C, align(64))]
 pub struct Node {

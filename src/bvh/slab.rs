@@ -1,6 +1,6 @@
 //! The slab test of the BVH's node boxes: where a ray enters a box, for one box
-//! ([`box_entry`], the root) and for both children of a node at once
-//! ([`both_entries`]), with the ray's 1/d worked out once per ray ([`BoxRay`]).
+//! ([`box_entry`], the root) and for the four children of a 4-wide node at once
+//! ([`four_entries`]), with the ray's 1/d worked out once per ray ([`BoxRay`]).
 //!
 //! The test is conservative: the exits are moved out by the rule of
 //! [`Aabb::slab_conservative`](crate::shapes::Aabb::slab_conservative), `moved_out`
@@ -9,17 +9,17 @@
 //! plain list would find (STABILITY S6). It gives the entries that test gives, bit
 //! for bit (the test `box_entry_is_the_aabbs_conservative_slab_entry`).
 
-use glam::{Vec3, Vec3A, Vec4, Vec4Swizzles};
+use glam::{Vec3, Vec3A, Vec4};
 
-use crate::bvh::{Node, WideNode};
+use crate::bvh::WideNode;
 use crate::float::{FAR_MARGIN, moved_out};
 use crate::ray::{Interval, Ray};
 
 // ANCHOR: box_entry
 /// The ray as the node boxes see it, computed once per ray: the origin and 1/d as
 /// 4-wide vectors (one lane unused), each axis's origin and 1/d in all four lanes
-/// (for `both_entries`, whose four lanes are planes of one axis), and whether 1/d
-/// is finite on every axis.
+/// (for [`four_entries`], whose four lanes are planes of one axis, one per child),
+/// the signs of 1/d, and whether 1/d is finite on every axis.
 #[derive(Clone, Copy, Debug)]
 pub struct BoxRay {
     origin: Vec3A,
@@ -120,56 +120,6 @@ fn enter(near: f32, far: f32, range: Interval) -> Option<f32> {
     (t0 <= t1).then_some(t0)
 }
 // ANCHOR_END: box_entry
-
-// ANCHOR: both_entries
-/// [`box_entry`] of both children of `node` at once: the same products, minima and
-/// maxima, on four lanes instead of three. Along each axis the node stores the
-/// four planes (min of child 0, min of child 1, max of child 0, max of child 1);
-/// swapping the halves of their distances pairs each child's min plane with its max
-/// plane, so one `min` and one `max` give both children's nearer and farther plane
-/// on that axis, in lanes 0 and 1.
-///
-/// For a ray whose 1/d is finite on every axis ([`BoxRay::finite`]); the walk
-/// chooses this test or [`both_entries_careful`] once per ray.
-#[inline(always)]
-pub(super) fn both_entries(
-    node: &Node,
-    ray: &BoxRay,
-    range: Interval,
-) -> [Option<f32>; 2] {
-    debug_assert!(ray.finite);
-    let [x, y, z] = node.planes();
-    let ends = |planes: Vec4, (o, inv_d): (Vec4, Vec4)| {
-        let t = (planes - o) * inv_d;
-        let swapped = t.zwxy();
-        (t.min(swapped), t.max(swapped))
-    };
-    let (near_x, far_x) = ends(x, ray.axes[0]);
-    let (near_y, far_y) = ends(y, ray.axes[1]);
-    let (near_z, far_z) = ends(z, ray.axes[2]);
-    let near = near_x.max(near_y).max(near_z);
-    let far = far_x.min(far_y).min(far_z);
-    // moved_out, lane by lane:
-    let far = far + (far.abs() * FAR_MARGIN).min(Vec4::splat(f32::MAX));
-    let t0 = near.max(Vec4::splat(range.min));
-    let t1 = far.min(Vec4::splat(range.max));
-    let hit = t0.cmple(t1).bitmask();
-    [
-        (hit & 1 != 0).then_some(t0.x),
-        (hit & 2 != 0).then_some(t0.y),
-    ]
-}
-// ANCHOR_END: both_entries
-
-/// [`both_entries`] for a ray with an infinite 1/d: each box by
-/// [`box_entry_careful`].
-pub(super) fn both_entries_careful(
-    node: &Node,
-    ray: &BoxRay,
-    range: Interval,
-) -> [Option<f32>; 2] {
-    [0, 1].map(|i| box_entry_careful(node.corners(i), ray, range))
-}
 
 // ANCHOR: four_entries
 /// [`box_entry`] of the four children of a 4-wide node at once, each lane one
@@ -285,40 +235,6 @@ mod tests {
         Some(Case { boxes, ray, range })
     }
 
-    /// [`both_entries`] gives, for each child, exactly what [`box_entry`] gives for
-    /// that child's box alone.
-    #[test]
-    fn both_entries_are_the_entries_of_each_box() {
-        let mut rng = Rng::new(0x9e37_79b9_7f4a_7c15, 1);
-        let (mut compared, mut entered) = (0, 0);
-        for n in 0..200_000 {
-            let Some(Case { boxes, ray, range }) = case(&mut rng, n) else {
-                continue;
-            };
-            let node = Node::new(boxes, [Child::Node(0); 2]);
-            let box_ray = BoxRay::new(&ray);
-            let each = [0, 1].map(|i| box_entry(node.corners(i), &box_ray, range));
-            let both = if box_ray.finite() {
-                both_entries(&node, &box_ray, range)
-            } else {
-                both_entries_careful(&node, &box_ray, range)
-            };
-            assert_eq!(both, each, "case {n}");
-            compared += 1;
-            entered += each.iter().flatten().count();
-        }
-        assert!(compared > 190_000, "{compared}");
-        // Both answers are common: a fifth to four fifths of the boxes are entered.
-        assert!(
-            (compared * 2 / 5..compared * 8 / 5).contains(&entered),
-            "{entered}"
-        );
-    }
-
-    /// [`four_entries`] gives, for each child of a 4-wide node, exactly what
-    /// [`box_entry`] gives for that child's box alone, and no entry in a lane with
-    /// no child, also for a range without end (where an unused lane's inside-out
-    /// box would be entered at infinity if the near planes were chosen by `min`).
     #[test]
     fn four_entries_are_the_entries_of_each_box() {
         let mut rng = Rng::new(0x33_4444, 3);

@@ -1,25 +1,19 @@
-//! Walking a BVH: which primitives a ray must be tested against, and the nearest
-//! crossing among them.
+//! What a walk of the BVH is for: the nearest crossing among the primitives a ray
+//! must be tested against ([`Bvh::closest`]), and whether there is any
+//! ([`Bvh::any`]).
 //!
-//! Iterative, with a fixed stack of [`MAX_DEPTH`] entries (the build never makes a
-//! deeper tree). At an interior node both children's boxes are tested; the nearer
-//! box (by entry distance) is visited next and the other pushed with its entry
-//! distance, so a close hit is usually found early, shrinks the search range, and
-//! lets the walk drop pushed boxes that now start beyond it without testing them
-//! again (the ordered traversal of Wald et al., "Interactive Rendering with Coherent
-//! Ray Tracing", 2001, as pbrt-v4 and Embree do it).
-//!
-//! The node boxes are tested by the conservative slab test of `src/bvh/slab.rs`
-//! (STABILITY S6), both children of a node at once, with the ray's 1/d worked out
-//! once per ray ([`BoxRay`]). The primitives themselves are tested by the caller,
-//! leaf by leaf: the tree knows their boxes, not what they are.
+//! The walk itself is in `src/bvh/wide.rs`: it visits the leaves whose boxes the
+//! ray passes through, nearest first, so that a close hit is usually found early,
+//! shrinks the search range, and lets the walk drop boxes that now start beyond it
+//! without testing them again (the ordered traversal of Wald et al., "Interactive
+//! Rendering with Coherent Ray Tracing", 2001, as pbrt-v4 and Embree do it). The
+//! primitives themselves are tested by the caller, leaf by leaf: the tree knows
+//! their boxes, not what they are.
 
 use std::ops::Range;
 
-use arrayvec::ArrayVec;
-
-use crate::bvh::slab::{BoxRay, both_entries, both_entries_careful, box_entry};
-use crate::bvh::{Bvh, MAX_DEPTH, Node};
+use crate::bvh::Bvh;
+use crate::bvh::slab::{BoxRay, box_entry};
 use crate::float::gamma;
 use crate::ray::Interval;
 
@@ -147,7 +141,7 @@ impl Bvh {
                 nearest.offer(c, i);
             }
         }
-        self.walk_wide(ray, range.up_to(nearest.box_limit()), |positions| {
+        self.walk(ray, range.up_to(nearest.box_limit()), |positions| {
             leaf(positions, &mut nearest);
             Walk::Continue {
                 t_max: nearest.box_limit(),
@@ -173,8 +167,15 @@ impl Bvh {
         // The boxes get the same margin as in [`Bvh::closest`]: a primitive that hits
         // just before `range.max` may have a box entered just after it.
         let box_t_max = widened(range.max);
+        let range = range.up_to(box_t_max);
+        let Some(root) = &self.root else {
+            return false;
+        };
+        if box_entry((root.min, root.max), ray, range).is_none() {
+            return false;
+        }
         let mut found = false;
-        self.walk(ray, range.up_to(box_t_max), |positions| {
+        self.walk(ray, range, |positions| {
             if leaf(positions) {
                 found = true;
                 Walk::Stop
@@ -199,86 +200,4 @@ impl Bvh {
             && box_entry((root.min, root.max), ray, range.up_to(widened(range.max)))
                 .is_none()
     }
-
-    // ANCHOR: traverse
-    /// Visits, nearer child first, every leaf whose box the ray passes through
-    /// within `range`, handing the range of its primitives (positions in
-    /// [`Bvh::primitives`]) to `leaf`, which answers with the far end to use from
-    /// then on, or [`Walk::Stop`].
-    ///
-    /// The node test is chosen here, once per ray: [`both_entries`], or, for a ray
-    /// parallel to an axis (1/d infinite), [`both_entries_careful`]. Each choice
-    /// gets its own copy of the loop ([`Bvh::walk_from`]), which then never asks.
-    fn walk(
-        &self,
-        box_ray: &BoxRay,
-        range: Interval,
-        leaf: impl FnMut(Range<usize>) -> Walk,
-    ) {
-        let Some(root) = &self.root else {
-            return;
-        };
-        if box_entry((root.min, root.max), box_ray, range).is_none() {
-            return;
-        }
-        let root = (root.first, root.count);
-        if box_ray.finite() {
-            self.walk_from(root, box_ray, range, leaf, both_entries);
-        } else {
-            self.walk_from(root, box_ray, range, leaf, both_entries_careful);
-        }
-    }
-
-    /// The walk from the child `(first, count)`, packed as a node stores it (a leaf
-    /// if `count > 0`, else node `first`), its box already known to be hit, with
-    /// `entries` as the node test. `stack` holds the farther children still to
-    /// visit, packed the same way, each with its entry distance. A pushed child
-    /// whose entry now lies beyond `t_max` is dropped when popped.
-    #[inline(always)]
-    fn walk_from(
-        &self,
-        (mut first, mut count): (u32, u32),
-        box_ray: &BoxRay,
-        mut range: Interval,
-        mut leaf: impl FnMut(Range<usize>) -> Walk,
-        entries: impl Fn(&Node, &BoxRay, Interval) -> [Option<f32>; 2],
-    ) {
-        let mut stack = ArrayVec::<(u32, u32, f32), MAX_DEPTH>::new();
-        loop {
-            if count > 0 {
-                let first = first as usize;
-                match leaf(first..first + count as usize) {
-                    Walk::Continue { t_max: t } => range.max = t,
-                    Walk::Stop => return,
-                }
-            } else {
-                let node = &self.nodes[first as usize];
-                let next = match entries(node, box_ray, range) {
-                    [Some(a), Some(b)] => {
-                        let (near, far, t_far) =
-                            if a <= b { (0, 1, b) } else { (1, 0, a) };
-                        let (f, c) = node.packed(far);
-                        stack.push((f, c, t_far));
-                        Some(near)
-                    }
-                    [Some(_), None] => Some(0),
-                    [None, Some(_)] => Some(1),
-                    [None, None] => None,
-                };
-                if let Some(i) = next {
-                    (first, count) = node.packed(i);
-                    continue;
-                }
-            }
-            (first, count) = loop {
-                let Some((f, c, t_entry)) = stack.pop() else {
-                    return;
-                };
-                if t_entry <= range.max {
-                    break (f, c);
-                }
-            };
-        }
-    }
-    // ANCHOR_END: traverse
 }

@@ -1,4 +1,4 @@
-//! The 4-wide tree (issue 33's experiment): the binary tree collapsed after the
+//! The 4-wide tree that rays walk: the binary tree collapsed after the
 //! build, so that a node holds the boxes of up to four children and a ray tests
 //! them with one set of SIMD operations (the collapse of Wald, Benthin and Boulos
 //! 2008, "Getting Rid of Packets", and of Embree's wide BVHs).
@@ -19,6 +19,7 @@ use crate::bvh::traverse::Walk;
 use crate::bvh::{Bvh, Child, MAX_DEPTH, Node, WIDTH, WideNode};
 use crate::ray::Interval;
 
+// ANCHOR: collapse
 /// The 4-wide tree of the binary tree whose interior nodes are `nodes`, the root
 /// `nodes[0]`: its nodes, the root first (empty if `nodes` is).
 pub(crate) fn collapse(nodes: &[Node]) -> Vec<WideNode> {
@@ -51,6 +52,7 @@ fn collapse_from(nodes: &[Node], index: usize, wide: &mut Vec<WideNode>) -> usiz
     wide[here] = WideNode::new(&children);
     here
 }
+// ANCHOR_END: collapse
 
 /// The most entries the 4-wide walk's stack holds: a 4-wide node stands for two
 /// levels of the binary tree, so a path from the root passes at most
@@ -58,8 +60,8 @@ fn collapse_from(nodes: &[Node], index: usize, wide: &mut Vec<WideNode>) -> usiz
 const STACK: usize = (WIDTH - 1) * MAX_DEPTH / 2;
 
 impl Bvh {
-    // ANCHOR: walk_wide
-    /// `Bvh::walk` on the 4-wide tree: visits, nearest child first, every leaf
+    // ANCHOR: walk
+    /// Visits, nearest child first, every leaf
     /// whose box the ray passes through within `range`, handing the range of its
     /// primitives to `leaf`, which answers with the far end to use from then on, or
     /// [`Walk::Stop`].
@@ -68,7 +70,7 @@ impl Bvh {
     /// (`Bvh::misses_everything`), and a box test only ever spares work: without
     /// it the root node's four boxes are tested all the same (or a leaf root's
     /// primitives).
-    pub(super) fn walk_wide(
+    pub(super) fn walk(
         &self,
         box_ray: &BoxRay,
         range: Interval,
@@ -79,9 +81,9 @@ impl Bvh {
         };
         let root = (root.first, root.count);
         if box_ray.finite() {
-            self.walk_wide_from(root, box_ray, range, leaf, four_entries);
+            self.walk_from(root, box_ray, range, leaf, four_entries);
         } else {
-            self.walk_wide_from(root, box_ray, range, leaf, four_entries_careful);
+            self.walk_from(root, box_ray, range, leaf, four_entries_careful);
         }
     }
 
@@ -90,8 +92,15 @@ impl Bvh {
     /// test. Of the children a node's test hits, the nearest is visited next and
     /// the others pushed farthest first, each with its entry distance; a pushed
     /// child whose entry now lies beyond `t_max` is dropped when popped.
+    ///
+    /// The cases of one or two children hit, which are most nodes, each name their
+    /// lanes. The processor guesses which case it is (branch prediction), usually
+    /// rightly, since neighbouring rays take the same turns, and loads the next node
+    /// while the box test is still being worked out. Computing the nearest lane from
+    /// the bitmask as a number makes each node's load wait for its parent's test,
+    /// and the same walk slower (BENCHMARKS.md, "Against Embree").
     #[inline(always)]
-    fn walk_wide_from(
+    fn walk_from(
         &self,
         (mut first, mut count): (u32, u32),
         box_ray: &BoxRay,
@@ -110,14 +119,24 @@ impl Bvh {
             } else {
                 let node = &self.wide[first as usize];
                 let (t, hit) = entries(node, box_ray, range);
+                let mut push = |lane: usize, t: f32| {
+                    let (f, c) = node.packed(lane);
+                    stack.push((f, c, t));
+                };
                 if hit != 0 {
-                    let lane = if hit & (hit - 1) == 0 {
-                        hit.trailing_zeros() as usize
-                    } else {
-                        nearest_pushing_others(t.to_array(), hit, |lane, t| {
-                            let (f, c) = node.packed(lane);
-                            stack.push((f, c, t));
-                        })
+                    // One case for each one or two children hit, naming them.
+                    let lane = match hit {
+                        0b0001 => 0,
+                        0b0010 => 1,
+                        0b0100 => 2,
+                        0b1000 => 3,
+                        0b0011 => nearer_of(0, 1, &t, &mut push),
+                        0b0101 => nearer_of(0, 2, &t, &mut push),
+                        0b1001 => nearer_of(0, 3, &t, &mut push),
+                        0b0110 => nearer_of(1, 2, &t, &mut push),
+                        0b1010 => nearer_of(1, 3, &t, &mut push),
+                        0b1100 => nearer_of(2, 3, &t, &mut push),
+                        _ => nearest_pushing_others(t.to_array(), hit, &mut push),
                     };
                     (first, count) = node.packed(lane);
                     continue;
@@ -133,7 +152,20 @@ impl Bvh {
             };
         }
     }
-    // ANCHOR_END: walk_wide
+    // ANCHOR_END: walk
+}
+
+/// Of lanes `a` and `b`, both hit, with entries `t`: hands the farther to `push`
+/// and returns the nearer (lane `a` on a tie).
+#[inline(always)]
+fn nearer_of(a: usize, b: usize, t: &Vec4, mut push: impl FnMut(usize, f32)) -> usize {
+    if t[a] <= t[b] {
+        push(b, t[b]);
+        a
+    } else {
+        push(a, t[a]);
+        b
+    }
 }
 
 /// Of the lanes in the bitmask `hit` (two or more), with entries `t`: hands all

@@ -162,7 +162,7 @@ pub const WIDTH: usize = 4;
 // ANCHOR: wide_node
 /// A node of the 4-wide tree, 128 bytes (two cache lines): the boxes of its
 /// children, structure of arrays, and what each child is, packed as a [`Node`]
-/// packs its two ([`Child::packed`]).
+/// packs its two (`Child::packed`).
 ///
 /// `planes` holds, axis by axis, the four children's min planes and then their
 /// max planes: x min, x max, y min, y max, z min, z max, each a 4-wide vector. A

@@ -18,7 +18,7 @@ use crate::ray::{Interval, Ray};
 // ANCHOR: box_entry
 /// The ray as the node boxes see it, computed once per ray: the origin and 1/d as
 /// 4-wide vectors (one lane unused), each axis's origin and 1/d in all four lanes
-/// (for [`four_entries`], whose four lanes are planes of one axis, one per child),
+/// (for `four_entries`, whose four lanes are planes of one axis, one per child),
 /// the signs of 1/d, and whether 1/d is finite on every axis.
 #[derive(Clone, Copy, Debug)]
 pub struct BoxRay {

@@ -34,6 +34,7 @@ use std::time::Duration;
 use criterion::{Criterion, Throughput, criterion_group};
 use glam::Vec3;
 use obvhs::ray::RayHit;
+use render_benches::clock;
 use render_benches::embree::{self, Agreement, EmbreeMesh, flat_rays};
 use render_benches::mesh_view::{
     FAR, NEAR, camera, obvhs_ray, obvhs_triangles, rays, sphere_mesh, sphere_scene,
@@ -241,7 +242,9 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     if benchmarking() {
+        let before = clock::cycles_per_second(3);
         one_run();
+        println!("{}", clock::line(before, clock::cycles_per_second(3)));
         println!("{}", watch.report());
     }
 }

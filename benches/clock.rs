@@ -50,3 +50,17 @@ pub fn cycles_per_second(rounds: u32) -> Option<f64> {
         None
     }
 }
+
+/// One line for a benchmark's output: the clock rate measured before the timed
+/// part and after it (three chains each), which shows whether the core slowed down
+/// under the sustained load.
+pub fn line(before: Option<f64>, after: Option<f64>) -> String {
+    match (before, after) {
+        (Some(b), Some(a)) => format!(
+            "core clock: {:.2} GHz before the one run, {:.2} GHz after (a chain of dependent additions, one a cycle)",
+            b / 1e9,
+            a / 1e9
+        ),
+        _ => "core clock: not measured (x86-64 only)".into(),
+    }
+}

@@ -51,6 +51,13 @@ fn run(args: Vec<String>) -> Result<String, String> {
                 .into(),
         );
     }
+    if caster == "clock" {
+        return clock::cycles_per_second(7)
+            .map(|hz| format!("clock: {:.3} GHz", hz / 1e9))
+            .ok_or(
+                "clock: measured with x86-64 additions; this is another machine".into(),
+            );
+    }
     let width = number(&args, 1, "WIDTH", 1920)?;
     let height = number(&args, 2, "HEIGHT", 1080)?;
     let frames = number(&args, 3, "FRAMES", 1)?;
@@ -61,13 +68,6 @@ fn run(args: Vec<String>) -> Result<String, String> {
     let mut frame = FrameLoop::new(&camera, 1);
     if caster == "check" {
         return check(&camera, &plain, &mut frame);
-    }
-    if caster == "clock" {
-        return clock::cycles_per_second(7)
-            .map(|hz| format!("clock: {:.3} GHz", hz / 1e9))
-            .ok_or(
-                "clock: measured with x86-64 additions; this is another machine".into(),
-            );
     }
     let start = Instant::now();
     for _ in 0..frames {

@@ -167,15 +167,11 @@ impl Bvh {
         // The boxes get the same margin as in [`Bvh::closest`]: a primitive that hits
         // just before `range.max` may have a box entered just after it.
         let box_t_max = widened(range.max);
-        let range = range.up_to(box_t_max);
-        let Some(root) = &self.root else {
-            return false;
-        };
-        if box_entry((root.min, root.max), ray, range).is_none() {
+        if !self.enters_root(ray, range) {
             return false;
         }
         let mut found = false;
-        self.walk(ray, range, |positions| {
+        self.walk(ray, range.up_to(box_t_max), |positions| {
             if leaf(positions) {
                 found = true;
                 Walk::Stop
@@ -193,11 +189,15 @@ impl Bvh {
     /// ([`PreparedRay::with_inv_d`](crate::shapes::PreparedRay::with_inv_d)) and
     /// `ray`, and [`Bvh::closest`] does not test the root's box again.
     pub fn misses_everything(&self, ray: &BoxRay, range: Interval) -> bool {
-        let Some(root) = &self.root else {
-            return self.unbounded.is_empty();
-        };
-        self.unbounded.is_empty()
-            && box_entry((root.min, root.max), ray, range.up_to(widened(range.max)))
-                .is_none()
+        self.unbounded.is_empty() && !self.enters_root(ray, range)
+    }
+
+    /// True if the ray enters the root's box within `range`, its end widened as the
+    /// walk widens it; false for a tree with no box.
+    fn enters_root(&self, ray: &BoxRay, range: Interval) -> bool {
+        self.root.is_some_and(|root| {
+            let range = range.up_to(widened(range.max));
+            box_entry((root.min, root.max), ray, range).is_some()
+        })
     }
 }

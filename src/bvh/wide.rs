@@ -168,7 +168,7 @@ fn nearer_of(a: usize, b: usize, t: &Vec4, mut push: impl FnMut(usize, f32)) -> 
     }
 }
 
-/// Of the lanes in the bitmask `hit` (two or more), with entries `t`: hands all
+/// Of the lanes in the bitmask `hit` (three or four), with entries `t`: hands all
 /// but the nearest to `push`, farthest first, and returns the nearest.
 #[inline(always)]
 fn nearest_pushing_others(
@@ -179,13 +179,7 @@ fn nearest_pushing_others(
     let a = hit.trailing_zeros() as usize & 3;
     let rest = hit & (hit - 1);
     let b = rest.trailing_zeros() as usize & 3;
-    if rest & (rest - 1) == 0 {
-        // Two: the common case.
-        let (near, far) = if t[a] <= t[b] { (a, b) } else { (b, a) };
-        push(far, t[far]);
-        return near;
-    }
-    // Three or four: by insertion, farthest first.
+    // By insertion, farthest first.
     let mut order = [(t[a], a), (t[b], b), (f32::NEG_INFINITY, 0), (0.0, 0)];
     if t[a] < t[b] {
         order.swap(0, 1);

@@ -66,8 +66,9 @@ impl Bvh {
     /// primitives to `leaf`, which answers with the far end to use from then on, or
     /// [`Walk::Stop`].
     ///
-    /// The root's own box is not tested: the scene's questions test it before
-    /// (`Bvh::misses_everything`), and a box test only ever spares work: without
+    /// The root's own box is not tested: the callers test it before (`Bvh::any`, and
+    /// the scene through `Bvh::misses_everything`), and a box test only ever spares
+    /// work: without
     /// it the root node's four boxes are tested all the same (or a leaf root's
     /// primitives).
     pub(super) fn walk(

@@ -61,16 +61,14 @@ const STACK: usize = (WIDTH - 1) * MAX_DEPTH / 2;
 
 impl Bvh {
     // ANCHOR: walk
-    /// Visits, nearest child first, every leaf
-    /// whose box the ray passes through within `range`, handing the range of its
-    /// primitives to `leaf`, which answers with the far end to use from then on, or
-    /// [`Walk::Stop`].
+    /// Visits, nearest child first, every leaf whose box the ray passes through
+    /// within `range`, handing the range of its primitives to `leaf`, which answers
+    /// with the far end to use from then on, or [`Walk::Stop`].
     ///
     /// The root's own box is not tested: the callers test it before (`Bvh::any`, and
     /// the scene through `Bvh::misses_everything`), and a box test only ever spares
-    /// work: without
-    /// it the root node's four boxes are tested all the same (or a leaf root's
-    /// primitives).
+    /// work: without it the root node's four boxes are tested all the same (or a leaf
+    /// root's primitives).
     pub(super) fn walk(
         &self,
         box_ray: &BoxRay,

@@ -131,8 +131,10 @@ impl Triangle {
     /// three of one sign; then b_i = e_i / (e0 + e1 + e2) and t interpolates the
     /// sheared z.
     ///
-    /// Returns the crossing for a hit with `t` in `range`.
-    #[inline]
+    /// Returns the crossing for a hit with `t` in `range`. Always inlined: the
+    /// loops that test triangle after triangle (a BVH leaf, a scene's list) then
+    /// keep the ray in registers instead of passing it through memory for each call.
+    #[inline(always)]
     pub fn watertight_prepared(
         &self,
         ray: &PreparedRay,

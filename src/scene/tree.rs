@@ -19,7 +19,7 @@ impl Bounded for Object {
 }
 
 /// The tree's own copy of the bounded shapes, in leaf order: triangles alone when
-/// every one is a triangle (36 bytes each instead of a [`Shape`]'s 80, so a leaf's
+/// every one is a triangle (48 bytes each instead of a [`Shape`]'s 80, so a leaf's
 /// primitives share fewer cache lines, and one test with no `match`), else the
 /// shapes.
 #[derive(Clone, Debug, PartialEq)]

@@ -61,17 +61,6 @@ impl PreparedRay {
     pub fn box_ray(&self) -> BoxRay {
         BoxRay::with_inv_d(self.ray.origin(), self.inv_d)
     }
-
-    /// `v` with its axes permuted to (v[kx], v[ky], v[kz]): one of three cyclic
-    /// rotations, the same for every primitive the ray meets.
-    #[inline(always)]
-    pub(crate) fn permute(&self, v: Vec3) -> Vec3 {
-        match self.axes[2] {
-            0 => Vec3::new(v.y, v.z, v.x),
-            1 => Vec3::new(v.z, v.x, v.y),
-            _ => v,
-        }
-    }
 }
 
 impl From<&Ray> for PreparedRay {

@@ -1,7 +1,7 @@
 //! Ray / triangle: Möller-Trumbore (JGT 1997) and the watertight test of Woop,
 //! Benthin and Wald (JCGT 2013).
 
-use glam::{DVec3, Vec3};
+use glam::{Vec3, Vec4, Vec4Swizzles};
 
 use crate::error::{Error, Problem, Result, finite3};
 use crate::float::gamma;
@@ -21,14 +21,18 @@ pub struct Barycentric {
 }
 // ANCHOR_END: barycentric
 
+// ANCHOR: triangle
 /// The triangle with corners `v0`, `v1`, `v2`; its front is the side from which they
 /// run counter-clockwise, where (v1 - v0) x (v2 - v0) points.
+///
+/// Stored axis by axis: `by_axis[0]` holds the x of v0, v1 and v2 in three lanes of
+/// a 4-wide vector (the fourth is 0), `by_axis[1]` their y, `by_axis[2]` their z, so
+/// that the watertight test works on the three corners at once, one lane each.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle {
-    v0: Vec3,
-    v1: Vec3,
-    v2: Vec3,
+    by_axis: [Vec4; 3],
 }
+// ANCHOR_END: triangle
 
 impl Triangle {
     /// The triangle `v0, v1, v2`.
@@ -37,11 +41,11 @@ impl Triangle {
     /// product of two edges is zero, or too small to normalise) with
     /// [`Problem::NotPositive`] naming `area`.
     pub fn new(v0: Vec3, v1: Vec3, v2: Vec3) -> Result<Triangle> {
-        let tri = Triangle {
-            v0: finite3("v0", v0)?,
-            v1: finite3("v1", v1)?,
-            v2: finite3("v2", v2)?,
-        };
+        let tri = Triangle::from_checked(
+            finite3("v0", v0)?,
+            finite3("v1", v1)?,
+            finite3("v2", v2)?,
+        );
         let cross = (v1 - v0).cross(v2 - v0);
         if cross.normalize_or_zero() == Vec3::ZERO {
             let area = 0.5 * cross.length();
@@ -57,19 +61,22 @@ impl Triangle {
     /// The triangle of corners the caller has already checked ([`Triangle::new`]
     /// accepted them once), such as a mesh's.
     pub(crate) fn from_checked(v0: Vec3, v1: Vec3, v2: Vec3) -> Triangle {
-        Triangle { v0, v1, v2 }
+        let axis = |a: usize| Vec4::new(v0[a], v1[a], v2[a], 0.0);
+        Triangle {
+            by_axis: [axis(0), axis(1), axis(2)],
+        }
     }
 
     /// The three corners.
     pub fn vertices(&self) -> [Vec3; 3] {
-        [self.v0, self.v1, self.v2]
+        let [x, y, z] = self.by_axis;
+        [0, 1, 2].map(|i| Vec3::new(x[i], y[i], z[i]))
     }
 
     /// The unit geometric normal, normalize((v1 - v0) x (v2 - v0)).
     pub fn normal(&self) -> Vec3 {
-        (self.v1 - self.v0)
-            .cross(self.v2 - self.v0)
-            .normalize_or(Vec3::Z)
+        let [v0, v1, v2] = self.vertices();
+        (v1 - v0).cross(v2 - v0).normalize_or(Vec3::Z)
     }
 
     /// The bounding box of the three corners: exact, no rounding. STABILITY S6 is the
@@ -90,14 +97,15 @@ impl Triangle {
     /// at the edge or a vertex can slip between them (STABILITY S4, S5).
     pub fn moller_trumbore(&self, ray: &Ray, range: Interval) -> Option<Barycentric> {
         let (o, d) = (ray.origin(), ray.direction());
-        let (e1, e2) = (self.v1 - self.v0, self.v2 - self.v0);
+        let [v0, v1, v2] = self.vertices();
+        let (e1, e2) = (v1 - v0, v2 - v0);
         let p = d.cross(e2);
         let det = e1.dot(p);
         if det == 0.0 {
             return None; // the ray is parallel to the plane
         }
         let inv = 1.0 / det;
-        let tvec = o - self.v0;
+        let tvec = o - v0;
         let b1 = tvec.dot(p) * inv;
         if !(0.0..=1.0).contains(&b1) {
             return None; // also catches NaN
@@ -129,7 +137,8 @@ impl Triangle {
     /// for the two triangles sharing an edge, so no ray slips between them; when one
     /// is exactly 0 it is recomputed in f64 so that its sign is right. A hit needs all
     /// three of one sign; then b_i = e_i / (e0 + e1 + e2) and t interpolates the
-    /// sheared z.
+    /// sheared z. The three corners are the lanes of [`Triangle`]'s 4-wide vectors, so
+    /// each step is one operation for all three (the fourth lane is ignored).
     ///
     /// Returns the crossing for a hit with `t` in `range`. Always inlined: the
     /// loops that test triangle after triangle (a BVH leaf, a scene's list) then
@@ -140,28 +149,34 @@ impl Triangle {
         ray: &PreparedRay,
         range: Interval,
     ) -> Option<Barycentric> {
-        let (o, shear) = (ray.ray().origin(), ray.shear);
-        let [p0, p1, p2] =
-            [self.v0, self.v1, self.v2].map(|v| sheared(ray.permute(v - o), shear));
-        let mut e = [edge(p1, p2), edge(p2, p0), edge(p0, p1)];
-        if e.contains(&0.0) {
-            e = [edge_f64(p1, p2), edge_f64(p2, p0), edge_f64(p0, p1)];
+        let (o, shear) = (ray.ray().origin().to_array(), ray.shear);
+        let [kx, ky, kz] = ray.axes;
+        // Lane i is corner i, relative to o along kx, ky and kz, then sheared.
+        let relative = |k: usize| self.by_axis[k] - Vec4::splat(o[k]);
+        let z = relative(kz);
+        let x = relative(kx) + shear.x * z;
+        let y = relative(ky) + shear.y * z;
+        // Lane i: the edge function of the two corners after corner i, cyclically.
+        let mut e = x.yzxw() * y.zxyw() - y.yzxw() * x.zxyw();
+        if e.cmpeq(Vec4::ZERO).bitmask() & CORNERS != 0 {
+            e = edges_f64(x, y);
         }
-        let any_negative = e.iter().any(|&x| x < 0.0);
-        let any_positive = e.iter().any(|&x| x > 0.0);
-        let det = e[0] + e[1] + e[2];
+        let any_negative = e.cmplt(Vec4::ZERO).bitmask() & CORNERS != 0;
+        let any_positive = e.cmpgt(Vec4::ZERO).bitmask() & CORNERS != 0;
+        let det = e.x + e.y + e.z;
         if (any_negative && any_positive) || det == 0.0 {
             return None;
         }
-        let z = [p0.z, p1.z, p2.z].map(|z| z * shear.z);
-        let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
+        let z = z * shear.z;
+        let ez = e * z;
+        let t_scaled = ez.x + ez.y + ez.z;
         if surely_outside(t_scaled, det, range) {
             return None; // before the division, which most rejected candidates skip
         }
         let inv = 1.0 / det;
-        let (t, b) = (t_scaled * inv, e.map(|x| x * inv));
+        let (t, b) = (t_scaled * inv, [e.x * inv, e.y * inv, e.z * inv]);
         let finite = b.iter().all(|x| x.is_finite());
-        if range.min >= 0.0 && t <= t_error([p0, p1, p2], z, e, inv) {
+        if range.min >= 0.0 && t <= t_error([x, y, z], e, inv) {
             return None; // t may be rounding above a crossing at or behind the origin
         }
         (finite && range.contains(t)).then_some(Barycentric { t, b })
@@ -177,7 +192,8 @@ impl Triangle {
     /// S7). Its error bound is gamma(7) (|b0 v0| + |b1 v1| + |b2 v2|) per coordinate.
     pub fn hit_at(&self, ray: &Ray, crossing: Barycentric) -> Hit {
         let (t, b) = (crossing.t, crossing.b);
-        let [w0, w1, w2] = [b[0] * self.v0, b[1] * self.v1, b[2] * self.v2];
+        let [v0, v1, v2] = self.vertices();
+        let [w0, w1, w2] = [b[0] * v0, b[1] * v1, b[2] * v2];
         let point = w0 + w1 + w2;
         // pbrt-v4 section 6.8.5: three products and two sums, gamma(7) of their sizes.
         let error = gamma(7) * (w0.abs() + w1.abs() + w2.abs());
@@ -223,18 +239,16 @@ fn surely_outside(t_scaled: f32, det: f32, range: Interval) -> bool {
 
 // ANCHOR: t_error
 /// A bound on the rounding error of the watertight test's t (pbrt-v4 section 6.8.4,
-/// "Conservative Ray-Triangle t Tests"), from the sheared corners `p` (x and y),
-/// their scaled z values `z`, the edge functions `e` and 1/det. Each sheared x, y is
-/// off by gamma(5) (|x| + |z|) at most, each scaled z by gamma(3) |z|; an edge
+/// "Conservative Ray-Triangle t Tests"), from the sheared corners' `x`, `y` and
+/// scaled `z` (lane i corner i), the edge functions `e` and 1/det. Each sheared x, y
+/// is off by gamma(5) (|x| + |z|) at most, each scaled z by gamma(3) |z|; an edge
 /// function multiplies two of them, and t sums three e_i z_i. A t below this bound
 /// cannot be told from 0: a ray leaving the triangle's own plane would find the
 /// triangle again just past its origin.
-fn t_error(p: [Vec3; 3], z: [f32; 3], e: [f32; 3], inv_det: f32) -> f32 {
-    let largest =
-        |f: fn(&Vec3) -> f32| p.iter().map(|v| f(v).abs()).fold(0.0, f32::max);
-    let (max_x, max_y) = (largest(|v| v.x), largest(|v| v.y));
-    let max_z = z.iter().fold(0.0f32, |m, z| m.max(z.abs()));
-    let max_e = e.iter().fold(0.0f32, |m, e| m.max(e.abs()));
+fn t_error([x, y, z]: [Vec4; 3], e: Vec4, inv_det: f32) -> f32 {
+    // The largest magnitude among the three corners' lanes.
+    let largest = |v: Vec4| v.abs().truncate().max_element();
+    let (max_x, max_y, max_z, max_e) = (largest(x), largest(y), largest(z), largest(e));
     let delta_x = gamma(5) * (max_x + max_z);
     let delta_y = gamma(5) * (max_y + max_z);
     let delta_z = gamma(3) * max_z;
@@ -243,19 +257,15 @@ fn t_error(p: [Vec3; 3], z: [f32; 3], e: [f32; 3], inv_det: f32) -> f32 {
 }
 // ANCHOR_END: t_error
 
-/// The shear that takes the permuted direction to the z axis: x += s_x z, y += s_y z;
-/// z is left alone here and scaled by s_z only when t is computed.
-fn sheared(p: Vec3, shear: Vec3) -> Vec3 {
-    Vec3::new(p.x + shear.x * p.z, p.y + shear.y * p.z, p.z)
-}
+/// The lanes of the three corners in a 4-wide comparison's bitmask.
+const CORNERS: u32 = 0b111;
 
-/// The 2-D edge function a.x b.y - a.y b.x in f32.
-fn edge(a: Vec3, b: Vec3) -> f32 {
-    a.x * b.y - a.y * b.x
-}
-
-/// The same edge function in f64, where the product of two f32 is exact.
-fn edge_f64(a: Vec3, b: Vec3) -> f32 {
-    let (a, b): (DVec3, DVec3) = (a.as_dvec3(), b.as_dvec3());
-    (a.x * b.y - a.y * b.x) as f32
+/// The three edge functions of [`Triangle::watertight_prepared`] again, each in f64,
+/// where the product of two f32 is exact: lane i of `x` and `y` is corner i.
+fn edges_f64(x: Vec4, y: Vec4) -> Vec4 {
+    let edge = |a: usize, b: usize| {
+        let (ax, ay, bx, by) = (x[a] as f64, y[a] as f64, x[b] as f64, y[b] as f64);
+        (ax * by - ay * bx) as f32
+    };
+    Vec4::new(edge(1, 2), edge(2, 0), edge(0, 1), 0.0)
 }

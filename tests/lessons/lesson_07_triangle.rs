@@ -206,3 +206,85 @@ fn s7_barycentric_point_stays_on_the_plane() {
         "1.79e-7 3.6e-7 3.6e-5"
     );
 }
+
+/// Woop, Benthin and Wald's test written out corner by corner, in scalar f32 as the
+/// paper prints it, over the whole line (no range: no t bound, no early rejection):
+/// `Some((t, b))` where all three edge functions have one sign and det is not 0.
+fn watertight_by_the_formula(tri: &Triangle, r: &Ray) -> Option<(f32, [f32; 3])> {
+    let (o, d) = (r.origin(), r.direction());
+    let kz = d.abs().max_position();
+    let (kx, ky) = ((kz + 1) % 3, (kz + 2) % 3);
+    let (sx, sy, sz) = (-d[kx] / d[kz], -d[ky] / d[kz], 1.0 / d[kz]);
+    let p = tri.vertices().map(|v| {
+        let v = v - o;
+        (v[kx] + sx * v[kz], v[ky] + sy * v[kz], v[kz])
+    });
+    let edge = |a: usize, b: usize| {
+        let ((ax, ay, _), (bx, by, _)) = (p[a], p[b]);
+        ax * by - ay * bx
+    };
+    let edge_f64 = |a: usize, b: usize| {
+        let ((ax, ay, _), (bx, by, _)) = (p[a], p[b]);
+        (ax as f64 * by as f64 - ay as f64 * bx as f64) as f32
+    };
+    let mut e = [edge(1, 2), edge(2, 0), edge(0, 1)];
+    if e.contains(&0.0) {
+        // An exact 0 sends all three to f64, where each product is exact.
+        e = [edge_f64(1, 2), edge_f64(2, 0), edge_f64(0, 1)];
+    }
+    let det = e[0] + e[1] + e[2];
+    let signs = (e.iter().any(|&x| x < 0.0), e.iter().any(|&x| x > 0.0));
+    if signs == (true, true) || det == 0.0 {
+        return None;
+    }
+    let z = p.map(|(_, _, z)| z * sz);
+    let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
+    let inv = 1.0 / det;
+    let b = e.map(|x| x * inv);
+    let t = t_scaled * inv;
+    (b.iter().all(|x| x.is_finite()) && t.is_finite()).then_some((t, b))
+}
+
+/// The library's watertight test keeps the three corners in the lanes of 4-wide
+/// vectors (chapter 07_4); lane by lane it must do the formula's arithmetic, so it
+/// gives the formula's t and barycentrics bit for bit, hit or miss, for random
+/// triangles and rays, rays aimed at corners and edges (where an edge function is 0
+/// and f64 decides), and rays along each axis (every permutation of the axes).
+#[test]
+fn watertight_lanes_are_the_formula_bit_for_bit() {
+    let mut rng = common::Rng::seeded(0x0074_1a7e);
+    let mut next = || 4.0 * rng.next_f32() - 2.0;
+    let (mut hits, mut compared) = (0, 0);
+    for n in 0..20_000 {
+        let mut point = || Vec3::new(next(), next(), next());
+        let Ok(tri) = Triangle::new(point(), point(), point()) else {
+            continue;
+        };
+        let o = point();
+        let [v0, v1, v2] = tri.vertices();
+        let target = match n % 4 {
+            0 => v0,              // a corner
+            1 => (v1 + v2) * 0.5, // an edge
+            _ => (v0 + v1 + v2) / 3.0 + point() * 0.5,
+        };
+        let mut d = target - o;
+        if n % 7 == 0 {
+            d[n % 3] = 0.0; // in a coordinate plane
+        }
+        let Ok(r) = Ray::new(o, d) else {
+            continue;
+        };
+        let lanes = tri
+            .watertight(&r, Interval::EVERYWHERE)
+            .map(|c| (c.t.to_bits(), c.b.map(f32::to_bits)));
+        let formula = watertight_by_the_formula(&tri, &r)
+            .map(|(t, b)| (t.to_bits(), b.map(f32::to_bits)));
+        assert_eq!(lanes, formula, "triangle {tri:?}, ray {r:?}");
+        compared += 1;
+        hits += usize::from(lanes.is_some());
+    }
+    assert!(
+        compared > 19_000 && hits > 5_000,
+        "{compared} compared, {hits} hits"
+    );
+}

@@ -88,6 +88,19 @@ impl BvhScene {
         &self.bvh
     }
 
+    /// The ray as the boxes see it and as the primitives' tests do, both from one
+    /// 1/d; `None` if it can meet nothing ([`Bvh::misses_everything`]), before the
+    /// rest of the set-up is made for nothing.
+    #[inline(always)]
+    fn prepare(&self, ray: &Ray, range: Interval) -> Option<(BoxRay, PreparedRay)> {
+        let box_ray = BoxRay::new(ray);
+        if self.bvh.misses_everything(&box_ray, range) {
+            return None;
+        }
+        let prepared = PreparedRay::with_inv_d(ray, box_ray.inv_d());
+        Some((box_ray, prepared))
+    }
+
     /// The closest candidate and its object, as [`Intersect::closest`] finds them:
     /// the unbounded objects, then the tree's leaves, by [`Bvh::closest`], with
     /// `box_ray` the ray as the boxes see it (the one `prepared` was made from).
@@ -127,11 +140,7 @@ impl Intersect for BvhScene {
     }
 
     fn closest(&self, ray: &Ray, range: Interval) -> Option<SceneHit> {
-        let box_ray = BoxRay::new(ray);
-        if self.bvh.misses_everything(&box_ray, range) {
-            return None;
-        }
-        let prepared = PreparedRay::with_inv_d(ray, box_ray.inv_d());
+        let (box_ray, prepared) = self.prepare(ray, range)?;
         let (candidate, object) = self.closest_candidate(&prepared, &box_ray, range)?;
         let hit = self.scene.objects()[object]
             .shape
@@ -140,11 +149,7 @@ impl Intersect for BvhScene {
     }
 
     fn closest_object(&self, ray: &Ray, range: Interval) -> Option<usize> {
-        let box_ray = BoxRay::new(ray);
-        if self.bvh.misses_everything(&box_ray, range) {
-            return None;
-        }
-        let prepared = PreparedRay::with_inv_d(ray, box_ray.inv_d());
+        let (box_ray, prepared) = self.prepare(ray, range)?;
         Some(self.closest_candidate(&prepared, &box_ray, range)?.1)
     }
 
